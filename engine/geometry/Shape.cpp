@@ -1,0 +1,23 @@
+#include "geometry/Shape.hpp"
+
+#include "geometry/Overlap.hpp"
+
+#include <ostream>
+#include <stdexcept>
+#include <string>
+
+namespace dropscope {
+
+bool Shape::encloses(const Shape&) const {
+    throw std::logic_error("encloses(Shape) is defined for boxes only, not for a " +
+                           std::string(typeName()));
+}
+
+bool Shape::overlaps(const Shape& other) const { return shapesOverlap(*this, other); }
+
+std::ostream& operator<<(std::ostream& os, const Shape& shape) {
+    shape.print(os);
+    return os;
+}
+
+}  // namespace dropscope

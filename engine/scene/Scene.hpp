@@ -1,0 +1,33 @@
+#pragma once
+
+#include "geometry/Shape.hpp"
+#include "scene/Medium.hpp"
+#include "scene/Source.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dropscope {
+
+// Everything a scene file describes (docs/scene-format.md). Shape ids are indices into `shapes`.
+struct Scene {
+    std::string origin;          // file the scene was read from, for messages
+    int formatVersion = 1;
+    std::string unit = "mm";
+    double unitInMetres = 1e-3;
+    double wavelengthNm = 532.0;
+    MediumId ambient = 0;        // index into media
+    std::vector<Medium> media;
+    std::vector<std::unique_ptr<Shape>> shapes;
+    std::vector<std::string> shapeNames;  // parallel to shapes; empty when unnamed
+    std::vector<Source> sources;
+
+    const Medium& mediumOf(const Shape& shape) const { return media.at(shape.mediumId()); }
+    std::optional<MediumId> findMedium(const std::string& name) const;
+    // The wavelength expressed in the scene's length unit.
+    double wavelengthInSceneUnits() const { return wavelengthNm * 1e-9 / unitInMetres; }
+};
+
+}  // namespace dropscope

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# First of the README's two commands: install what is missing, build Release into build/, and run the
+# main job on the bundled default scene.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+
+scripts/install-deps.sh
+scripts/build.sh build -DCMAKE_BUILD_TYPE=Release -DDROPSCOPE_BUILD_TESTS=OFF -DDROPSCOPE_BUILD_BENCH=OFF
+build/app/dropscope inspect assets/scenes/default.json "$@"
