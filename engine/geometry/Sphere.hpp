@@ -1,6 +1,7 @@
 #pragma once
 
 #include "geometry/Shape.hpp"
+#include "geometry/SphereGeometry.hpp"
 
 namespace dropscope {
 
@@ -10,18 +11,19 @@ public:
     // Throws std::invalid_argument unless the centre is finite and the radius finite and > 0.
     Sphere(const Point& center, double radius);
 
-    const Point& center() const { return center_; }
-    double radius() const { return radius_; }
+    const Point& center() const { return geometry_.center; }
+    double radius() const { return geometry_.radius; }
+    const SphereGeometry& geometry() const { return geometry_; }
 
     ShapeKind kind() const override { return ShapeKind::Sphere; }
     std::string_view typeName() const override { return "sphere"; }
 
-    double xMin() const override { return center_.x() - radius_; }
-    double xMax() const override { return center_.x() + radius_; }
-    double yMin() const override { return center_.y() - radius_; }
-    double yMax() const override { return center_.y() + radius_; }
-    double zMin() const override { return center_.z() - radius_; }
-    double zMax() const override { return center_.z() + radius_; }
+    double xMin() const override { return geometry_.center.x() - geometry_.radius; }
+    double xMax() const override { return geometry_.center.x() + geometry_.radius; }
+    double yMin() const override { return geometry_.center.y() - geometry_.radius; }
+    double yMax() const override { return geometry_.center.y() + geometry_.radius; }
+    double zMin() const override { return geometry_.center.z() - geometry_.radius; }
+    double zMax() const override { return geometry_.center.z() + geometry_.radius; }
 
     double surfaceArea() const override;
     double volume() const override;
@@ -29,12 +31,10 @@ public:
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
     void print(std::ostream& os) const override;
-    double surfaceBand() const override { return band_; }
+    double surfaceBand() const override { return geometry_.band; }
 
 private:
-    Point center_;
-    double radius_;
-    double band_;
+    SphereGeometry geometry_;
 };
 
 }  // namespace dropscope

@@ -1,0 +1,66 @@
+#include "cli/Cli.hpp"
+
+#include "cli/InspectCommand.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <optional>
+#include <ostream>
+#include <string>
+
+namespace dropscope {
+
+namespace {
+
+int reportUsageError(const std::string& message, std::ostream& err) {
+    err << "dropscope: " << message << " (see dropscope --help)\n";
+    return kExitBadInput;
+}
+
+// The top level takes only flags, so its first other argument must name a command. CLI11 would call
+// it an unexpected extra argument; say what it is instead.
+std::optional<std::string> unknownCommand(const CLI::App& app, int argc, const char* const* argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string argument = argv[i];
+        if (argument.starts_with("-")) continue;
+        std::string known;
+        for (const CLI::App* command : app.get_subcommands({})) {
+            if (command->get_name() == argument) return std::nullopt;
+            known += (known.empty() ? "" : ", ") + command->get_name();
+        }
+        return "unknown command \"" + argument + "\" (known: " + known + ")";
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    try {
+        CLI::App app{"dropscope: light through droplets", "dropscope"};
+        app.require_subcommand(0, 1);
+        app.footer("Exit status: 0 success, 2 bad input (arguments or scene file), 1 internal error.");
+        InspectOptions inspectOptions;
+        const CLI::App* inspect = addInspectCommand(app, inspectOptions);
+        if (const auto message = unknownCommand(app, argc, argv)) return reportUsageError(*message, err);
+        try {
+            app.parse(argc, argv);
+        } catch (const CLI::CallForHelp&) {
+            out << app.help();
+            return kExitSuccess;
+        } catch (const CLI::ParseError& error) {
+            return reportUsageError(error.what(), err);
+        }
+        if (inspect->parsed()) return runInspect(inspectOptions, out, err);
+        // No subcommand: a later version opens the GUI here.
+        out << app.help();
+        err << "dropscope: no command given (see the commands above)\n";
+        return kExitBadInput;
+    } catch (const std::exception& error) {
+        err << "dropscope: internal error: " << error.what() << '\n';
+        return kExitInternalError;
+    }
+}
+
+}  // namespace dropscope

@@ -1,0 +1,16 @@
+#pragma once
+
+#include <iosfwd>
+
+namespace dropscope {
+
+// Exit status of the dropscope program.
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitInternalError = 1;  // a bug: an exception no input should cause
+inline constexpr int kExitBadInput = 2;       // bad arguments, missing or invalid scene file
+
+// The dropscope command line: parses argv (argv[0] is the program), runs the subcommand, and returns
+// the exit status. Never throws. Results go to `out`; a failure prints exactly one line to `err`.
+int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+}  // namespace dropscope

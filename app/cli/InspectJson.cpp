@@ -1,0 +1,89 @@
+#include "cli/InspectReport.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+
+namespace dropscope {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json vectorJson(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
+
+Json boundsJson(const Bounds& bounds) { return {{"min", vectorJson(bounds.min)}, {"max", vectorJson(bounds.max)}}; }
+
+Json optionalJson(const std::optional<double>& value) { return value ? Json(*value) : Json(nullptr); }
+
+Json mediaJson(const Scene& scene) {
+    Json media = Json::array();
+    for (std::size_t id = 0; id < scene.media.size(); ++id) {
+        const Medium& medium = scene.media[id];
+        media.push_back({{"id", id},
+                         {"name", medium.name},
+                         {"n", medium.n},
+                         {"kappa", optionalJson(medium.kappa)},
+                         {"sigma", optionalJson(medium.sigma)},
+                         {"absorption_per_unit", medium.absorptionPerUnit}});
+    }
+    return media;
+}
+
+Json shapesJson(const Scene& scene) {
+    Json shapes = Json::array();
+    for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
+        const Shape& shape = *scene.shapes[id];
+        const std::string& name = scene.shapeNames[id];
+        shapes.push_back({{"id", id},
+                          {"type", shape.typeName()},
+                          {"name", name.empty() ? Json(nullptr) : Json(name)},
+                          {"medium", scene.mediumOf(shape).name},
+                          {"medium_id", shape.mediumId()},
+                          {"bounds", boundsJson(boundsOf(shape))},
+                          {"volume", shape.volume()},
+                          {"surface_area", shape.surfaceArea()}});
+    }
+    return shapes;
+}
+
+Json sourcesJson(const Scene& scene) {
+    Json sources = Json::array();
+    for (std::size_t id = 0; id < scene.sources.size(); ++id) {
+        const Source& source = scene.sources[id];
+        sources.push_back(
+            {{"id", id},
+             {"type", sourceTypeName(source.type)},
+             {"origin", vectorJson(source.origin)},
+             {"direction", source.type == SourceType::PointSource ? Json(nullptr) : vectorJson(source.direction)},
+             {"radius", source.type == SourceType::Beam ? Json(source.radius) : Json(nullptr)}});
+    }
+    return sources;
+}
+
+Json totalsJson(const Scene& scene, const SceneSummary& summary) {
+    return {{"shapes", scene.shapes.size()},
+            {"shapes_by_type", summary.shapesByType},
+            {"volume", summary.totalVolume},
+            {"surface_area", summary.totalSurfaceArea},
+            {"bounds", summary.bounds ? boundsJson(*summary.bounds) : Json(nullptr)}};
+}
+
+}  // namespace
+
+void writeInspectJson(const Scene& scene, const SceneSummary& summary, std::ostream& out) {
+    const Json document = {{"scene", scene.origin},
+                           {"format", scene.formatVersion},
+                           {"unit", scene.unit},
+                           {"unit_in_metres", scene.unitInMetres},
+                           {"wavelength_nm", scene.wavelengthNm},
+                           {"wavelength_in_unit", scene.wavelengthInSceneUnits()},
+                           {"ambient", scene.media.at(scene.ambient).name},
+                           {"media", mediaJson(scene)},
+                           {"shapes", shapesJson(scene)},
+                           {"sources", sourcesJson(scene)},
+                           {"totals", totalsJson(scene, summary)}};
+    out << document.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+}
+
+}  // namespace dropscope

@@ -1,0 +1,98 @@
+#include "cli/InspectReport.hpp"
+#include "cli/TextTable.hpp"
+
+#include <ostream>
+
+namespace dropscope {
+
+namespace {
+
+using Align = TextTable::Align;
+
+std::string optionalNumber(const std::optional<double>& value) { return value ? formatNumber(*value) : "-"; }
+
+void writeSettings(const Scene& scene, std::ostream& out) {
+    const std::string& unit = scene.unit;
+    out << "scene       " << scene.origin << '\n'
+        << "format      " << scene.formatVersion << '\n'
+        << "unit        " << unit << '\n'
+        << "wavelength  " << formatNumber(scene.wavelengthNm) << " nm = "
+        << formatNumber(scene.wavelengthInSceneUnits()) << ' ' << unit << '\n'
+        << "ambient     " << scene.media.at(scene.ambient).name << '\n';
+}
+
+void writeMedia(const Scene& scene, std::ostream& out) {
+    TextTable table({{"id", Align::Right}, {"name"}, {"n", Align::Right}, {"kappa", Align::Right},
+                     {"sigma", Align::Right}, {"absorption [1/" + scene.unit + "]", Align::Right}});
+    for (std::size_t id = 0; id < scene.media.size(); ++id) {
+        const Medium& medium = scene.media[id];
+        table.addRow({std::to_string(id), medium.name, formatNumber(medium.n), optionalNumber(medium.kappa),
+                      optionalNumber(medium.sigma), formatNumber(medium.absorptionPerUnit)});
+    }
+    out << "\nmedia\n";
+    table.write(out);
+}
+
+void writeShapes(const Scene& scene, std::ostream& out) {
+    const std::string& unit = scene.unit;
+    TextTable table({{"id", Align::Right}, {"type"}, {"name"}, {"medium"}, {"x [" + unit + "]"},
+                     {"y [" + unit + "]"}, {"z [" + unit + "]"}, {"volume [" + unit + "^3]", Align::Right},
+                     {"area [" + unit + "^2]", Align::Right}});
+    for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
+        const Shape& shape = *scene.shapes[id];
+        const Bounds bounds = boundsOf(shape);
+        table.addRow({std::to_string(id), std::string(shape.typeName()),
+                      scene.shapeNames[id].empty() ? "-" : scene.shapeNames[id], scene.mediumOf(shape).name,
+                      formatRange(bounds.min.x(), bounds.max.x()), formatRange(bounds.min.y(), bounds.max.y()),
+                      formatRange(bounds.min.z(), bounds.max.z()), formatNumber(shape.volume()),
+                      formatNumber(shape.surfaceArea())});
+    }
+    out << "\nshapes\n";
+    table.write(out);
+}
+
+void writeTotals(const Scene& scene, const SceneSummary& summary, std::ostream& out) {
+    const std::string& unit = scene.unit;
+    std::string byType;
+    for (const auto& [type, count] : summary.shapesByType) {
+        if (count == 0) continue;
+        byType += (byType.empty() ? "" : ", ") + std::to_string(count) + " " + type;
+    }
+    out << "\ntotals\n"
+        << "  shapes        " << scene.shapes.size() << (byType.empty() ? "" : " (" + byType + ")") << '\n'
+        << "  volume        " << formatNumber(summary.totalVolume) << ' ' << unit << "^3\n"
+        << "  surface area  " << formatNumber(summary.totalSurfaceArea) << ' ' << unit << "^2\n"
+        << "  bounds        ";
+    if (const auto& bounds = summary.bounds) {
+        out << "x " << formatRange(bounds->min.x(), bounds->max.x()) << ", y "
+            << formatRange(bounds->min.y(), bounds->max.y()) << ", z "
+            << formatRange(bounds->min.z(), bounds->max.z()) << ' ' << unit << '\n';
+    } else {
+        out << "-\n";
+    }
+}
+
+void writeSources(const Scene& scene, std::ostream& out) {
+    TextTable table({{"id", Align::Right}, {"type"}, {"origin"}, {"direction"},
+                     {"radius [" + scene.unit + "]", Align::Right}});
+    for (std::size_t id = 0; id < scene.sources.size(); ++id) {
+        const Source& source = scene.sources[id];
+        table.addRow({std::to_string(id), std::string(sourceTypeName(source.type)), formatVector(source.origin),
+                      source.type == SourceType::PointSource ? "-" : formatVector(source.direction),
+                      source.type == SourceType::Beam ? formatNumber(source.radius) : "-"});
+    }
+    out << "\nsources\n";
+    table.write(out);
+}
+
+}  // namespace
+
+void writeInspectTables(const Scene& scene, const SceneSummary& summary, std::ostream& out) {
+    writeSettings(scene, out);
+    writeMedia(scene, out);
+    writeShapes(scene, out);
+    writeTotals(scene, summary, out);
+    writeSources(scene, out);
+}
+
+}  // namespace dropscope

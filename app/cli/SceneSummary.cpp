@@ -1,0 +1,27 @@
+#include "cli/SceneSummary.hpp"
+
+namespace dropscope {
+
+Bounds boundsOf(const Shape& shape) {
+    return {Point(shape.xMin(), shape.yMin(), shape.zMin()), Point(shape.xMax(), shape.yMax(), shape.zMax())};
+}
+
+SceneSummary summarise(const Scene& scene) {
+    SceneSummary summary;
+    summary.shapesByType = {{"box", 0}, {"ellipsoid", 0}, {"sphere", 0}};
+    for (const auto& shape : scene.shapes) {
+        ++summary.shapesByType[std::string(shape->typeName())];
+        summary.totalVolume += shape->volume();
+        summary.totalSurfaceArea += shape->surfaceArea();
+        const Bounds bounds = boundsOf(*shape);
+        if (!summary.bounds) {
+            summary.bounds = bounds;
+        } else {
+            summary.bounds->min = summary.bounds->min.cwiseMin(bounds.min);
+            summary.bounds->max = summary.bounds->max.cwiseMax(bounds.max);
+        }
+    }
+    return summary;
+}
+
+}  // namespace dropscope

@@ -1,0 +1,121 @@
+#include "scene/SceneLoader.hpp"
+
+#include "scene/JsonDocument.hpp"
+#include "scene/JsonPath.hpp"
+#include "scene/JsonReader.hpp"
+#include "scene/MediaReader.hpp"
+#include "scene/SceneOverlaps.hpp"
+#include "scene/ShapeReader.hpp"
+#include "scene/SourceReader.hpp"
+
+#include <array>
+#include <cerrno>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace dropscope {
+
+namespace {
+
+constexpr std::int64_t kFormatVersion = 1;
+
+struct LengthUnit {
+    std::string_view name;
+    double metres;
+};
+constexpr std::array<LengthUnit, 5> kLengthUnits{{{"m", 1.0}, {"cm", 1e-2}, {"mm", 1e-3}, {"um", 1e-6}, {"nm", 1e-9}}};
+
+// The ambient medium when "ambient" is left out (n = 1), unless the file defines a medium of that name.
+constexpr std::string_view kDefaultAmbientName = "vacuum";
+
+void readFormatVersion(const JsonReader& root, Scene& scene) {
+    const JsonReader version = root.member("dropscope");
+    const std::int64_t value = version.integer();
+    if (value != kFormatVersion) {
+        version.fail("unsupported format version " + std::to_string(value) + " (this program reads version " +
+                     std::to_string(kFormatVersion) + ")");
+    }
+    scene.formatVersion = static_cast<int>(value);
+}
+
+void readUnit(const JsonReader& root, Scene& scene) {
+    const auto unit = root.optionalMember("unit");
+    if (!unit) return;
+    const std::string name = unit->string();
+    for (const LengthUnit& known : kLengthUnits) {
+        if (known.name == name) {
+            scene.unit = name;
+            scene.unitInMetres = known.metres;
+            return;
+        }
+    }
+    unit->fail("unknown unit " + jsonpath::quoted(name) + " (known: m, cm, mm, um, nm)");
+}
+
+void readAmbient(const JsonReader& root, Scene& scene) {
+    if (const auto ambient = root.optionalMember("ambient")) {
+        scene.ambient = readMediumName(*ambient, scene.media);
+        return;
+    }
+    if (const auto defined = scene.findMedium(std::string(kDefaultAmbientName))) {
+        scene.ambient = *defined;
+        return;
+    }
+    Medium vacuum;
+    vacuum.name = kDefaultAmbientName;
+    scene.ambient = static_cast<MediumId>(scene.media.size());
+    scene.media.push_back(std::move(vacuum));
+}
+
+void readShapes(const JsonReader& shapes, Scene& scene) {
+    for (const JsonReader& json : shapes.elements()) {
+        NamedShape shape = readShape(json, scene.media);
+        for (std::size_t other = 0; other < scene.shapeNames.size() && !shape.name.empty(); ++other) {
+            if (scene.shapeNames[other] == shape.name) {
+                json.member("name").fail("name " + jsonpath::quoted(shape.name) + " is already used by " +
+                                         jsonpath::element("shapes", other));
+            }
+        }
+        scene.shapes.push_back(std::move(shape.shape));
+        scene.shapeNames.push_back(std::move(shape.name));
+    }
+}
+
+}  // namespace
+
+Scene parseScene(std::string_view jsonText, const std::string& origin) {
+    const Json document = parseJsonDocument(jsonText, origin);
+    const JsonReader root(document, "", origin);
+    Scene scene;
+    scene.origin = origin;
+    readFormatVersion(root, scene);
+    root.expectKeys({"dropscope", "unit", "wavelength_nm", "ambient", "media", "shapes", "sources"});
+    readUnit(root, scene);
+    if (const auto wavelength = root.optionalMember("wavelength_nm")) scene.wavelengthNm = wavelength->positive();
+    if (const auto media = root.optionalMember("media")) {
+        scene.media = readMedia(*media, scene.wavelengthInSceneUnits());
+    }
+    readAmbient(root, scene);
+    if (const auto shapes = root.optionalMember("shapes")) readShapes(*shapes, scene);
+    if (const auto sources = root.optionalMember("sources")) {
+        for (const JsonReader& json : sources->elements()) scene.sources.push_back(readSource(json));
+    }
+    checkShapesDisjoint(scene);
+    return scene;
+}
+
+Scene loadScene(const std::filesystem::path& file) {
+    const std::string origin = file.string();
+    std::error_code status;
+    if (!std::filesystem::exists(file, status)) throw SceneError(origin, "", "no such file");
+    if (std::filesystem::is_directory(file, status)) throw SceneError(origin, "", "is a directory, not a scene file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw SceneError(origin, "", "cannot open: " + std::generic_category().message(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw SceneError(origin, "", "cannot read: " + std::generic_category().message(errno));
+    return parseScene(text.str(), origin);
+}
+
+}  // namespace dropscope

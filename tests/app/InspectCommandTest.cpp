@@ -1,0 +1,119 @@
+#include "app/CliRun.hpp"
+#include "cli/Cli.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace dropscope {
+namespace {
+
+using test::CliRun;
+using test::expectOneLineFailure;
+using test::runDropscope;
+
+const std::string kDataDir = DROPSCOPE_TEST_DATA_DIR;
+const std::string kSourceDir = DROPSCOPE_SOURCE_DIR;
+const std::string kOneSphere = kDataDir + "/scenes/one_sphere.json";  // r = 2 um at (1, 2, 3)
+
+TEST(InspectCommand, TableShowsTheSphereVolumeAndArea) {
+    const CliRun run = runDropscope({"inspect", kOneSphere});
+    EXPECT_EQ(run.status, kExitSuccess);
+    EXPECT_EQ(run.err, "");
+    // 4/3 pi 2^3 = 33.5103 and 4 pi 2^2 = 50.2655 to 6 digits.
+    EXPECT_NE(run.out.find("33.5103"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("50.2655"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("-1 .. 3"), std::string::npos) << run.out;  // x range of the sphere
+    EXPECT_NE(run.out.find("volume [um^3]"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("drop"), std::string::npos);
+    EXPECT_NE(run.out.find("water"), std::string::npos);
+    EXPECT_NE(run.out.find("shapes        1 (1 sphere)"), std::string::npos) << run.out;
+}
+
+TEST(InspectCommand, TableColumnsAreAligned) {
+    const CliRun run = runDropscope({"inspect", kSourceDir + "/assets/scenes/default.json"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    // In the shapes table the "medium" column starts at the same place on every row.
+    std::istringstream lines(run.out.substr(run.out.find("\nshapes\n") + 8));
+    std::string heading;
+    std::getline(lines, heading);
+    const auto column = heading.find("medium");
+    for (std::string line; std::getline(lines, line) && !line.empty();) {
+        EXPECT_TRUE(line.substr(column).starts_with("water") || line.substr(column).starts_with("glass")) << line;
+    }
+}
+
+TEST(InspectCommand, JsonHasEveryDocumentedKeyAndFullPrecision) {
+    const CliRun run = runDropscope({"inspect", kOneSphere, "--json"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    const nlohmann::json report = nlohmann::json::parse(run.out);
+    for (const char* key : {"scene", "format", "unit", "unit_in_metres", "wavelength_nm", "wavelength_in_unit",
+                            "ambient", "media", "shapes", "sources", "totals"}) {
+        EXPECT_TRUE(report.contains(key)) << key;
+    }
+    EXPECT_EQ(report["unit"], "um");
+    EXPECT_EQ(report["ambient"], "air");
+    const auto& shape = report["shapes"][0];
+    EXPECT_EQ(shape["id"], 0);
+    EXPECT_EQ(shape["type"], "sphere");
+    EXPECT_EQ(shape["name"], "drop");
+    EXPECT_EQ(shape["medium"], "water");
+    EXPECT_EQ(shape["medium_id"], 1);
+    EXPECT_EQ(shape["bounds"]["min"], nlohmann::json({-1.0, 0.0, 1.0}));
+    EXPECT_EQ(shape["bounds"]["max"], nlohmann::json({3.0, 4.0, 5.0}));
+    EXPECT_DOUBLE_EQ(shape["volume"].get<double>(), 4.0 / 3.0 * std::numbers::pi * 8.0);
+    EXPECT_DOUBLE_EQ(shape["surface_area"].get<double>(), 4.0 * std::numbers::pi * 4.0);
+    const auto& medium = report["media"][1];
+    for (const char* key : {"id", "name", "n", "kappa", "sigma", "absorption_per_unit"}) {
+        EXPECT_TRUE(medium.contains(key)) << key;
+    }
+    const auto& source = report["sources"][0];
+    EXPECT_EQ(source["type"], "ray");
+    EXPECT_EQ(source["direction"], nlohmann::json({0.0, 0.0, 1.0}));
+    EXPECT_TRUE(source["radius"].is_null());
+    const auto& totals = report["totals"];
+    EXPECT_EQ(totals["shapes"], 1);
+    EXPECT_EQ(totals["shapes_by_type"], nlohmann::json({{"box", 0}, {"ellipsoid", 0}, {"sphere", 1}}));
+    EXPECT_DOUBLE_EQ(totals["volume"].get<double>(), 4.0 / 3.0 * std::numbers::pi * 8.0);
+    EXPECT_EQ(totals["bounds"], shape["bounds"]);
+}
+
+TEST(InspectCommand, JsonTotalsOfTheDefaultScene) {
+    const CliRun run = runDropscope({"inspect", "--json", kSourceDir + "/assets/scenes/default.json"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    const nlohmann::json report = nlohmann::json::parse(run.out);
+    double volume = 0.0;
+    for (const auto& shape : report["shapes"]) volume += shape["volume"].get<double>();
+    EXPECT_EQ(report["totals"]["shapes"], report["shapes"].size());
+    EXPECT_DOUBLE_EQ(report["totals"]["volume"].get<double>(), volume);
+}
+
+TEST(InspectCommand, MissingFileExitsTwoWithOneLine) {
+    const std::string missing = kDataDir + "/scenes/does_not_exist.json";
+    const CliRun run = runDropscope({"inspect", missing});
+    expectOneLineFailure(run);
+    EXPECT_EQ(run.err, missing + ": no such file\n");
+    EXPECT_EQ(run.out, "");
+}
+
+TEST(InspectCommand, BadSceneExitsTwoWithTheSceneError) {
+    const std::string file = kDataDir + "/scenes/overlapping.json";
+    const CliRun run = runDropscope({"inspect", file, "--json"});
+    expectOneLineFailure(run);
+    EXPECT_EQ(run.err, file + R"(: shapes[1]: sphere "d2" overlaps shapes[0] (sphere "d1"); shapes may touch or )"
+                              "nest (anything in a box, a sphere in a sphere), not partly overlap\n");
+    EXPECT_EQ(run.out, "");
+}
+
+TEST(InspectCommand, MalformedSceneExitsTwo) {
+    const CliRun run = runDropscope({"inspect", kDataDir + "/scenes/malformed.json"});
+    expectOneLineFailure(run);
+    EXPECT_NE(run.err.find("line 4, column 10"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace dropscope

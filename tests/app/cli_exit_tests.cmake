@@ -1,0 +1,26 @@
+# The real dropscope binary, run as a user would. Each test runs run_and_check_exit.cmake: the exit
+# status must be exactly EXPECTED_EXIT, and stderr empty on success, else one line matching REGEX.
+function(dropscope_add_cli_exit_test name expected_exit regex)
+  list(JOIN ARGN "|" arguments)
+  add_test(NAME ${name}
+           COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:dropscope> "-DARGUMENTS=${arguments}"
+                   -DEXPECTED_EXIT=${expected_exit} "-DSTDERR_REGEX=${regex}"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/app/run_and_check_exit.cmake)
+endfunction()
+
+set(_default_scene ${PROJECT_SOURCE_DIR}/assets/scenes/default.json)
+set(_scenes ${CMAKE_CURRENT_SOURCE_DIR}/data/scenes)
+dropscope_add_cli_exit_test(cli_inspect_default_scene 0 "" inspect ${_default_scene})
+dropscope_add_cli_exit_test(cli_inspect_default_scene_json 0 "" inspect --json ${_default_scene})
+dropscope_add_cli_exit_test(cli_help 0 "" --help)
+dropscope_add_cli_exit_test(cli_inspect_missing_file 2 "does_not_exist\\.json: no such file$"
+                            inspect ${_scenes}/does_not_exist.json)
+dropscope_add_cli_exit_test(cli_inspect_bad_scene 2 "overlapping\\.json: shapes\\[1\\]: .* overlaps shapes\\[0\\]"
+                            inspect ${_scenes}/overlapping.json)
+dropscope_add_cli_exit_test(cli_inspect_malformed_json 2 "malformed\\.json: line 4, column 10: syntax error"
+                            inspect ${_scenes}/malformed.json)
+dropscope_add_cli_exit_test(cli_inspect_without_scene 2 "^dropscope: .*scene" inspect)
+dropscope_add_cli_exit_test(cli_unknown_command 2 "^dropscope: unknown command \"render\"" render)
+dropscope_add_cli_exit_test(cli_no_command 2 "^dropscope: no command given")
+unset(_scenes)
+unset(_default_scene)
