@@ -33,6 +33,7 @@ public:
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
     void print(std::ostream& os) const override;
+    std::unique_ptr<Shape> clone() const override { return std::make_unique<Box>(*this); }
     double surfaceBand() const override { return band_; }
 
 private:

@@ -41,6 +41,7 @@ public:
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
     void print(std::ostream& os) const override;
+    std::unique_ptr<Shape> clone() const override { return std::make_unique<Ellipsoid>(*this); }
     double surfaceBand() const override { return bandNormalised_ * semiAxes_.minCoeff(); }
 
     // (r - r0) . M (r - r0): < 1 inside, 1 on the surface.

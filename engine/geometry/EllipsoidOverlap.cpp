@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace dropscope {
 
@@ -22,24 +23,38 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // than this (relative to max(1, |t|)): lambda and 1 - lambda are then exact to a few ulps, and f, flat
 // at its maximum, is exact to rounding.
 constexpr double kLogOddsStep = 4.0 * std::numeric_limits<double>::epsilon();
-// Newton needs ~5 steps from t = 0 (one for two spheres); bisection, the fallback, ~60.
+// Newton needs ~5 steps (one for two spheres); bisection, the fallback, ~60 across the bracket.
 constexpr int kMaxSearchSteps = 100;
+
+Eigen::LLT<Eigen::Matrix3d> factorise(const Eigen::Matrix3d& m) {
+    Eigen::LLT<Eigen::Matrix3d> cholesky(m);
+    if (cholesky.info() != Eigen::Success)
+        throw std::invalid_argument("gilitschenskiMaximum: shape matrices must be positive definite");
+    return cholesky;
+}
+
+// tr(m^{-1}) from a Cholesky factor: the squared Frobenius norm of L^{-1}.
+double inverseTrace(const Eigen::LLT<Eigen::Matrix3d>& cholesky) {
+    return cholesky.matrixL().solve(Eigen::Matrix3d::Identity()).squaredNorm();
+}
 
 // f = dr . S^{-1} dr with S = shapeA/lambda + shapeB/(1-lambda) (seed 000 eq. 1.34, f = 1 - K), as a
 // function of the log-odds t = ln(lambda / (1 - lambda)), i.e. 1/lambda = 1 + e^{-t} and
-// 1/(1-lambda) = 1 + e^{t}: both stay at full relative precision however close the maximiser comes to
-// 0 or 1 (a small ellipsoid against a large one). With x = S^{-1} dr and
+// 1/(1-lambda) = 1 + e^{t}: both stay at full relative precision however close the maximiser comes
+// to 0 or 1 (a small ellipsoid against a large one). With x = S^{-1} dr and
 // S' = dS/dt = e^{t} shapeB - e^{-t} shapeA,
-//   df/dt = -x.S'x = e^{-t} a - e^{t} b,   a = x.shapeA x > 0,  b = x.shapeB x > 0.
-// f is strictly concave in lambda for dr != 0, so df/dt changes sign exactly once, and with it the
-// balance phi = ln a - ln b - 2t, whose root is the same but which is nearly linear in t (exactly so
-// for two spheres: one Newton step from anywhere). With z = S^{-1} S'x, a' = -2 z.shapeA x and
-// b' = -2 z.shapeB x, so phi' = a'/a - b'/b - 2.
+//   df/dt = -x.S'x = e^{-t} a - e^{t} b,   a = x.shapeA x > 0,   b = x.shapeB x > 0.
+// f is strictly concave in lambda for dr != 0, so df/dt changes sign once, at the root of the balance
+//   phi = ln a - ln b - 2t,   phi' = a'/a - b'/b - 2,   a' = -2 z.shapeA x,  b' = -2 z.shapeB x,
+// z = S^{-1} S'x. phi is far closer to linear than df/dt (exactly linear for two spheres).
 //
-// S is factorised directly rather than through the simultaneous diagonalisation shapeA = L L^T,
-// L^{-1} shapeB L^{-T} = V diag(mu) V^T: cond(S) <= max(cond(shapeA), cond(shapeB)), whereas the
-// small mu lose all accuracy once cond(shapeA) cond(shapeB) approaches 1/eps (two needles with
-// semi-axis ratios ~1e4 already gave max f wrong by 100%).
+// In the basis that diagonalises both shape matrices (shapeA = L L^T, L^{-1} shapeB L^{-T} =
+// V diag(mu) V^T), f = sum_i w_i^2 g_i with g_i = lambda(1-lambda)/((1-lambda) + mu_i lambda) concave
+// and peaking at t_i = -ln(mu_i)/2, so the maximiser lies between the extreme t_i. Only for that
+// bracket is the diagonalisation used, through bounds: mu_max <= tr(shapeB) tr(shapeA^{-1}) and
+// mu_min >= 1 / (tr(shapeA) tr(shapeB^{-1})). f itself is evaluated by factorising S, whose condition
+// number is at most max(cond(shapeA), cond(shapeB)); the small mu lose all accuracy once
+// cond(shapeA) cond(shapeB) nears 1/eps (two needles of semi-axis ratio ~1e4 gave max f wrong by 100%).
 class GilitschenskiFunction {
 public:
     struct Sample {
@@ -52,12 +67,17 @@ public:
                           const Eigen::Matrix3d& shapeB)
         : dr_(dr), shapeA_(shapeA), shapeB_(shapeB) {}
 
+    // [lo, hi] around the maximiser, widened by 1 against rounding in the traces.
+    std::pair<double, double> bracket() const {
+        const double muMax = shapeB_.trace() * inverseTrace(factorise(shapeA_));
+        const double muMin = 1.0 / (shapeA_.trace() * inverseTrace(factorise(shapeB_)));
+        return {-0.5 * std::log(muMax) - 1.0, -0.5 * std::log(muMin) + 1.0};
+    }
+
     Sample at(double t) const {
         const double eMinus = std::exp(-t);
         const double ePlus = std::exp(t);
-        const Eigen::LLT<Eigen::Matrix3d> cholesky((1.0 + eMinus) * shapeA_ + (1.0 + ePlus) * shapeB_);
-        if (cholesky.info() != Eigen::Success)
-            throw std::invalid_argument("gilitschenskiMaximum: shape matrices must be positive definite");
+        const Eigen::LLT<Eigen::Matrix3d> cholesky = factorise((1.0 + eMinus) * shapeA_ + (1.0 + ePlus) * shapeB_);
         const Eigen::Vector3d y = cholesky.matrixL().solve(dr_);
         const Eigen::Vector3d x = cholesky.matrixU().solve(y);
         const Eigen::Vector3d ax = shapeA_ * x;
@@ -75,14 +95,11 @@ private:
     Eigen::Matrix3d shapeB_;
 };
 
-// Root of the balance phi by Newton's method, kept inside a bracket [lo, hi] with
-// phi(lo) > 0 > phi(hi); a step that would leave it bisects instead. phi' is capped at -1: phi' = -2
-// for spheres and near it in general, and the cap keeps every step within |phi| = O(ln cond) of t
-// where phi is far from linear (a bare Newton step once jumped to t ~ 2000 and overflowed e^t).
+// Root of the balance phi by Newton's method from the middle of the bracket, bisecting whenever a
+// step would leave the bracket.
 double maximise(const GilitschenskiFunction& f) {
-    double lo = -kInfinity;
-    double hi = kInfinity;
-    double t = 0.0;
+    auto [lo, hi] = f.bracket();
+    double t = 0.5 * (lo + hi);
     GilitschenskiFunction::Sample sample = f.at(t);
     for (int step = 0; step < kMaxSearchSteps; ++step) {
         if (sample.balance > 0.0) {
@@ -92,10 +109,9 @@ double maximise(const GilitschenskiFunction& f) {
         } else {
             break;
         }
-        double next = t - sample.balance / std::min(sample.balanceSlope, -1.0);
+        double next = t - sample.balance / sample.balanceSlope;
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        const double reach = std::max(1.0, std::abs(t));
-        if (std::abs(next - t) <= kLogOddsStep * reach) break;
+        if (std::abs(next - t) <= kLogOddsStep * std::max(1.0, std::abs(t))) break;
         t = next;
         sample = f.at(t);
     }

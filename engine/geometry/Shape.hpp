@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <string_view>
 
 namespace dropscope {
@@ -60,6 +61,9 @@ public:
     virtual Direction normal(const Point& p) const = 0;
 
     virtual void print(std::ostream& os) const = 0;
+
+    // A copy of the same dynamic type (medium included).
+    virtual std::unique_ptr<Shape> clone() const = 0;
 
     // Half-width of this shape's surface band, in length units.
     virtual double surfaceBand() const = 0;

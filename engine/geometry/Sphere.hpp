@@ -31,6 +31,7 @@ public:
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
     void print(std::ostream& os) const override;
+    std::unique_ptr<Shape> clone() const override { return std::make_unique<Sphere>(*this); }
     double surfaceBand() const override { return geometry_.band; }
 
 private:

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "tree/RayHit.hpp"
+
+#include <Eigen/Geometry>
+
+#include <cstddef>
+#include <vector>
+
+namespace dropscope {
+
+// Scene key "octree" (docs/scene-format.md).
+struct OctreeSettings {
+    int maxDepth = 10;          // the root is level 0
+    int maxShapesPerLeaf = 8;   // a leaf with more is split, unless at maxDepth
+};
+
+using CellBounds = Eigen::AlignedBox3d;
+
+// One cell a ray passed through, in visiting order, for the debugger.
+struct CellVisit {
+    std::uint32_t node;
+    int level;
+    CellBounds bounds;
+    double tEnter;
+    double tExit;
+    bool leaf;
+};
+
+// Everything firstHit did for one ray.
+struct TraversalRecord {
+    std::vector<CellVisit> cells;
+    std::vector<ShapeId> shapesTested;  // in testing order, repeats included
+    std::size_t distanceEvaluations = 0;
+    RayHit hit;
+};
+
+struct LevelStatistics {
+    int level = 0;
+    std::size_t cells = 0;
+    std::size_t leaves = 0;
+    std::size_t shapesStored = 0;             // references held by cells of this level
+    std::vector<std::size_t> shapesPerLeaf;   // histogram: [k] = leaves holding k shapes
+    std::size_t bytes = 0;                    // nodes and their shape lists
+};
+
+}  // namespace dropscope

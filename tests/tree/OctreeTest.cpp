@@ -1,0 +1,269 @@
+#include "tree/BoundingBox.hpp"
+#include "tree/Octree.hpp"
+
+#include "geometry/RandomGeometry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dropscope {
+namespace {
+
+using testing::Rng;
+
+std::vector<std::unique_ptr<Shape>> randomScene(Rng& rng, int count, double halfWidth) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int i = 0; i < count; ++i) {
+        const double size = testing::uniform(rng, 0.02, 0.6);
+        shapes.push_back(testing::randomShape(rng, i, testing::randomPoint(rng, halfWidth), size));
+    }
+    return shapes;
+}
+
+// Bitwise agreement: same shape and the very same double.
+void expectSameHit(const RayHit& actual, const RayHit& expected) {
+    EXPECT_EQ(actual.shape, expected.shape);
+    if (expected) {
+        EXPECT_EQ(actual.distance, expected.distance);
+    }
+}
+
+struct Ray {
+    Point origin;
+    Direction direction;
+};
+
+// Rays of every awkward kind: from outside, from inside shapes, from surface points, from cell
+// mid-planes, edges and corners, and parallel to the axes.
+std::vector<Ray> awkwardRays(Rng& rng, const Octree& tree, int count) {
+    std::vector<Ray> rays;
+    const CellBounds root = tree.rootBounds();
+    const double half = 0.5 * root.sizes().maxCoeff();
+    for (int i = 0; i < count; ++i) {
+        Direction d = testing::randomDirection(rng);
+        Point o = testing::randomPoint(rng, 1.2 * half, root.center());
+        switch (i % 6) {
+        case 0: break;
+        case 1: {  // inside a shape
+            const Shape* s = tree.shape(static_cast<ShapeId>(rng() % tree.slotCount()));
+            if (s) o = testing::boundsCenter(*s);  // removed slots are empty
+            break;
+        }
+        case 2: {  // on a surface: a brute-force hit point
+            const RayHit hit = bruteForceFirstHit(tree.shapes(), o, d);
+            if (hit) o = o + hit.distance * d.vector();
+            d = testing::randomDirection(rng);
+            break;
+        }
+        case 3: {  // on cell mid-planes, edges, corners at a random level
+            const double cell = 2.0 * half / std::pow(2.0, static_cast<double>(rng() % 4));
+            for (int axis = 0; axis < 1 + static_cast<int>(rng() % 3); ++axis) {
+                o[axis] = root.min()[axis] + cell * std::round((o[axis] - root.min()[axis]) / cell);
+            }
+            break;
+        }
+        case 4: {  // axis-parallel: one or two zero components
+            Eigen::Vector3d v = d.vector();
+            v[static_cast<int>(rng() % 3)] = 0.0;
+            if (rng() % 2) v[static_cast<int>(rng() % 3)] = 0.0;
+            d = Direction(v.isZero() ? Eigen::Vector3d::UnitX() : v);
+            break;
+        }
+        default: {  // along a mid-plane, from a mid-plane
+            o.x() = root.center().x();
+            d = Direction(0.0, d.y(), d.z());
+            break;
+        }
+        }
+        rays.push_back({o, d});
+    }
+    return rays;
+}
+
+TEST(Octree, FirstHitEqualsBruteForceOnMixedScenes) {
+    for (int scene = 0; scene < 4; ++scene) {
+        SCOPED_TRACE(::testing::Message() << "scene " << scene);
+        Rng rng(static_cast<unsigned>(100 + scene));
+        const Octree tree(randomScene(rng, 1500, 6.0), OctreeSettings{8, 1 + scene * 3});
+        int hits = 0;
+        const std::vector<Ray> rays = awkwardRays(rng, tree, 1500);
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            SCOPED_TRACE(::testing::Message() << "ray " << i);
+            const RayHit expected = bruteForceFirstHit(tree.shapes(), rays[i].origin, rays[i].direction);
+            hits += expected ? 1 : 0;
+            expectSameHit(tree.firstHit(rays[i].origin, rays[i].direction), expected);
+        }
+        EXPECT_GT(hits, 500);
+    }
+}
+
+TEST(Octree, ReferenceTreeEqualsBruteForceAndRespectsTheSeedModel) {
+    Rng rng(7);
+    const Octree tree(randomScene(rng, 600, 4.0), OctreeSettings{6, 4});
+    const auto reference = tree.referenceTree();
+    // Every live shape appears as a terminal child; no box holds more than 8 children.
+    std::vector<int> seen(tree.slotCount(), 0);
+    std::vector<const BoundingBox*> pending{reference.get()};
+    while (!pending.empty()) {
+        const BoundingBox* box = pending.back();
+        pending.pop_back();
+        ASSERT_LE(box->childCount(), BoundingBox::kMaxChildren);
+        for (std::size_t k = 0; k < box->childCount(); ++k) {
+            if (box->childId(k) == BoundingBox::kNotTerminal) {
+                pending.push_back(&static_cast<const BoundingBox&>(box->child(k)));
+            } else {
+                ++seen[box->childId(k)];
+            }
+        }
+    }
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n > 0; }));
+    for (const Ray& ray : awkwardRays(rng, tree, 800)) {
+        expectSameHit(reference->firstHit(ray.origin, ray.direction, tree.margin()),
+                      bruteForceFirstHit(tree.shapes(), ray.origin, ray.direction));
+    }
+}
+
+TEST(Octree, ContentsOverlapFindsStoredShapes) {
+    Rng rng(8);
+    const Octree tree(randomScene(rng, 200, 4.0));
+    const auto reference = tree.referenceTree();
+    for (int i = 0; i < 200; ++i) {
+        const Sphere probe(testing::randomPoint(rng, 5.0), testing::uniform(rng, 0.05, 0.5));
+        const bool expected = std::any_of(tree.shapes().begin(), tree.shapes().end(),
+                                          [&](const auto& s) { return s->overlaps(probe); });
+        EXPECT_EQ(reference->contentsOverlap(probe), expected);
+    }
+}
+
+TEST(Octree, LocateFindsTheInnermostEnclosingShape) {
+    Rng rng(9);
+    std::vector<std::unique_ptr<Shape>> shapes = randomScene(rng, 800, 4.0);
+    shapes.push_back(std::make_unique<Box>(Point(-5, -5, -5), Point(5, 5, 0)));  // encloses many
+    const Octree tree(std::move(shapes));
+    for (int i = 0; i < 3000; ++i) {
+        const Point p = testing::randomPoint(rng, 5.5);
+        std::optional<ShapeId> expected;
+        for (ShapeId id = 0; id < tree.slotCount(); ++id) {
+            const Shape& s = *tree.shape(id);
+            if (s.encloses(p) && (!expected || s.volume() < tree.shape(*expected)->volume())) expected = id;
+        }
+        EXPECT_EQ(tree.locate(p), expected) << "point " << i;
+    }
+}
+
+TEST(Octree, OverlappingEqualsBruteForce) {
+    Rng rng(10);
+    const Octree tree(randomScene(rng, 800, 4.0));
+    for (int i = 0; i < 300; ++i) {
+        const auto probe = testing::randomShape(rng, i, testing::randomPoint(rng, 4.5), testing::uniform(rng, 0.05, 1.0));
+        std::vector<ShapeId> expected;
+        for (ShapeId id = 0; id < tree.slotCount(); ++id) {
+            if (tree.shape(id)->overlaps(*probe)) expected.push_back(id);
+        }
+        EXPECT_EQ(tree.overlapping(*probe), expected) << "probe " << i;
+    }
+}
+
+TEST(Octree, InsertAndRemoveKeepQueriesExact) {
+    Rng rng(11);
+    Octree tree(randomScene(rng, 300, 3.0), OctreeSettings{7, 3});
+    std::vector<ShapeId> live;
+    for (ShapeId id = 0; id < tree.slotCount(); ++id) live.push_back(id);
+    for (int step = 0; step < 400; ++step) {
+        SCOPED_TRACE(::testing::Message() << "step " << step);
+        if (rng() % 3 == 0 && !live.empty()) {
+            const std::size_t k = rng() % live.size();
+            ASSERT_NE(tree.remove(live[k]), nullptr);
+            live.erase(live.begin() + static_cast<std::ptrdiff_t>(k));
+        } else {
+            // now and then far outside the current root, which must grow
+            const double reach = step % 50 == 0 ? 9.0 : 3.0;
+            live.push_back(tree.insert(testing::randomShape(rng, step, testing::randomPoint(rng, reach), 0.3)));
+        }
+        ASSERT_EQ(tree.shapeCount(), live.size());
+        for (const Ray& ray : awkwardRays(rng, tree, 6)) {
+            expectSameHit(tree.firstHit(ray.origin, ray.direction),
+                          bruteForceFirstHit(tree.shapes(), ray.origin, ray.direction));
+        }
+    }
+    for (const Ray& ray : awkwardRays(rng, tree, 1000)) {
+        expectSameHit(tree.firstHit(ray.origin, ray.direction),
+                      bruteForceFirstHit(tree.shapes(), ray.origin, ray.direction));
+    }
+}
+
+TEST(Octree, TraversalRecordListsCellsInRayOrder) {
+    Rng rng(12);
+    const Octree tree(randomScene(rng, 1000, 5.0));
+    for (const Ray& ray : awkwardRays(rng, tree, 300)) {
+        TraversalRecord record;
+        const RayHit hit = tree.firstHit(ray.origin, ray.direction, record);
+        expectSameHit(record.hit, hit);
+        expectSameHit(hit, bruteForceFirstHit(tree.shapes(), ray.origin, ray.direction));
+        EXPECT_EQ(record.distanceEvaluations, record.shapesTested.size());
+        if (hit) {
+            EXPECT_NE(std::find(record.shapesTested.begin(), record.shapesTested.end(), hit.shape),
+                      record.shapesTested.end());
+        }
+        for (std::size_t k = 0; k + 1 < record.cells.size(); ++k) {
+            EXPECT_LE(record.cells[k].tEnter, record.cells[k + 1].tEnter);
+            const double expectedSize = tree.rootBounds().sizes().maxCoeff() / std::pow(2.0, record.cells[k].level);
+            EXPECT_NEAR(record.cells[k].bounds.sizes().maxCoeff(), expectedSize, 1e-12 * expectedSize);
+        }
+    }
+}
+
+TEST(Octree, StatisticsAreConsistent) {
+    Rng rng(13);
+    const OctreeSettings settings{6, 5};
+    const Octree tree(randomScene(rng, 2000, 5.0), settings);
+    const std::vector<LevelStatistics> levels = tree.statistics();
+    ASSERT_FALSE(levels.empty());
+    EXPECT_EQ(levels[0].cells, 1u);
+    EXPECT_LE(static_cast<int>(levels.size()), settings.maxDepth + 1);
+    std::size_t stored = 0;
+    std::size_t bytes = 0;
+    for (std::size_t level = 0; level < levels.size(); ++level) {
+        const LevelStatistics& s = levels[level];
+        if (level > 0) {
+            EXPECT_EQ(s.cells, 8 * (levels[level - 1].cells - levels[level - 1].leaves));
+        }
+        std::size_t leaves = 0;
+        std::size_t inLeaves = 0;
+        for (std::size_t k = 0; k < s.shapesPerLeaf.size(); ++k) {
+            leaves += s.shapesPerLeaf[k];
+            inLeaves += k * s.shapesPerLeaf[k];
+            if (static_cast<int>(level) < settings.maxDepth && k > 5) {
+                EXPECT_EQ(s.shapesPerLeaf[k], 0u);
+            }
+        }
+        EXPECT_EQ(leaves, s.leaves);
+        EXPECT_LE(inLeaves, s.shapesStored);
+        stored += s.shapesStored;
+        bytes += s.bytes;
+    }
+    EXPECT_GE(stored, tree.shapeCount());
+    EXPECT_GT(tree.bytesUsed(), bytes);
+}
+
+TEST(Octree, NoShapesNoHits) {
+    const Octree tree({});
+    EXPECT_FALSE(tree.firstHit(Point::Zero(), Direction(1, 0, 0)));
+    EXPECT_FALSE(tree.locate(Point::Zero()));
+}
+
+TEST(Octree, InvalidRayHitsNothing) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::make_unique<Sphere>(Point::Zero(), 1.0));
+    const Octree tree(std::move(shapes));
+    EXPECT_FALSE(tree.firstHit(Point(0, 0, -5), Direction(0, 0, 0)));
+    EXPECT_FALSE(tree.firstHit(Point(0, std::nan(""), -5), Direction(0, 0, 1)));
+    const RayHit hit = tree.firstHit(Point(0, 0, -5), Direction(0, 0, 1));
+    EXPECT_EQ(hit.shape, 0u);
+    EXPECT_EQ(hit.distance, 4.0);
+}
+
+}  // namespace
+}  // namespace dropscope
