@@ -1,6 +1,7 @@
 #include "cli/Cli.hpp"
 
 #include "cli/InspectCommand.hpp"
+#include "cli/QueryCommand.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -43,6 +44,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         app.footer("Exit status: 0 success, 2 bad input (arguments or scene file), 1 internal error.");
         InspectOptions inspectOptions;
         const CLI::App* inspect = addInspectCommand(app, inspectOptions);
+        QueryOptions queryOptions;
+        const CLI::App* query = addQueryCommand(app, queryOptions);
         if (const auto message = unknownCommand(app, argc, argv)) return reportUsageError(*message, err);
         try {
             app.parse(argc, argv);
@@ -53,6 +56,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
             return reportUsageError(error.what(), err);
         }
         if (inspect->parsed()) return runInspect(inspectOptions, out, err);
+        if (query->parsed()) return runQuery(queryOptions, out, err);
         // No subcommand: a later version opens the GUI here.
         out << app.help();
         err << "dropscope: no command given (see the commands above)\n";

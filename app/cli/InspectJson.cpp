@@ -69,6 +69,24 @@ Json totalsJson(const Scene& scene, const SceneSummary& summary) {
             {"bounds", summary.bounds ? boundsJson(*summary.bounds) : Json(nullptr)}};
 }
 
+Json octreeJson(const OctreeSummary& octree) {
+    Json levels = Json::array();
+    for (const LevelStatistics& level : octree.levels) {
+        levels.push_back({{"level", level.level},
+                          {"cells", level.cells},
+                          {"leaves", level.leaves},
+                          {"shapes_stored", level.shapesStored},
+                          {"bytes", level.bytes},
+                          {"shapes_per_leaf", level.shapesPerLeaf}});
+    }
+    return {{"max_depth", octree.settings.maxDepth},
+            {"max_shapes_per_leaf", octree.settings.maxShapesPerLeaf},
+            {"root", {{"min", vectorJson(octree.root.min())}, {"max", vectorJson(octree.root.max())}}},
+            {"margin", octree.margin},
+            {"bytes", octree.bytes},
+            {"levels", levels}};
+}
+
 }  // namespace
 
 void writeInspectJson(const Scene& scene, const SceneSummary& summary, std::ostream& out) {
@@ -82,7 +100,8 @@ void writeInspectJson(const Scene& scene, const SceneSummary& summary, std::ostr
                            {"media", mediaJson(scene)},
                            {"shapes", shapesJson(scene)},
                            {"sources", sourcesJson(scene)},
-                           {"totals", totalsJson(scene, summary)}};
+                           {"totals", totalsJson(scene, summary)},
+                           {"octree", octreeJson(summary.octree)}};
     out << document.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
 }
 

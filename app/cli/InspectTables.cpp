@@ -2,6 +2,7 @@
 #include "cli/TextTable.hpp"
 
 #include <ostream>
+#include <sstream>
 
 namespace dropscope {
 
@@ -85,6 +86,35 @@ void writeSources(const Scene& scene, std::ostream& out) {
     table.write(out);
 }
 
+// "0:12 1:40 2:7": leaves by the number of shapes they hold, empty buckets left out.
+std::string histogram(const std::vector<std::size_t>& counts) {
+    std::ostringstream text;
+    for (std::size_t k = 0; k < counts.size(); ++k) {
+        if (counts[k] == 0) continue;
+        if (text.tellp() > 0) text << ' ';
+        text << k << ':' << counts[k];
+    }
+    return text.tellp() > 0 ? text.str() : "-";
+}
+
+void writeOctree(const SceneSummary& summary, std::ostream& out) {
+    const OctreeSummary& octree = summary.octree;
+    out << "\noctree (max_depth " << octree.settings.maxDepth << ", max_shapes_per_leaf "
+        << octree.settings.maxShapesPerLeaf << ")\n"
+        << "  root          x " << formatRange(octree.root.min().x(), octree.root.max().x()) << ", y "
+        << formatRange(octree.root.min().y(), octree.root.max().y()) << ", z "
+        << formatRange(octree.root.min().z(), octree.root.max().z()) << '\n'
+        << "  cell margin   " << formatNumber(octree.margin) << '\n'
+        << "  bytes         " << octree.bytes << '\n';
+    TextTable table({{"level", Align::Right}, {"cells", Align::Right}, {"leaves", Align::Right},
+                     {"shapes stored", Align::Right}, {"bytes", Align::Right}, {"leaves by shape count"}});
+    for (const LevelStatistics& level : octree.levels) {
+        table.addRow({std::to_string(level.level), std::to_string(level.cells), std::to_string(level.leaves),
+                      std::to_string(level.shapesStored), std::to_string(level.bytes), histogram(level.shapesPerLeaf)});
+    }
+    table.write(out);
+}
+
 }  // namespace
 
 void writeInspectTables(const Scene& scene, const SceneSummary& summary, std::ostream& out) {
@@ -93,6 +123,7 @@ void writeInspectTables(const Scene& scene, const SceneSummary& summary, std::os
     writeShapes(scene, out);
     writeTotals(scene, summary, out);
     writeSources(scene, out);
+    writeOctree(summary, out);
 }
 
 }  // namespace dropscope

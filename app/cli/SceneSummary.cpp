@@ -1,5 +1,7 @@
 #include "cli/SceneSummary.hpp"
 
+#include "tree/Octree.hpp"
+
 namespace dropscope {
 
 Bounds boundsOf(const Shape& shape) {
@@ -21,6 +23,10 @@ SceneSummary summarise(const Scene& scene) {
             summary.bounds->max = summary.bounds->max.cwiseMax(bounds.max);
         }
     }
+    std::vector<std::unique_ptr<Shape>> copies;
+    for (const auto& shape : scene.shapes) copies.push_back(shape->clone());
+    const Octree octree(std::move(copies), scene.octree);
+    summary.octree = {scene.octree, octree.rootBounds(), octree.margin(), octree.bytesUsed(), octree.statistics()};
     return summary;
 }
 

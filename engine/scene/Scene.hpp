@@ -3,6 +3,7 @@
 #include "geometry/Shape.hpp"
 #include "scene/Medium.hpp"
 #include "scene/Source.hpp"
+#include "tree/OctreeTypes.hpp"
 
 #include <memory>
 #include <optional>
@@ -23,6 +24,7 @@ struct Scene {
     std::vector<std::unique_ptr<Shape>> shapes;
     std::vector<std::string> shapeNames;  // parallel to shapes; empty when unnamed
     std::vector<Source> sources;
+    OctreeSettings octree;       // scene key "octree"
 
     const Medium& mediumOf(const Shape& shape) const { return media.at(shape.mediumId()); }
     std::optional<MediumId> findMedium(const std::string& name) const;

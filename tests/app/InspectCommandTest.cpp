@@ -92,6 +92,23 @@ TEST(InspectCommand, JsonTotalsOfTheDefaultScene) {
     EXPECT_DOUBLE_EQ(report["totals"]["volume"].get<double>(), volume);
 }
 
+TEST(InspectCommand, ReportsTheOctreePerLevel) {
+    const CliRun run = runDropscope({"inspect", kSourceDir + "/assets/scenes/default.json", "--json"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    const nlohmann::json octree = nlohmann::json::parse(run.out)["octree"];
+    EXPECT_EQ(octree["max_depth"], 10);
+    EXPECT_EQ(octree["max_shapes_per_leaf"], 8);
+    ASSERT_FALSE(octree["levels"].empty());
+    EXPECT_EQ(octree["levels"][0]["cells"], 1);
+    std::size_t stored = 0;
+    for (const auto& level : octree["levels"]) stored += level["shapes_stored"].get<std::size_t>();
+    EXPECT_GE(stored, 5u);  // every shape of the scene, some perhaps in several cells
+    EXPECT_GT(octree["bytes"].get<std::size_t>(), 0u);
+    const CliRun table = runDropscope({"inspect", kSourceDir + "/assets/scenes/default.json"});
+    EXPECT_NE(table.out.find("octree (max_depth 10, max_shapes_per_leaf 8)"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("leaves by shape count"), std::string::npos);
+}
+
 TEST(InspectCommand, MissingFileExitsTwoWithOneLine) {
     const std::string missing = kDataDir + "/scenes/does_not_exist.json";
     const CliRun run = runDropscope({"inspect", missing});

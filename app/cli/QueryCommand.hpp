@@ -1,0 +1,27 @@
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace dropscope {
+
+struct QueryOptions {
+    std::string scenePath;
+    std::string raysPath;
+    std::string outPath;
+    bool brute = false;
+};
+
+// Registers `dropscope query SCENE --rays RAYS.csv --out HITS.csv [--brute]`.
+CLI::App* addQueryCommand(CLI::App& app, QueryOptions& options);
+
+// First hit of every ray: HITS.csv gets `ray,shape,distance`, one line per ray in input order,
+// `-1,nan` for a miss, distances to 17 significant digits; written whole or not at all. The summary
+// (shapes, rays, build and query seconds, rays per second) goes to `err`.
+int runQuery(const QueryOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace dropscope

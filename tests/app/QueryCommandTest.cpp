@@ -1,0 +1,149 @@
+#include "app/CliRun.hpp"
+#include "cli/Cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace dropscope {
+namespace {
+
+using test::CliRun;
+using test::expectOneLineFailure;
+using test::runDropscope;
+
+namespace fs = std::filesystem;
+
+const std::string kDataDir = DROPSCOPE_TEST_DATA_DIR;
+const std::string kSourceDir = DROPSCOPE_SOURCE_DIR;
+const std::string kOneSphere = kDataDir + "/scenes/one_sphere.json";  // r = 2 at (1, 2, 3)
+
+class QueryCommand : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("dropscope-query-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                            "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string write(const std::string& name, const std::string& text) const {
+        const fs::path path = dir_ / name;
+        std::ofstream(path) << text;
+        return path.string();
+    }
+    static std::string read(const std::string& path) {
+        std::ifstream in(path);
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str();
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    fs::path dir_;
+};
+
+TEST_F(QueryCommand, HitsMatchClosedFormsAndMissesAreMinusOneNan) {
+    const std::string rays = write("rays.csv",
+                                   "ox,oy,oz,dx,dy,dz\n"
+                                   "1,2,-10,0,0,2\n"       // along the axis: 13 - 2 = 11
+                                   "1,2,3,1,0,0\n"         // from the centre: the radius
+                                   "2,2,-10,0,0,1\n"       // 1 off the axis: 13 - sqrt(3)
+                                   "9,9,9,1,0,0\n");       // a miss
+    const CliRun run = runDropscope({"query", kOneSphere, "--rays", rays, "--out", path("hits.csv")});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    std::istringstream lines(read(path("hits.csv")));
+    std::string line;
+    std::getline(lines, line);
+    EXPECT_EQ(line, "ray,shape,distance");
+    std::getline(lines, line);
+    EXPECT_EQ(line, "0,0,11");
+    std::getline(lines, line);
+    EXPECT_EQ(line, "1,0,2");
+    std::getline(lines, line);
+    EXPECT_EQ(std::stod(line.substr(4)), 13.0 - std::sqrt(3.0)) << line;  // 17 digits read back exactly
+    EXPECT_EQ(line.substr(0, 4), "2,0,");
+    std::getline(lines, line);
+    EXPECT_EQ(line, "3,-1,nan");
+    EXPECT_FALSE(std::getline(lines, line));
+    EXPECT_NE(run.err.find("query: 1 shapes, 4 rays, octree"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("rays/s"), std::string::npos);
+}
+
+TEST_F(QueryCommand, OctreeAndBruteForceWriteIdenticalFiles) {
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> normal;
+    std::ostringstream rays;
+    rays << "ox,oy,oz,dx,dy,dz\n";
+    rays.precision(17);
+    for (int i = 0; i < 3000; ++i) {
+        rays << 3 * normal(rng) << ',' << 3 * normal(rng) << ',' << 3 * normal(rng) << ',' << normal(rng) << ','
+             << normal(rng) << ',' << normal(rng) << '\n';
+    }
+    const std::string raysPath = write("rays.csv", rays.str());
+    const std::string scene = kSourceDir + "/assets/scenes/default.json";
+    ASSERT_EQ(runDropscope({"query", scene, "--rays", raysPath, "--out", path("octree.csv")}).status, kExitSuccess);
+    ASSERT_EQ(runDropscope({"query", scene, "--rays", raysPath, "--out", path("brute.csv"), "--brute"}).status,
+              kExitSuccess);
+    const std::string octree = read(path("octree.csv"));
+    EXPECT_EQ(octree, read(path("brute.csv")));
+    std::istringstream lines(octree);
+    std::string line;
+    int rows = -1;  // the header
+    int hits = 0;
+    while (std::getline(lines, line)) {
+        ++rows;
+        hits += line.ends_with(",-1,nan") ? 0 : 1;
+    }
+    EXPECT_EQ(rows, 3000);
+    EXPECT_GT(hits - 1, 100);  // the header line counted as a hit
+}
+
+TEST_F(QueryCommand, MalformedLineNamesItsNumberAndWritesNothing) {
+    const std::string rays = write("rays.csv", "ox,oy,oz,dx,dy,dz\n0,0,0,1,0,0\n0,0,zero,1,0,0\n");
+    const CliRun run = runDropscope({"query", kOneSphere, "--rays", rays, "--out", path("hits.csv")});
+    expectOneLineFailure(run);
+    EXPECT_EQ(run.err, rays + ":3: field 3 (oz) is not a number: \"zero\"\n");
+    EXPECT_FALSE(fs::exists(path("hits.csv")));
+}
+
+TEST_F(QueryCommand, BadRayFilesAreRefused) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"x,y,z\n", ":1: expected the header \"ox,oy,oz,dx,dy,dz\""},
+        {"", ": empty file (expected the header \"ox,oy,oz,dx,dy,dz\")"},
+        {"ox,oy,oz,dx,dy,dz\n1,2,3,0,0,0\n", ":2: direction (dx, dy, dz) is zero"},
+        {"ox,oy,oz,dx,dy,dz\n1,2,3,0,0\n", ":2: expected 6 fields (ox,oy,oz,dx,dy,dz), got 5"},
+        {"ox,oy,oz,dx,dy,dz\n1,2,3,0,0,1,7\n", ":2: more than 6 fields"},
+        {"ox,oy,oz,dx,dy,dz\n1,2,3,nan,0,1\n", ":2: field 4 is not finite"},
+    };
+    for (const auto& [text, message] : cases) {
+        const std::string rays = write("rays.csv", text);
+        const CliRun run = runDropscope({"query", kOneSphere, "--rays", rays, "--out", path("hits.csv")});
+        expectOneLineFailure(run);
+        EXPECT_EQ(run.err, rays + message + "\n");
+        EXPECT_FALSE(fs::exists(path("hits.csv")));
+    }
+}
+
+TEST_F(QueryCommand, ExistingOutputSurvivesAFailedRun) {
+    const std::string out = write("hits.csv", "keep me\n");
+    const CliRun run = runDropscope({"query", kOneSphere, "--rays", path("missing.csv"), "--out", out});
+    expectOneLineFailure(run);
+    EXPECT_EQ(read(out), "keep me\n");
+}
+
+TEST_F(QueryCommand, MissingSceneOrUnwritableOutputIsBadInput) {
+    const std::string rays = write("rays.csv", "ox,oy,oz,dx,dy,dz\n0,0,0,1,0,0\n");
+    expectOneLineFailure(runDropscope({"query", path("none.json"), "--rays", rays, "--out", path("hits.csv")}));
+    expectOneLineFailure(runDropscope({"query", kOneSphere, "--rays", rays, "--out", path("no/such/dir/hits.csv")}));
+    expectOneLineFailure(runDropscope({"query", kOneSphere, "--rays", rays}));  // --out is required
+}
+
+}  // namespace
+}  // namespace dropscope
