@@ -248,6 +248,26 @@ TEST(Octree, StatisticsAreConsistent) {
     EXPECT_GT(tree.bytesUsed(), bytes);
 }
 
+// A sphere reaching across a cell boundary by less than its surface band does not "overlap" the
+// neighbouring cell, yet a ray running inside that cell, closer to the boundary still, does hit it.
+// Only the cell margin keeps it from being skipped by the early exit.
+TEST(Octree, ShapeReachingIntoACellByLessThanItsBandIsStillFound) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::make_unique<Sphere>(Point(-7, -7, -7), 0.5));  // these two fix the root around 0,
+    shapes.push_back(std::make_unique<Sphere>(Point(7, 7, 7), 0.5));     // so x = 0 is a mid-plane
+    const Sphere probe(Point(1.0, 0.0, 0.0), 1.0);
+    const double reach = 0.4 * probe.surfaceBand();
+    shapes.push_back(std::make_unique<Sphere>(Point(1.0 - reach, 0.0, 0.0), 1.0));  // reaches x = -reach
+    shapes.push_back(std::make_unique<Sphere>(Point(-0.5, 3.0, 0.0), 1.0));         // further along the ray
+    const Octree tree(std::move(shapes), OctreeSettings{8, 1});
+    ASSERT_EQ(tree.rootBounds().center().x(), 0.0);
+    const Point origin(-0.5 * reach, -5.0, 0.0);
+    const Direction up(0.0, 1.0, 0.0);
+    const RayHit expected = bruteForceFirstHit(tree.shapes(), origin, up);
+    ASSERT_EQ(expected.shape, 2u);
+    expectSameHit(tree.firstHit(origin, up), expected);
+}
+
 TEST(Octree, NoShapesNoHits) {
     const Octree tree({});
     EXPECT_FALSE(tree.firstHit(Point::Zero(), Direction(1, 0, 0)));
