@@ -2,6 +2,8 @@
 #include "geometry/Overlap.hpp"
 #include "geometry/Sphere.hpp"
 
+#include "geometry/RandomGeometry.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,6 +42,41 @@ TEST(SphereBoxOverlap, SeedEqs17And18ClosestPoint) {
     EXPECT_TRUE(Sphere(Point(1.5, 1.5, 1.5), toCorner + 1e-6).overlaps(kUnit));
     EXPECT_FALSE(Sphere(Point(1.5, 1.5, 1.5), toCorner - 1e-6).overlaps(kUnit));
     EXPECT_TRUE(kUnit.overlaps(Sphere(Point(1.5, 1.5, 1.5), toCorner + 1e-6)));  // symmetric
+}
+
+// Every pair of kinds: the verdict is symmetric and agrees with Monte Carlo samples of the shared
+// bounding region. A sample strictly inside both proves an overlap; an overlap almost always shows
+// one (it can escape the samples only when the shared volume is a tiny sliver).
+TEST(ShapeOverlap, SymmetricAndAgreesWithSampledIntersection) {
+    constexpr int kPairs = 900;
+    constexpr int kSamples = 4000;
+    int overlapping = 0;
+    int witnessed = 0;
+    for (int i = 0; i < kPairs; ++i) {
+        SCOPED_TRACE(::testing::Message() << "pair " << i);
+        testing::Rng rng(static_cast<unsigned>(i));
+        const auto a = testing::randomShape(rng, i, Point::Zero(), 1.0);
+        const auto b = testing::randomShape(rng, i / 3, Point(0.8, 0.0, 0.0), 1.0);
+        const bool verdict = a->overlaps(*b);
+        ASSERT_EQ(verdict, b->overlaps(*a));
+        const Point lower = Point(a->xMin(), a->yMin(), a->zMin()).cwiseMax(Point(b->xMin(), b->yMin(), b->zMin()));
+        const Point upper = Point(a->xMax(), a->yMax(), a->zMax()).cwiseMin(Point(b->xMax(), b->yMax(), b->zMax()));
+        bool witness = false;
+        if ((lower.array() < upper.array()).all()) {
+            for (int k = 0; k < kSamples && !witness; ++k) {
+                const Point p(testing::uniform(rng, lower.x(), upper.x()), testing::uniform(rng, lower.y(), upper.y()),
+                              testing::uniform(rng, lower.z(), upper.z()));
+                witness = a->encloses(p) && b->encloses(p);
+            }
+        }
+        if (witness) {
+            EXPECT_TRUE(verdict) << *a << " / " << *b;
+        }
+        overlapping += verdict ? 1 : 0;
+        witnessed += witness ? 1 : 0;
+    }
+    EXPECT_GT(overlapping, kPairs / 4);
+    EXPECT_GE(witnessed, overlapping * 97 / 100);
 }
 
 }  // namespace
