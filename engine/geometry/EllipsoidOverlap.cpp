@@ -1,5 +1,5 @@
-// Overlap tests with an ellipsoid on one side (seed 000 section 1.3.6): Gilitschenski's K(lambda) for
-// ellipsoid-ellipsoid and ellipsoid-sphere, Eberly's feature tests for ellipsoid-box.
+// Overlap tests with an ellipsoid on one side (seed 000 section 1.3.6): Gilitschenski's K(lambda)
+// for ellipsoid-ellipsoid and ellipsoid-sphere, Eberly's feature tests for ellipsoid-box.
 #include "geometry/Box.hpp"
 #include "geometry/Ellipsoid.hpp"
 #include "geometry/Overlap.hpp"
@@ -20,8 +20,8 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The search for the maximiser of f stops once a step moves t = ln(lambda / (1 - lambda)) by less
-// than this (relative to max(1, |t|)): lambda and 1 - lambda are then exact to a few ulps, and f, flat
-// at its maximum, is exact to rounding.
+// than this (relative to max(1, |t|)): lambda and 1 - lambda are then exact to a few ulps, and f,
+// flat at its maximum, is exact to rounding.
 constexpr double kLogOddsStep = 4.0 * std::numeric_limits<double>::epsilon();
 // Newton needs ~5 steps (one for two spheres); bisection, the fallback, ~60 across the bracket.
 constexpr int kMaxSearchSteps = 100;
@@ -29,7 +29,8 @@ constexpr int kMaxSearchSteps = 100;
 Eigen::LLT<Eigen::Matrix3d> factorise(const Eigen::Matrix3d& m) {
     Eigen::LLT<Eigen::Matrix3d> cholesky(m);
     if (cholesky.info() != Eigen::Success)
-        throw std::invalid_argument("gilitschenskiMaximum: shape matrices must be positive definite");
+        throw std::invalid_argument(
+            "gilitschenskiMaximum: shape matrices must be positive definite");
     return cholesky;
 }
 
@@ -38,23 +39,25 @@ double inverseTrace(const Eigen::LLT<Eigen::Matrix3d>& cholesky) {
     return cholesky.matrixL().solve(Eigen::Matrix3d::Identity()).squaredNorm();
 }
 
-// f = dr . S^{-1} dr with S = shapeA/lambda + shapeB/(1-lambda) (seed 000 eq. 1.34, f = 1 - K), as a
-// function of the log-odds t = ln(lambda / (1 - lambda)), i.e. 1/lambda = 1 + e^{-t} and
+// f = dr . S^{-1} dr with S = shapeA/lambda + shapeB/(1-lambda) (seed 000 eq. 1.34, f = 1 - K),
+// as a function of the log-odds t = ln(lambda / (1 - lambda)), i.e. 1/lambda = 1 + e^{-t} and
 // 1/(1-lambda) = 1 + e^{t}: both stay at full relative precision however close the maximiser comes
 // to 0 or 1 (a small ellipsoid against a large one). With x = S^{-1} dr and
 // S' = dS/dt = e^{t} shapeB - e^{-t} shapeA,
 //   df/dt = -x.S'x = e^{-t} a - e^{t} b,   a = x.shapeA x > 0,   b = x.shapeB x > 0.
-// f is strictly concave in lambda for dr != 0, so df/dt changes sign once, at the root of the balance
+// f is strictly concave in lambda for dr != 0, so df/dt changes sign once, and at the same t so
+// does the balance
 //   phi = ln a - ln b - 2t,   phi' = a'/a - b'/b - 2,   a' = -2 z.shapeA x,  b' = -2 z.shapeB x,
-// z = S^{-1} S'x. phi is far closer to linear than df/dt (exactly linear for two spheres).
+// with z = S^{-1} S'x. phi is far closer to linear than df/dt (exactly linear for two spheres).
 //
-// In the basis that diagonalises both shape matrices (shapeA = L L^T, L^{-1} shapeB L^{-T} =
-// V diag(mu) V^T), f = sum_i w_i^2 g_i with g_i = lambda(1-lambda)/((1-lambda) + mu_i lambda) concave
-// and peaking at t_i = -ln(mu_i)/2, so the maximiser lies between the extreme t_i. Only for that
-// bracket is the diagonalisation used, through bounds: mu_max <= tr(shapeB) tr(shapeA^{-1}) and
-// mu_min >= 1 / (tr(shapeA) tr(shapeB^{-1})). f itself is evaluated by factorising S, whose condition
-// number is at most max(cond(shapeA), cond(shapeB)); the small mu lose all accuracy once
-// cond(shapeA) cond(shapeB) nears 1/eps (two needles of semi-axis ratio ~1e4 gave max f wrong by 100%).
+// Bracket: in the basis that diagonalises both shape matrices (shapeA = L L^T,
+// L^{-1} shapeB L^{-T} = V diag(mu) V^T), f = sum_i w_i^2 g_i with
+// g_i = lambda(1-lambda)/((1-lambda) + mu_i lambda) concave and peaking at t_i = -ln(mu_i)/2, so
+// the maximiser lies between the extreme t_i; and mu_max <= tr(shapeB) tr(shapeA^{-1}),
+// mu_min >= 1 / (tr(shapeA) tr(shapeB^{-1})).
+// Why f is not evaluated in that diagonal basis: the small mu lose all accuracy once
+// cond(shapeA) cond(shapeB) nears 1/eps (two needles of semi-axis ratio ~2e4 gave max f wrong by
+// 100%), while cond(S) <= max(cond(shapeA), cond(shapeB)).
 class GilitschenskiFunction {
 public:
     struct Sample {
@@ -77,7 +80,8 @@ public:
     Sample at(double t) const {
         const double eMinus = std::exp(-t);
         const double ePlus = std::exp(t);
-        const Eigen::LLT<Eigen::Matrix3d> cholesky = factorise((1.0 + eMinus) * shapeA_ + (1.0 + ePlus) * shapeB_);
+        const Eigen::LLT<Eigen::Matrix3d> cholesky =
+            factorise((1.0 + eMinus) * shapeA_ + (1.0 + ePlus) * shapeB_);
         const Eigen::Vector3d y = cholesky.matrixL().solve(dr_);
         const Eigen::Vector3d x = cholesky.matrixU().solve(y);
         const Eigen::Vector3d ax = shapeA_ * x;
@@ -146,8 +150,8 @@ double edgeInteriorMinimum(const Point& p0, const Point& p1, const Eigen::Vector
                            const Eigen::Matrix3d& m) {
     const Eigen::Vector3d edge = p1 - p0;
     const Eigen::Vector3d mEdge = m * edge;
-    const double a = edge.dot(mEdge);           // seed 000 eq. 1.37
-    const double b = mEdge.dot(p0 - center);    // seed 000 eq. 1.38
+    const double a = edge.dot(mEdge);         // seed 000 eq. 1.37
+    const double b = mEdge.dot(p0 - center);  // seed 000 eq. 1.38
     // seed 000 eq. 1.41, -1 <= B/A <= 0, i.e. t* = -B/A in [0,1] (eq. 1.40); verified, multiplied
     // through by A > 0.
     if (!(-a <= b && b <= 0.0)) return kInfinity;
@@ -168,14 +172,16 @@ double faceInteriorMinimum(const Point& p0, const Point& p1, const Point& p2,
     const double c = e2.dot(me2);      // seed 000 eq. 1.47
     const double d = me1.dot(offset);  // seed 000 eq. 1.48
     const double e = me2.dot(offset);  // seed 000 eq. 1.49
-    // seed 000 eq. 1.52, verified: (u,v) = -[A B; B C]^{-1} (D,E) = (CD - BE, AE - BD) / (B^2 - AC).
+    // seed 000 eq. 1.52, verified:
+    //   (u,v) = -[A B; B C]^{-1} (D,E) = (CD - BE, AE - BD) / (B^2 - AC).
     // [A B; B C] is the Gram matrix of two independent edges in the M inner product, so
     // B^2 - AC < 0 always and eq. 1.53 holds for every non-degenerate box.
     const double determinant = b * b - a * c;
     const double u = (c * d - b * e) / determinant;
     const double v = (a * e - b * d) / determinant;
-    if (!(0.0 <= u && u <= 1.0 && 0.0 <= v && v <= 1.0)) return kInfinity;  // seed 000 eqs. 1.54-1.55
-    return quadraticForm(p0 + u * e1 + v * e2, center, m);                  // seed 000 eq. 1.56
+    if (!(0.0 <= u && u <= 1.0 && 0.0 <= v && v <= 1.0))
+        return kInfinity;                                   // seed 000 eqs. 1.54-1.55
+    return quadraticForm(p0 + u * e1 + v * e2, center, m);  // seed 000 eq. 1.56
 }
 
 }  // namespace
@@ -188,9 +194,9 @@ double gilitschenskiMaximum(const Eigen::Vector3d& centerA, const Eigen::Matrix3
                                                    shapeA.data(), shapeA.data() + shapeA.size());
     const Eigen::Matrix3d& first = swap ? shapeB : shapeA;
     const Eigen::Matrix3d& second = swap ? shapeA : shapeB;
-    const Eigen::Vector3d dr = swap ? Eigen::Vector3d(centerA - centerB)
-                                    : Eigen::Vector3d(centerB - centerA);
-    if (dr.isZero(0.0)) return 0.0;  // f vanishes identically
+    const Eigen::Vector3d dr =
+        swap ? Eigen::Vector3d(centerA - centerB) : Eigen::Vector3d(centerB - centerA);
+    if (dr.isZero(0.0)) return 0.0;                             // f vanishes identically
     return maximise(GilitschenskiFunction(dr, first, second));  // seed 000 eq. 1.34
 }
 
@@ -215,7 +221,8 @@ double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::M
     // seed tests the box centroid instead, which misses a small ellipsoid inside a large box away
     // from its centroid; this is the complete test. Otherwise the minimum of the convex form lies
     // on the boundary, in the relative interior of exactly one vertex, edge or face.
-    if ((center.array() >= box.lower().array()).all() && (center.array() <= box.upper().array()).all())
+    if ((center.array() >= box.lower().array()).all() &&
+        (center.array() <= box.upper().array()).all())
         return 0.0;
     double minimum = kInfinity;
     for (int corner = 0; corner < 8; ++corner)  // the 8 vertices (seed 000 section 1.3.5)
@@ -227,14 +234,15 @@ double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::M
         // The 4 edges parallel to `axis` start at the corners with that bit clear.
         for (int corner = 0; corner < 8; ++corner) {
             if ((corner & along) != 0) continue;
-            minimum = std::min(minimum, edgeInteriorMinimum(vertex(box, corner),
-                                                            vertex(box, corner | along), center, m));
+            minimum = std::min(
+                minimum,
+                edgeInteriorMinimum(vertex(box, corner), vertex(box, corner | along), center, m));
         }
         // The 2 faces normal to `axis`.
         for (const int side : {0, along}) {
-            minimum = std::min(minimum, faceInteriorMinimum(vertex(box, side),
-                                                            vertex(box, side | across1),
-                                                            vertex(box, side | across2), center, m));
+            minimum = std::min(minimum,
+                               faceInteriorMinimum(vertex(box, side), vertex(box, side | across1),
+                                                   vertex(box, side | across2), center, m));
         }
     }
     return minimum;

@@ -3,12 +3,13 @@
 #include "geometry/Box.hpp"
 #include "geometry/Ellipsoid.hpp"
 #include "geometry/Overlap.hpp"
+#include "geometry/RandomGeometry.hpp"
 #include "geometry/Rotation.hpp"
 #include "geometry/Sphere.hpp"
-#include "geometry/RandomGeometry.hpp"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -45,7 +46,8 @@ double surfaceMinimum(const Point& center, const Eigen::Vector3d& semiAxes,
         return form(Point(center + stretch * s));
     };
     constexpr int kGrid = 400;
-    constexpr std::array<std::array<double, 2>, 4> kMoves{{{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}}};
+    constexpr std::array<std::array<double, 2>, 4> kMoves{
+        {{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}}};
     const double thetaStep = kPi / kGrid;
     const double phiStep = 2.0 * kPi / kGrid;
     double best = std::numeric_limits<double>::infinity();
@@ -129,14 +131,16 @@ double vertexMinimum(const Point& center, const Eigen::Matrix3d& m, const Box& b
     double minimum = std::numeric_limits<double>::infinity();
     for (int corner = 0; corner < 8; ++corner) {
         Point v;
-        for (int i = 0; i < 3; ++i) v[i] = ((corner >> i) & 1) != 0 ? box.upper()[i] : box.lower()[i];
+        for (int i = 0; i < 3; ++i)
+            v[i] = ((corner >> i) & 1) != 0 ? box.upper()[i] : box.lower()[i];
         minimum = std::min(minimum, (v - center).dot(m * (v - center)));
     }
     return minimum;
 }
 
 Eigen::Matrix3d randomShapeMatrix(Rng& rng) {
-    const Eigen::Vector3d semiAxes(uniform(rng, 0.2, 2.0), uniform(rng, 0.2, 2.0), uniform(rng, 0.2, 2.0));
+    const Eigen::Vector3d semiAxes(uniform(rng, 0.2, 2.0), uniform(rng, 0.2, 2.0),
+                                   uniform(rng, 0.2, 2.0));
     const Eigen::Matrix3d rotation = testing::randomRotation(rng);
     return rotation * semiAxes.cwiseAbs2().asDiagonal() * rotation.transpose();
 }
@@ -183,6 +187,65 @@ TEST(GilitschenskiMaximum, IsTheMaximumOfKOverLambda) {
     }
 }
 
+// Needles and plates of semi-axis ratio up to ~1e4 and sizes up to ~1e3 apart, where the maximiser
+// comes close to lambda = 0 or 1: a grid in t = ln(lambda / (1 - lambda)), refined by
+// golden-section search, of the direct form
+// 1 - K = dr . (shapeA (1 + e^{-t}) + shapeB (1 + e^{t}))^{-1} dr.
+TEST(GilitschenskiMaximum, MatchesGridSearchForElongatedPairs) {
+    for (int i = 0; i < 30; ++i) {
+        SCOPED_TRACE(caseName(i));
+        Rng rng(static_cast<Rng::result_type>(i));
+        const auto shape = [&] {
+            const double size = std::exp(uniform(rng, -3.5, 3.5));
+            const Eigen::Vector3d semiAxes =
+                size * Eigen::Vector3d(std::exp(uniform(rng, -4.5, 4.5)),
+                                       std::exp(uniform(rng, -4.5, 4.5)),
+                                       std::exp(uniform(rng, -4.5, 4.5)));
+            const Eigen::Matrix3d rotation = testing::randomRotation(rng);
+            return Eigen::Matrix3d(rotation * semiAxes.cwiseAbs2().asDiagonal() *
+                                   rotation.transpose());
+        };
+        const Eigen::Matrix3d shape1 = shape();
+        const Eigen::Matrix3d shape2 = shape();
+        const Point c1 = testing::randomPoint(rng, 1.0);
+        const Point c2 =
+            c1 + std::exp(uniform(rng, -3.0, 3.0)) * testing::randomDirection(rng).vector();
+        const Eigen::Vector3d dr = c2 - c1;
+        const auto f = [&](double t) {
+            const Eigen::Matrix3d sum =
+                shape1 * (1.0 + std::exp(-t)) + shape2 * (1.0 + std::exp(t));
+            return dr.dot(sum.ldlt().solve(dr));
+        };
+        constexpr int kGrid = 20000;
+        constexpr double kRange = 25.0;
+        constexpr double kStep = 2.0 * kRange / kGrid;
+        double best = -kRange;
+        double bestValue = f(best);
+        for (int k = 1; k <= kGrid; ++k) {
+            const double t = -kRange + k * kStep;
+            const double value = f(t);
+            if (value > bestValue) {
+                best = t;
+                bestValue = value;
+            }
+        }
+        double lo = best - kStep;
+        double hi = best + kStep;
+        const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+        while (hi - lo > 1e-12) {
+            const double left = hi - golden * (hi - lo);
+            const double right = lo + golden * (hi - lo);
+            if (f(left) < f(right)) {
+                lo = left;
+            } else {
+                hi = right;
+            }
+        }
+        const double reference = f(0.5 * (lo + hi));
+        EXPECT_NEAR(gilitschenskiMaximum(c1, shape1, c2, shape2), reference, 1e-8 * reference);
+    }
+}
+
 TEST(GilitschenskiMaximum, IsZeroForCoincidentCentres) {
     Rng rng(7);
     const Point c = testing::randomPoint(rng, 1.0);
@@ -200,8 +263,10 @@ TEST(EllipsoidOverlap, AxisAlignedPairsTouchAtTheSumOfSemiAxes) {
         Rng rng(static_cast<Rng::result_type>(i));
         const int axis = i % 3;
         const Point centerA = testing::randomPoint(rng, 5.0);
-        const Eigen::Vector3d semiA(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0));
-        const Eigen::Vector3d semiB(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0));
+        const Eigen::Vector3d semiA(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0),
+                                    uniform(rng, 0.1, 2.0));
+        const Eigen::Vector3d semiB(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0),
+                                    uniform(rng, 0.1, 2.0));
         const double radius = uniform(rng, 0.1, 2.0);
         const Ellipsoid a = Ellipsoid::fromSemiAxes(centerA, semiA);
         const auto displaced = [&](double reach, double factor) {
@@ -230,10 +295,13 @@ TEST(EllipsoidOverlap, RotatedPairsMatchBruteForce) {
         SCOPED_TRACE(caseName(i));
         Rng rng(static_cast<Rng::result_type>(i));
         const Point centerA = testing::randomPoint(rng, 3.0);
-        const Eigen::Vector3d semiA(uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5));
-        const Eigen::Matrix3d rotationA = rotationAboutAxis(testing::randomDirection(rng), uniform(rng, 0.0, 2.0 * kPi));
+        const Eigen::Vector3d semiA(uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5),
+                                    uniform(rng, 0.3, 1.5));
+        const Eigen::Matrix3d rotationA =
+            rotationAboutAxis(testing::randomDirection(rng), uniform(rng, 0.0, 2.0 * kPi));
         const Ellipsoid a = Ellipsoid::fromSemiAxes(centerA, semiA, rotationA);
-        const Eigen::Vector3d semiB(uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5));
+        const Eigen::Vector3d semiB(uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5),
+                                    uniform(rng, 0.3, 1.5));
         const double reach = uniform(rng, 0.0, 1.1 * (semiA.maxCoeff() + semiB.maxCoeff()));
         const Point centerB = centerA + reach * testing::randomDirection(rng).vector();
         std::unique_ptr<Shape> b;
@@ -276,8 +344,8 @@ TEST(EllipsoidOverlap, IsSymmetric) {
         Rng rng(static_cast<Rng::result_type>(i));
         const Ellipsoid a = testing::randomEllipsoid(rng, Point::Zero(), 1.0);
         const Ellipsoid b = testing::randomEllipsoid(rng, Point::Zero(), 1.0);
-        const double scale = std::sqrt(gilitschenskiMaximum(a.center(), a.inverseMatrix(), b.center(),
-                                                            b.inverseMatrix()));
+        const double scale = std::sqrt(
+            gilitschenskiMaximum(a.center(), a.inverseMatrix(), b.center(), b.inverseMatrix()));
         // Both scaled by sqrt(max f) about their centres (M -> M / max f) touch.
         const Ellipsoid aTouching = Ellipsoid::fromMatrix(a.center(), a.matrix() / (scale * scale));
         const Ellipsoid bTouching = Ellipsoid::fromMatrix(b.center(), b.matrix() / (scale * scale));
@@ -322,8 +390,9 @@ TEST(EllipsoidBoxOverlap, CentreInsideTheBoxGivesZero) {
 // faces are all outside the ellipsoid.
 TEST(EllipsoidBoxOverlap, SmallEllipsoidInsideLargeBoxAwayFromItsCentroid) {
     const Box box(Point(0.0, 0.0, 0.0), Point(10.0, 10.0, 10.0));
-    const Ellipsoid e = Ellipsoid::fromSemiAxes(Point(2.0, 3.0, 7.0), Eigen::Vector3d(0.5, 0.3, 0.2),
-                                                rotationAboutAxis(Direction(1.0, 2.0, 3.0), 0.7));
+    const Ellipsoid e =
+        Ellipsoid::fromSemiAxes(Point(2.0, 3.0, 7.0), Eigen::Vector3d(0.5, 0.3, 0.2),
+                                rotationAboutAxis(Direction(1.0, 2.0, 3.0), 0.7));
     EXPECT_GT(e.quadraticForm(box.center()), 1.0);
     EXPECT_EQ(minimumQuadraticFormOverBox(e.center(), e.matrix(), box), 0.0);
     EXPECT_TRUE(e.overlaps(box));
@@ -333,8 +402,9 @@ TEST(EllipsoidBoxOverlap, SmallEllipsoidInsideLargeBoxAwayFromItsCentroid) {
 TEST(EllipsoidBoxOverlap, CrossingOnlyOneEdge) {
     const Box box(Point(0.0, 0.0, 0.0), Point(2.0, 2.0, 2.0));
     // Long axis along (1,1,0), pointing at the edge x = y = 0 and crossing it at z = 1.
-    const Ellipsoid e = Ellipsoid::fromSemiAxes(Point(-0.3, -0.3, 1.0), Eigen::Vector3d(0.8, 0.3, 0.6),
-                                                rotationAboutAxis(Direction(0.0, 0.0, 1.0), kPi / 4.0));
+    const Ellipsoid e =
+        Ellipsoid::fromSemiAxes(Point(-0.3, -0.3, 1.0), Eigen::Vector3d(0.8, 0.3, 0.6),
+                                rotationAboutAxis(Direction(0.0, 0.0, 1.0), kPi / 4.0));
     const BoxMinimum reference = boxMinimum(e.center(), e.matrix(), box);
     EXPECT_EQ(boundCount(reference.at, box), 2);  // the closest point is inside an edge
     EXPECT_GT(vertexMinimum(e.center(), e.matrix(), box), 1.0);
@@ -346,8 +416,9 @@ TEST(EllipsoidBoxOverlap, CrossingOnlyOneEdge) {
 
 TEST(EllipsoidBoxOverlap, CrossingOnlyOneFaceInterior) {
     const Box box(Point(0.0, 0.0, 0.0), Point(2.0, 2.0, 2.0));
-    const Ellipsoid e = Ellipsoid::fromSemiAxes(Point(1.2, 0.9, -0.2), Eigen::Vector3d(0.5, 0.4, 0.3),
-                                                rotationAboutAxis(Direction(1.0, -1.0, 2.0), 0.4));
+    const Ellipsoid e =
+        Ellipsoid::fromSemiAxes(Point(1.2, 0.9, -0.2), Eigen::Vector3d(0.5, 0.4, 0.3),
+                                rotationAboutAxis(Direction(1.0, -1.0, 2.0), 0.4));
     const BoxMinimum reference = boxMinimum(e.center(), e.matrix(), box);
     EXPECT_EQ(boundCount(reference.at, box), 1);  // the closest point is inside a face
     EXPECT_GT(vertexMinimum(e.center(), e.matrix(), box), 1.0);
@@ -358,21 +429,24 @@ TEST(EllipsoidBoxOverlap, CrossingOnlyOneFaceInterior) {
 
     // Axis-aligned: the closest point is straight above the centre, at Q = (0.2 / 0.3)^2.
     const Ellipsoid aligned = Ellipsoid::fromSemiAxes(e.center(), Eigen::Vector3d(0.5, 0.4, 0.3));
-    EXPECT_NEAR(minimumQuadraticFormOverBox(aligned.center(), aligned.matrix(), box), 4.0 / 9.0, 1e-15);
+    EXPECT_NEAR(minimumQuadraticFormOverBox(aligned.center(), aligned.matrix(), box), 4.0 / 9.0,
+                1e-15);
 }
 
 TEST(EllipsoidBoxOverlap, TouchingAFaceIsNotOverlapping) {
     const Box box(Point(0.0, 0.0, 0.0), Point(2.0, 2.0, 2.0));
-    // Semi-axis 0.5 along z, rotated about z: the lowest point z = -0.5 + 0.5 touches the face z = 0.
+    // Semi-axis 0.5 along z, rotated about z: the lowest point, z = -0.5 + 0.5, touches z = 0.
     const Eigen::Matrix3d rotation = rotationAboutAxis(Direction(0.0, 0.0, 1.0), kPi / 6.0);
     const Eigen::Vector3d semiAxes(0.75, 0.25, 0.5);
     const Ellipsoid touching = Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5), semiAxes, rotation);
     EXPECT_NEAR(minimumQuadraticFormOverBox(touching.center(), touching.matrix(), box), 1.0, 1e-15);
     EXPECT_FALSE(touching.overlaps(box));
     EXPECT_FALSE(box.overlaps(touching));
-    const Ellipsoid closer = Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5 * (1.0 - 1e-6)), semiAxes, rotation);
+    const Ellipsoid closer =
+        Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5 * (1.0 - 1e-6)), semiAxes, rotation);
     EXPECT_TRUE(closer.overlaps(box));
-    const Ellipsoid further = Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5 * (1.0 + 1e-6)), semiAxes, rotation);
+    const Ellipsoid further =
+        Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5 * (1.0 + 1e-6)), semiAxes, rotation);
     EXPECT_FALSE(further.overlaps(box));
 }
 
