@@ -1,5 +1,6 @@
 #include "scene/SceneLoader.hpp"
 
+#include "scene/GeneratorReader.hpp"
 #include "scene/JsonDocument.hpp"
 #include "scene/JsonPath.hpp"
 #include "scene/JsonReader.hpp"
@@ -11,6 +12,7 @@
 #include <array>
 #include <cerrno>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <system_error>
 
@@ -19,6 +21,8 @@ namespace dropscope {
 namespace {
 
 constexpr std::int64_t kFormatVersion = 1;
+// Deepest octree the scene may ask for (Octree accepts 0..30).
+constexpr std::int64_t kMaxOctreeDepth = 30;
 
 struct LengthUnit {
     std::string_view name;
@@ -82,6 +86,27 @@ void readShapes(const JsonReader& shapes, Scene& scene) {
     }
 }
 
+// {"max_depth": 0..30, "max_shapes_per_leaf": >= 1}, both optional.
+void readOctreeSettings(const JsonReader& json, Scene& scene) {
+    json.expectKeys({"max_depth", "max_shapes_per_leaf"});
+    if (const auto depth = json.optionalMember("max_depth")) {
+        const std::int64_t value = depth->integer();
+        if (value < 0 || value > kMaxOctreeDepth) {
+            depth->fail("must be in 0.." + std::to_string(kMaxOctreeDepth) + ", got " + std::to_string(value));
+        }
+        scene.octree.maxDepth = static_cast<int>(value);
+    }
+    if (const auto perLeaf = json.optionalMember("max_shapes_per_leaf")) {
+        const std::int64_t value = perLeaf->integer();
+        if (value < 1) perLeaf->fail("must be >= 1, got " + std::to_string(value));
+        if (value > std::numeric_limits<int>::max()) {
+            perLeaf->fail("must be <= " + std::to_string(std::numeric_limits<int>::max()) + ", got " +
+                          std::to_string(value));
+        }
+        scene.octree.maxShapesPerLeaf = static_cast<int>(value);
+    }
+}
+
 }  // namespace
 
 Scene parseScene(std::string_view jsonText, const std::string& origin) {
@@ -90,7 +115,8 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     Scene scene;
     scene.origin = origin;
     readFormatVersion(root, scene);
-    root.expectKeys({"dropscope", "unit", "wavelength_nm", "ambient", "media", "shapes", "sources"});
+    root.expectKeys(
+        {"dropscope", "unit", "wavelength_nm", "ambient", "media", "shapes", "sources", "octree", "generators"});
     readUnit(root, scene);
     if (const auto wavelength = root.optionalMember("wavelength_nm")) scene.wavelengthNm = wavelength->positive();
     if (const auto media = root.optionalMember("media")) {
@@ -101,7 +127,11 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     if (const auto sources = root.optionalMember("sources")) {
         for (const JsonReader& json : sources->elements()) scene.sources.push_back(readSource(json));
     }
+    if (const auto octree = root.optionalMember("octree")) readOctreeSettings(*octree, scene);
+    // Only the explicit shapes need the pairwise check; generated droplets avoid everything by construction.
     checkShapesDisjoint(scene);
+    scene.explicitShapeCount = scene.shapes.size();
+    if (const auto generators = root.optionalMember("generators")) readGenerators(*generators, scene);
     return scene;
 }
 
