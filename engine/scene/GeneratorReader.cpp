@@ -4,6 +4,7 @@
 #include "scene/DropletCloud.hpp"
 #include "scene/JsonPath.hpp"
 #include "scene/MediaReader.hpp"
+#include "scene/ShapeReader.hpp"
 
 #include <charconv>
 #include <numbers>
@@ -27,16 +28,7 @@ std::string roughly(double value) {
 // {"min": [..], "max": [..]} with min < max on every axis.
 Eigen::AlignedBox3d readRegion(const JsonReader& json) {
     json.expectKeys({"min", "max"});
-    const Point lower = json.member("min").vector3();
-    const JsonReader upperJson = json.member("max");
-    const Point upper = upperJson.vector3();
-    for (Eigen::Index axis = 0; axis < 3; ++axis) {
-        if (!(lower[axis] < upper[axis])) {
-            upperJson.fail("must be > \"min\" on every axis (" + std::string(1, "xyz"[axis]) + ": max " +
-                           jsonpath::number(upper[axis]) + " <= min " + jsonpath::number(lower[axis]) + ")");
-        }
-    }
-    return {lower, upper};
+    return readCorners(json);
 }
 
 // The optional truncation [min, max] of an unbounded distribution.

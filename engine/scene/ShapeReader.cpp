@@ -33,16 +33,8 @@ std::unique_ptr<Shape> readSphere(const JsonReader& json) {
 
 std::unique_ptr<Shape> readBox(const JsonReader& json) {
     json.expectKeys({"type", "min", "max", "medium", "name"});
-    const Point lower = json.member("min").vector3();
-    const JsonReader upperJson = json.member("max");
-    const Point upper = upperJson.vector3();
-    for (Eigen::Index axis = 0; axis < 3; ++axis) {
-        if (!(lower[axis] < upper[axis])) {
-            upperJson.fail("must be > \"min\" on every axis (" + std::string(1, "xyz"[axis]) + ": max " +
-                           jsonpath::number(upper[axis]) + " <= min " + jsonpath::number(lower[axis]) + ")");
-        }
-    }
-    return construct(json, [&] { return std::make_unique<Box>(lower, upper); });
+    const Eigen::AlignedBox3d corners = readCorners(json);
+    return construct(json, [&] { return std::make_unique<Box>(corners.min(), corners.max()); });
 }
 
 // {"axis": [x, y, z], "angle_deg": a}: a right-handed rotation of a degrees about axis.
@@ -74,6 +66,19 @@ std::unique_ptr<Shape> readEllipsoid(const JsonReader& json) {
 }
 
 }  // namespace
+
+Eigen::AlignedBox3d readCorners(const JsonReader& json) {
+    const Point lower = json.member("min").vector3();
+    const JsonReader upperJson = json.member("max");
+    const Point upper = upperJson.vector3();
+    for (Eigen::Index axis = 0; axis < 3; ++axis) {
+        if (!(lower[axis] < upper[axis])) {
+            upperJson.fail("must be > \"min\" on every axis (" + std::string(1, "xyz"[axis]) + ": max " +
+                           jsonpath::number(upper[axis]) + " <= min " + jsonpath::number(lower[axis]) + ")");
+        }
+    }
+    return {lower, upper};
+}
 
 NamedShape readShape(const JsonReader& json, const std::vector<Medium>& media) {
     const JsonReader typeJson = json.member("type");

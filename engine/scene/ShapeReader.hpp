@@ -4,6 +4,8 @@
 #include "scene/JsonReader.hpp"
 #include "scene/Medium.hpp"
 
+#include <Eigen/Geometry>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +16,9 @@ struct NamedShape {
     std::unique_ptr<Shape> shape;
     std::string name;  // empty when unnamed
 };
+
+// The "min" and "max" corners of a box or region: two 3-vectors with min < max on every axis.
+Eigen::AlignedBox3d readCorners(const JsonReader& json);
 
 // One element of "shapes": sphere, ellipsoid or box, with its medium resolved against `media`.
 NamedShape readShape(const JsonReader& json, const std::vector<Medium>& media);
