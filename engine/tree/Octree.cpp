@@ -42,6 +42,20 @@ double largestBand(const std::vector<std::unique_ptr<Shape>>& shapes) {
     return band;
 }
 
+// Interleaves the bits of three 21-bit coordinates.
+std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+    const auto spread = [](std::uint64_t v) {
+        v &= 0x1fffff;
+        v = (v | v << 32) & 0x1f00000000ffffULL;
+        v = (v | v << 16) & 0x1f0000ff0000ffULL;
+        v = (v | v << 8) & 0x100f00f00f00f00fULL;
+        v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+        v = (v | v << 2) & 0x1249249249249249ULL;
+        return v;
+    };
+    return spread(x) | spread(y) << 1 | spread(z) << 2;
+}
+
 }  // namespace
 
 Octree::Octree(std::vector<std::unique_ptr<Shape>> shapes, OctreeSettings settings)
@@ -58,13 +72,55 @@ Octree& Octree::operator=(Octree&&) noexcept = default;
 void Octree::rebuild(const CellBounds& bounds) {
     rootBounds_ = bounds;
     margin_ = std::max(kMarginRelative * bounds.diagonal().norm(), 4.0 * largestBand(shapes_));
-    nodes_.assign(1, Node{});
+    building_.assign(1, Node{});
     liveShapes_ = 0;
+    // Placed in Morton order of their centres: consecutive shapes then walk the same cells, which
+    // stay in cache (the final tree does not depend on the order).
+    std::vector<std::pair<std::uint64_t, ShapeId>> order;
+    order.reserve(shapes_.size());
+    const Eigen::Array3d scale = 2097151.0 / rootBounds_.sizes().array();  // 21 bits per axis
     for (std::size_t id = 0; id < shapes_.size(); ++id) {
         if (!shapes_[id]) continue;
-        ++liveShapes_;
-        place(0, rootBounds_, static_cast<ShapeId>(id));
+        const Eigen::Array3d cell = ((boundsOf(*shapes_[id]).center() - rootBounds_.min()).array() * scale)
+                                        .max(0.0).min(2097151.0);
+        order.emplace_back(mortonCode(static_cast<std::uint32_t>(cell.x()), static_cast<std::uint32_t>(cell.y()),
+                                      static_cast<std::uint32_t>(cell.z())),
+                           static_cast<ShapeId>(id));
     }
+    std::sort(order.begin(), order.end());
+    for (const auto& [code, id] : order) place(0, rootBounds_, id, boundsOf(*shapes_[id]));
+    liveShapes_ = order.size();
+    freeze();
+}
+
+void Octree::freeze() {
+    cells_.clear();
+    spheres_.clear();
+    others_.clear();
+    cells_.reserve(building_.size());
+    for (const Node& node : building_) {
+        cells_.push_back({node.firstChild, static_cast<std::uint32_t>(spheres_.size()),
+                          static_cast<std::uint32_t>(node.sphereIds.size()), static_cast<std::uint32_t>(others_.size()),
+                          static_cast<std::uint32_t>(node.otherIds.size())});
+        for (ShapeId id : node.sphereIds) spheres_.push_back({static_cast<const Sphere&>(*shapes_[id]).geometry(), id});
+        others_.insert(others_.end(), node.otherIds.begin(), node.otherIds.end());
+    }
+    cells_.shrink_to_fit();
+    spheres_.shrink_to_fit();
+    others_.shrink_to_fit();
+    building_ = {};
+}
+
+void Octree::thaw() {
+    building_.assign(cells_.size(), Node{});
+    forEachNode([&](std::uint32_t index, const Cell& cell, const CellBounds&, int level) {
+        Node& node = building_[index];
+        node.firstChild = cell.firstChild;
+        node.level = static_cast<std::uint32_t>(level);
+        for (std::uint32_t k = 0; k < cell.sphereCount; ++k) node.sphereIds.push_back(spheres_[cell.firstSphere + k].id);
+        node.otherIds.assign(others_.begin() + cell.firstOther, others_.begin() + cell.firstOther + cell.otherCount);
+        return true;
+    });
 }
 
 CellBounds Octree::childBounds(const CellBounds& bounds, int child) const {
@@ -78,28 +134,33 @@ CellBounds Octree::childBounds(const CellBounds& bounds, int child) const {
     return result;
 }
 
-// Conservative: the shape's extent meets the inflated cell, and its exact overlap test agrees.
-bool Octree::reaches(const Shape& shape, const CellBounds& cell) const {
+// Conservative: the shape's extent meets the inflated cell, and its exact overlap test agrees. For a
+// sphere, the distance from its centre to the inflated cell below its radius (seed eq. 1.7 without
+// the bands, which only makes it more inclusive), without building a Box.
+bool Octree::reaches(const Shape& shape, const CellBounds& extent, const CellBounds& cell) const {
     const CellBounds grown = inflated(cell, margin_);
-    if (!grown.intersects(boundsOf(shape))) return false;
+    if (!grown.intersects(extent)) return false;
+    if (shape.kind() == ShapeKind::Sphere) {
+        const auto& sphere = static_cast<const Sphere&>(shape);
+        const Point closest = sphere.center().cwiseMax(grown.min()).cwiseMin(grown.max());
+        return (closest - sphere.center()).squaredNorm() < sphere.radius() * sphere.radius();
+    }
     return shape.overlaps(Box(grown.min(), grown.max()));
 }
 
-void Octree::store(Node& node, ShapeId id) {
-    const Shape& s = *shapes_[id];
-    if (s.kind() == ShapeKind::Sphere) {
-        node.spheres.push_back(static_cast<const Sphere&>(s).geometry());
+void Octree::store(Node& node, ShapeId id) const {
+    if (shapes_[id]->kind() == ShapeKind::Sphere) {
         node.sphereIds.push_back(id);
     } else {
         node.otherIds.push_back(id);
     }
 }
 
-void Octree::place(std::uint32_t node, const CellBounds& bounds, ShapeId id) {
-    if (nodes_[node].isLeaf()) {
-        store(nodes_[node], id);
-        if (static_cast<int>(nodes_[node].size()) > settings_.maxShapesPerLeaf &&
-            static_cast<int>(nodes_[node].level) < settings_.maxDepth) {
+void Octree::place(std::uint32_t node, const CellBounds& bounds, ShapeId id, const CellBounds& extent) {
+    if (building_[node].isLeaf()) {
+        store(building_[node], id);
+        if (static_cast<int>(building_[node].size()) > settings_.maxShapesPerLeaf &&
+            static_cast<int>(building_[node].level) < settings_.maxDepth) {
             split(node, bounds);
         }
         return;
@@ -108,30 +169,32 @@ void Octree::place(std::uint32_t node, const CellBounds& bounds, ShapeId id) {
     int reached[8];
     int count = 0;
     for (int child = 0; child < 8; ++child) {
-        if (reaches(s, childBounds(bounds, child))) reached[count++] = child;
+        if (reaches(s, extent, childBounds(bounds, child))) reached[count++] = child;
     }
     if (count == 8) {
-        store(nodes_[node], id);
+        store(building_[node], id);
         return;
     }
-    const std::uint32_t first = nodes_[node].firstChild;
-    for (int k = 0; k < count; ++k) place(first + static_cast<std::uint32_t>(reached[k]), childBounds(bounds, reached[k]), id);
+    const std::uint32_t first = building_[node].firstChild;
+    for (int k = 0; k < count; ++k) {
+        place(first + static_cast<std::uint32_t>(reached[k]), childBounds(bounds, reached[k]), id, extent);
+    }
 }
 
 // Turns a full leaf into an inner cell and hands its shapes down (those reaching all 8 children stay).
 void Octree::split(std::uint32_t node, const CellBounds& bounds) {
-    const auto first = static_cast<std::uint32_t>(nodes_.size());
-    const std::uint32_t level = nodes_[node].level + 1;
-    nodes_.resize(nodes_.size() + 8);
-    for (std::uint32_t k = 0; k < 8; ++k) nodes_[first + k].level = level;
-    Node& parent = nodes_[node];
+    const auto first = static_cast<std::uint32_t>(building_.size());
+    const std::uint32_t level = building_[node].level + 1;
+    building_.resize(building_.size() + 8);
+    for (std::uint32_t k = 0; k < 8; ++k) building_[first + k].level = level;
+    Node& parent = building_[node];
     std::vector<ShapeId> ids = parent.sphereIds;
     ids.insert(ids.end(), parent.otherIds.begin(), parent.otherIds.end());
     parent = Node{};
     parent.firstChild = first;
     parent.level = level - 1;
     std::sort(ids.begin(), ids.end());  // children then list shapes in id order
-    for (ShapeId id : ids) place(node, bounds, id);
+    for (ShapeId id : ids) place(node, bounds, id, boundsOf(*shapes_[id]));
 }
 
 ShapeId Octree::insert(std::unique_ptr<Shape> shape) {
@@ -145,17 +208,15 @@ ShapeId Octree::insert(std::unique_ptr<Shape> shape) {
         return id;
     }
     ++liveShapes_;
-    place(0, rootBounds_, id);
+    thaw();
+    place(0, rootBounds_, id, extent);
+    freeze();
     return id;
 }
 
 void Octree::unstore(std::uint32_t node, const CellBounds& bounds, ShapeId id) {
-    Node& n = nodes_[node];
-    const auto sphere = std::find(n.sphereIds.begin(), n.sphereIds.end(), id);
-    if (sphere != n.sphereIds.end()) {
-        n.spheres.erase(n.spheres.begin() + (sphere - n.sphereIds.begin()));
-        n.sphereIds.erase(sphere);
-    }
+    Node& n = building_[node];
+    n.sphereIds.erase(std::remove(n.sphereIds.begin(), n.sphereIds.end(), id), n.sphereIds.end());
     n.otherIds.erase(std::remove(n.otherIds.begin(), n.otherIds.end(), id), n.otherIds.end());
     if (n.isLeaf()) return;
     const CellBounds extent = inflated(boundsOf(*shapes_[id]), margin_);
@@ -167,34 +228,35 @@ void Octree::unstore(std::uint32_t node, const CellBounds& bounds, ShapeId id) {
 
 std::unique_ptr<Shape> Octree::remove(ShapeId id) {
     if (id >= shapes_.size() || !shapes_[id]) throw std::out_of_range("Octree::remove: no shape " + std::to_string(id));
+    thaw();
     unstore(0, rootBounds_, id);
+    freeze();
     --liveShapes_;
     return std::move(shapes_[id]);
 }
 
 std::vector<LevelStatistics> Octree::statistics() const {
     std::vector<LevelStatistics> levels;
-    forEachNode([&](std::uint32_t, const Node& n, const CellBounds&) {
-        if (levels.size() <= n.level) levels.resize(n.level + 1);
-        LevelStatistics& s = levels[n.level];
-        s.level = static_cast<int>(n.level);
+    forEachNode([&](std::uint32_t, const Cell& cell, const CellBounds&, int level) {
+        const auto depth = static_cast<std::size_t>(level);
+        if (levels.size() <= depth) levels.resize(depth + 1);
+        LevelStatistics& s = levels[depth];
+        s.level = level;
         ++s.cells;
-        s.shapesStored += n.size();
-        s.bytes += sizeof(Node) + n.spheres.capacity() * sizeof(SphereGeometry) +
-                   (n.sphereIds.capacity() + n.otherIds.capacity()) * sizeof(ShapeId);
-        if (!n.isLeaf()) return true;
+        s.shapesStored += cell.size();
+        s.bytes += sizeof(Cell) + cell.sphereCount * sizeof(PackedSphere) + cell.otherCount * sizeof(ShapeId);
+        if (!cell.isLeaf()) return true;
         ++s.leaves;
-        if (s.shapesPerLeaf.size() <= n.size()) s.shapesPerLeaf.resize(n.size() + 1);
-        ++s.shapesPerLeaf[n.size()];
+        if (s.shapesPerLeaf.size() <= cell.size()) s.shapesPerLeaf.resize(cell.size() + 1);
+        ++s.shapesPerLeaf[cell.size()];
         return true;
     });
     return levels;
 }
 
 std::size_t Octree::bytesUsed() const {
-    std::size_t bytes = sizeof(*this) + (nodes_.capacity() - nodes_.size()) * sizeof(Node);
-    for (const LevelStatistics& level : statistics()) bytes += level.bytes;
-    return bytes + shapes_.capacity() * sizeof(std::unique_ptr<Shape>);
+    return sizeof(*this) + cells_.capacity() * sizeof(Cell) + spheres_.capacity() * sizeof(PackedSphere) +
+           others_.capacity() * sizeof(ShapeId) + shapes_.capacity() * sizeof(std::unique_ptr<Shape>);
 }
 
 }  // namespace dropscope

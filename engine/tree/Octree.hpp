@@ -19,7 +19,9 @@ class BoundingBox;
 // can never hide a shape from a ray that grazes a cell boundary; a shape that overlaps all eight
 // children of a cell stays in that cell instead (a glass cell around a whole cloud is then tested
 // once per ray, not in every leaf). Spheres are also packed by value next to their cell, so the
-// hot loop runs SphereGeometry on contiguous memory, the same code as Sphere itself.
+// hot loop runs SphereGeometry on contiguous memory, the same code as Sphere itself. Shapes are
+// placed into growable per-cell lists, which are then frozen into flat arrays for the queries; an
+// insert or remove thaws, edits and refreezes (O(N), a few ms per 1e5 shapes).
 class Octree {
 public:
     explicit Octree(std::vector<std::unique_ptr<Shape>> shapes, OctreeSettings settings = {});
@@ -58,26 +60,46 @@ public:
 private:
     static constexpr std::uint32_t kNoChild = 0;  // node 0 is the root, never anyone's child
 
+    // A cell while shapes are being placed (construction, insert, remove).
     struct Node {
         std::uint32_t firstChild = kNoChild;  // the 8 children are consecutive
         std::uint32_t level = 0;
-        std::vector<SphereGeometry> spheres;  // packed copies of the sphere ids below
         std::vector<ShapeId> sphereIds;
-        std::vector<ShapeId> otherIds;        // boxes, ellipsoids, anything else
+        std::vector<ShapeId> otherIds;  // boxes, ellipsoids, anything else
         bool isLeaf() const { return firstChild == kNoChild; }
         std::size_t size() const { return sphereIds.size() + otherIds.size(); }
+    };
+    // The same cell, frozen for queries: ranges into two flat arrays, so a visit touches 20 bytes of
+    // cell and one contiguous run of packed spheres.
+    struct Cell {
+        std::uint32_t firstChild;
+        std::uint32_t firstSphere;
+        std::uint32_t sphereCount;
+        std::uint32_t firstOther;
+        std::uint32_t otherCount;
+        bool isLeaf() const { return firstChild == kNoChild; }
+        std::size_t size() const { return std::size_t{sphereCount} + otherCount; }
+    };
+    struct PackedSphere {
+        SphereGeometry geometry;
+        ShapeId id;
     };
 
     struct Traversal;
 
     void rebuild(const CellBounds& bounds);
-    void place(std::uint32_t node, const CellBounds& bounds, ShapeId id);
-    void store(Node& node, ShapeId id);
+    void freeze();
+    void thaw();
+    void place(std::uint32_t node, const CellBounds& bounds, ShapeId id, const CellBounds& extent);
+    void store(Node& node, ShapeId id) const;
     void split(std::uint32_t node, const CellBounds& bounds);
-    bool reaches(const Shape& shape, const CellBounds& cell) const;
+    bool reaches(const Shape& shape, const CellBounds& extent, const CellBounds& cell) const;
     void unstore(std::uint32_t node, const CellBounds& bounds, ShapeId id);
     CellBounds childBounds(const CellBounds& bounds, int child) const;
-    // Depth first from the root; `visit(index, node, bounds)` returns whether to descend.
+    // Calls f(id) for every shape a frozen cell holds, spheres first.
+    template <class F>
+    void forEachShapeIn(const Cell& cell, F&& f) const;
+    // Depth first from the root; `visit(index, cell, bounds, level)` returns whether to descend.
     template <class Visit>
     void forEachNode(Visit&& visit) const;
 
@@ -86,23 +108,35 @@ private:
     OctreeSettings settings_;
     CellBounds rootBounds_;
     double margin_ = 0.0;
-    std::vector<Node> nodes_;
+    std::vector<Node> building_;  // empty between edits
+    std::vector<Cell> cells_;
+    std::vector<PackedSphere> spheres_;
+    std::vector<ShapeId> others_;
 };
+
+template <class F>
+void Octree::forEachShapeIn(const Cell& cell, F&& f) const {
+    for (std::uint32_t k = 0; k < cell.sphereCount; ++k) f(spheres_[cell.firstSphere + k].id);
+    for (std::uint32_t k = 0; k < cell.otherCount; ++k) f(others_[cell.firstOther + k]);
+}
 
 template <class Visit>
 void Octree::forEachNode(Visit&& visit) const {
     struct Pending {
         std::uint32_t node;
         CellBounds bounds;
+        int level;
     };
-    std::vector<Pending> stack{{0, rootBounds_}};
+    std::vector<Pending> stack{{0, rootBounds_, 0}};
     while (!stack.empty()) {
         const Pending top = stack.back();
         stack.pop_back();
-        const Node& n = nodes_[top.node];
-        if (!visit(top.node, n, top.bounds) || n.isLeaf()) continue;
-        for (int child = 7; child >= 0; --child)
-            stack.push_back({n.firstChild + static_cast<std::uint32_t>(child), childBounds(top.bounds, child)});
+        const Cell& cell = cells_[top.node];
+        if (!visit(top.node, cell, top.bounds, top.level) || cell.isLeaf()) continue;
+        for (int child = 7; child >= 0; --child) {
+            stack.push_back({cell.firstChild + static_cast<std::uint32_t>(child), childBounds(top.bounds, child),
+                             top.level + 1});
+        }
     }
 }
 

@@ -20,14 +20,13 @@ std::optional<ShapeId> Octree::locate(const Point& p) const {
     std::uint32_t index = 0;
     CellBounds bounds = rootBounds_;
     while (true) {
-        const Node& node = nodes_[index];
-        for (ShapeId id : node.sphereIds) consider(id);
-        for (ShapeId id : node.otherIds) consider(id);
-        if (node.isLeaf()) return innermost;
+        const Cell& cell = cells_[index];
+        forEachShapeIn(cell, consider);
+        if (cell.isLeaf()) return innermost;
         const Point mid = bounds.center();
         int child = 0;
         for (int axis = 0; axis < 3; ++axis) child |= (p[axis] >= mid[axis] ? 1 : 0) << axis;
-        index = node.firstChild + static_cast<std::uint32_t>(child);
+        index = cell.firstChild + static_cast<std::uint32_t>(child);
         bounds = childBounds(bounds, child);
     }
 }
@@ -36,10 +35,9 @@ std::vector<ShapeId> Octree::overlapping(const Shape& shape) const {
     const CellBounds extent(Point(shape.xMin(), shape.yMin(), shape.zMin()) .array() - margin_,
                             Point(shape.xMax(), shape.yMax(), shape.zMax()).array() + margin_);
     std::vector<ShapeId> candidates;
-    forEachNode([&](std::uint32_t, const Node& node, const CellBounds& bounds) {
+    forEachNode([&](std::uint32_t, const Cell& cell, const CellBounds& bounds, int) {
         if (!bounds.intersects(extent)) return false;
-        candidates.insert(candidates.end(), node.sphereIds.begin(), node.sphereIds.end());
-        candidates.insert(candidates.end(), node.otherIds.begin(), node.otherIds.end());
+        forEachShapeIn(cell, [&](ShapeId id) { candidates.push_back(id); });
         return true;
     });
     std::sort(candidates.begin(), candidates.end());

@@ -28,13 +28,12 @@ std::unique_ptr<BoundingBox> Octree::referenceTree() const {
     struct Build {
         const Octree& tree;
         std::unique_ptr<BoundingBox> operator()(std::uint32_t index, const CellBounds& bounds) const {
-            const Node& node = tree.nodes_[index];
+            const Cell& cell = tree.cells_[index];
             std::vector<Item> items;
-            for (ShapeId id : node.sphereIds) items.push_back({tree.shapes_[id]->clone(), id});
-            for (ShapeId id : node.otherIds) items.push_back({tree.shapes_[id]->clone(), id});
-            if (!node.isLeaf()) {
+            tree.forEachShapeIn(cell, [&](ShapeId id) { items.push_back({tree.shapes_[id]->clone(), id}); });
+            if (!cell.isLeaf()) {
                 for (int child = 0; child < 8; ++child) {
-                    items.push_back({(*this)(node.firstChild + static_cast<std::uint32_t>(child),
+                    items.push_back({(*this)(cell.firstChild + static_cast<std::uint32_t>(child),
                                              tree.childBounds(bounds, child)),
                                      BoundingBox::kNotTerminal});
                 }

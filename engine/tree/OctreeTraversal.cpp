@@ -24,25 +24,28 @@ struct Octree::Traversal {
         return d[axis] == 0.0 ? kInfinity : (value - p[axis]) * inverse[axis];
     }
 
-    void testShapes(const Node& node) {
-        for (std::size_t k = 0; k < node.spheres.size(); ++k) {
-            hit.offer(node.sphereIds[k], node.spheres[k].distanceToSurface(p, d));
+    void testShapes(const Cell& cell) {
+        const PackedSphere* sphere = tree.spheres_.data() + cell.firstSphere;
+        for (std::uint32_t k = 0; k < cell.sphereCount; ++k, ++sphere) {
+            hit.offer(sphere->id, sphere->geometry.distanceToSurface(p, d));
         }
-        for (ShapeId id : node.otherIds) hit.offer(id, tree.shapes_[id]->distanceToSurface(p, d));
+        for (std::uint32_t k = 0; k < cell.otherCount; ++k) {
+            const ShapeId id = tree.others_[cell.firstOther + k];
+            hit.offer(id, tree.shapes_[id]->distanceToSurface(p, d));
+        }
         if (record) {
-            record->shapesTested.insert(record->shapesTested.end(), node.sphereIds.begin(), node.sphereIds.end());
-            record->shapesTested.insert(record->shapesTested.end(), node.otherIds.begin(), node.otherIds.end());
-            record->distanceEvaluations += node.size();
+            tree.forEachShapeIn(cell, [&](ShapeId id) { record->shapesTested.push_back(id); });
+            record->distanceEvaluations += cell.size();
         }
     }
 
     // Visits the cell over [tEnter, tExit], then its children in the order the ray meets them,
     // stopping as soon as the best hit lies before the next child's entry.
-    void visit(std::uint32_t index, const CellBounds& bounds, double tEnter, double tExit) {
-        const Node& node = tree.nodes_[index];
-        if (record) record->cells.push_back({index, static_cast<int>(node.level), bounds, tEnter, tExit, node.isLeaf()});
-        testShapes(node);
-        if (node.isLeaf()) return;
+    void visit(std::uint32_t index, const CellBounds& bounds, int level, double tEnter, double tExit) {
+        const Cell& cell = tree.cells_[index];
+        if (record) record->cells.push_back({index, level, bounds, tEnter, tExit, cell.isLeaf()});
+        testShapes(cell);
+        if (cell.isLeaf()) return;
 
         const Point mid = bounds.center();
         double planeCrossing[3];
@@ -54,20 +57,36 @@ struct Octree::Traversal {
                                               : (planeCrossing[axis] <= tEnter) == (d[axis] > 0.0);
             child |= (upper ? 1 : 0) << axis;
         }
-        double t = tEnter;
-        while (true) {
+        // The (at most 4) children the ray crosses, in order; each mid-plane crossing flips one bit.
+        int order[4];
+        double from[4];
+        double to[4];
+        int count = 0;
+        for (double t = tEnter;;) {
             double next = tExit;
             for (int axis = 0; axis < 3; ++axis) {
                 if (planeCrossing[axis] > t) next = std::min(next, planeCrossing[axis]);
             }
-            if (hit.distance < t) return;
-            const std::uint32_t first = node.firstChild;
-            visit(first + static_cast<std::uint32_t>(child), tree.childBounds(bounds, child), t, next);
-            if (next >= tExit) return;
+            order[count] = child;
+            from[count] = t;
+            to[count] = next;
+            ++count;
+            if (next >= tExit || count == 4) break;
             for (int axis = 0; axis < 3; ++axis) {
                 if (planeCrossing[axis] == next) child ^= 1 << axis;
             }
             t = next;
+        }
+        // Memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask for the
+        // children's spheres before testing the first of them.
+        for (int k = 0; k < count; ++k) {
+            const Cell& next = tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])];
+            __builtin_prefetch(tree.spheres_.data() + next.firstSphere);
+        }
+        for (int k = 0; k < count; ++k) {
+            if (hit.distance < from[k]) return;  // nothing further on can be nearer
+            visit(cell.firstChild + static_cast<std::uint32_t>(order[k]), tree.childBounds(bounds, order[k]),
+                  level + 1, from[k], to[k]);
         }
     }
 
@@ -90,7 +109,7 @@ struct Octree::Traversal {
             tExit = std::min(tExit, std::max(t0, t1));
         }
         if (tEnter > tExit) return;
-        visit(0, tree.rootBounds_, tEnter, tExit);
+        visit(0, tree.rootBounds_, 0, tEnter, tExit);
         if (record) record->hit = hit;
     }
 };
