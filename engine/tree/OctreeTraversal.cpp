@@ -81,7 +81,10 @@ struct Octree::Traversal {
         // children's spheres before testing the first of them.
         for (int k = 0; k < count; ++k) {
             const Cell& next = tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])];
-            __builtin_prefetch(tree.spheres_.data() + next.firstSphere);
+            const char* records = reinterpret_cast<const char*>(tree.spheres_.data() + next.firstSphere);
+            const std::size_t bytes = std::min<std::size_t>(next.sphereCount, 8) * sizeof(PackedSphere);
+            for (std::size_t offset = 0; offset < bytes; offset += 64) __builtin_prefetch(records + offset);
+            if (!next.isLeaf()) __builtin_prefetch(tree.cells_.data() + next.firstChild);
         }
         for (int k = 0; k < count; ++k) {
             if (hit.distance < from[k]) return;  // nothing further on can be nearer
