@@ -12,7 +12,9 @@ using Json = nlohmann::ordered_json;
 
 Json vectorJson(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
-Json boundsJson(const Bounds& bounds) { return {{"min", vectorJson(bounds.min)}, {"max", vectorJson(bounds.max)}}; }
+Json boundsJson(const Eigen::AlignedBox3d& bounds) {
+    return {{"min", vectorJson(bounds.min())}, {"max", vectorJson(bounds.max())}};
+}
 
 Json optionalJson(const std::optional<double>& value) { return value ? Json(*value) : Json(nullptr); }
 
@@ -40,7 +42,7 @@ Json shapesJson(const Scene& scene) {
                           {"name", name.empty() ? Json(nullptr) : Json(name)},
                           {"medium", scene.mediumOf(shape).name},
                           {"medium_id", shape.mediumId()},
-                          {"bounds", boundsJson(boundsOf(shape))},
+                          {"bounds", boundsJson(shape.bounds())},
                           {"volume", shape.volume()},
                           {"surface_area", shape.surfaceArea()}});
     }
@@ -81,7 +83,7 @@ Json octreeJson(const OctreeSummary& octree) {
     }
     return {{"max_depth", octree.settings.maxDepth},
             {"max_shapes_per_leaf", octree.settings.maxShapesPerLeaf},
-            {"root", {{"min", vectorJson(octree.root.min())}, {"max", vectorJson(octree.root.max())}}},
+            {"root", boundsJson(octree.root)},
             {"margin", octree.margin},
             {"bytes", octree.bytes},
             {"levels", levels}};

@@ -41,11 +41,11 @@ void writeShapes(const Scene& scene, std::ostream& out) {
                      {"area [" + unit + "^2]", Align::Right}});
     for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
         const Shape& shape = *scene.shapes[id];
-        const Bounds bounds = boundsOf(shape);
+        const Eigen::AlignedBox3d bounds = shape.bounds();
         table.addRow({std::to_string(id), std::string(shape.typeName()),
                       scene.shapeNames[id].empty() ? "-" : scene.shapeNames[id], scene.mediumOf(shape).name,
-                      formatRange(bounds.min.x(), bounds.max.x()), formatRange(bounds.min.y(), bounds.max.y()),
-                      formatRange(bounds.min.z(), bounds.max.z()), formatNumber(shape.volume()),
+                      formatRange(bounds.min().x(), bounds.max().x()), formatRange(bounds.min().y(), bounds.max().y()),
+                      formatRange(bounds.min().z(), bounds.max().z()), formatNumber(shape.volume()),
                       formatNumber(shape.surfaceArea())});
     }
     out << "\nshapes\n";
@@ -65,9 +65,9 @@ void writeTotals(const Scene& scene, const SceneSummary& summary, std::ostream& 
         << "  surface area  " << formatNumber(summary.totalSurfaceArea) << ' ' << unit << "^2\n"
         << "  bounds        ";
     if (const auto& bounds = summary.bounds) {
-        out << "x " << formatRange(bounds->min.x(), bounds->max.x()) << ", y "
-            << formatRange(bounds->min.y(), bounds->max.y()) << ", z "
-            << formatRange(bounds->min.z(), bounds->max.z()) << ' ' << unit << '\n';
+        out << "x " << formatRange(bounds->min().x(), bounds->max().x()) << ", y "
+            << formatRange(bounds->min().y(), bounds->max().y()) << ", z "
+            << formatRange(bounds->min().z(), bounds->max().z()) << ' ' << unit << '\n';
     } else {
         out << "-\n";
     }

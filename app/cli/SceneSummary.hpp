@@ -13,14 +13,6 @@
 
 namespace dropscope {
 
-// Axis-aligned bounds: the shape's xMin()..zMax().
-struct Bounds {
-    Point min;
-    Point max;
-};
-
-Bounds boundsOf(const Shape& shape);
-
 // The octree built over the scene's shapes with the scene's settings.
 struct OctreeSummary {
     OctreeSettings settings;
@@ -36,7 +28,7 @@ struct SceneSummary {
     std::map<std::string, std::size_t> shapesByType;  // every known type, zero counts included
     double totalVolume = 0.0;
     double totalSurfaceArea = 0.0;
-    std::optional<Bounds> bounds;  // none for a scene without shapes
+    std::optional<Eigen::AlignedBox3d> bounds;  // none for a scene without shapes
     OctreeSummary octree;
 };
 

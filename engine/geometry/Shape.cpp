@@ -13,6 +13,10 @@ bool Shape::encloses(const Shape&) const {
                            std::string(typeName()));
 }
 
+Eigen::AlignedBox3d Shape::bounds() const {
+    return Eigen::AlignedBox3d(Point(xMin(), yMin(), zMin()), Point(xMax(), yMax(), zMax()));
+}
+
 bool Shape::overlaps(const Shape& other) const { return shapesOverlap(*this, other); }
 
 std::ostream& operator<<(std::ostream& os, const Shape& shape) {

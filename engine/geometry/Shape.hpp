@@ -33,6 +33,8 @@ public:
     virtual double yMax() const = 0;
     virtual double zMin() const = 0;
     virtual double zMax() const = 0;
+    // The axis-aligned box between those extremes.
+    Eigen::AlignedBox3d bounds() const;
 
     virtual double surfaceArea() const = 0;
     virtual double volume() const = 0;

@@ -32,10 +32,6 @@ double sphereVolume(double radius) { return 4.0 / 3.0 * std::numbers::pi * radiu
 
 using Bounds = Eigen::AlignedBox3d;
 
-Bounds boundsOf(const Shape& s) {
-    return Bounds(Point(s.xMin(), s.yMin(), s.zMin()), Point(s.xMax(), s.yMax(), s.zMax()));
-}
-
 Bounds boundsOf(const Point& center, double radius) { return Bounds(center.array() - radius, center.array() + radius); }
 
 // The grid cell size h that minimises the expected work of one attempt, for a cloud of `radii`
@@ -86,7 +82,7 @@ public:
         droplets_.reserve(radii.size());
         for (std::size_t id = 0; id < obstacles.shapes.size(); ++id) {
             const Shape& shape = *obstacles.shapes[id];
-            const Bounds bounds = boundsOf(shape);
+            const Bounds bounds = shape.bounds();
             const std::uint64_t entries = grid_.entriesFor(bounds);
             if (entries == 0) continue;  // outside the region: no droplet can reach it
             const auto item = static_cast<std::uint32_t>(id);

@@ -15,10 +15,6 @@ namespace {
 // every shape's surface band (1e-9 of its size), and costs only a few extra shapes per cell.
 constexpr double kMarginRelative = 1e-8;
 
-CellBounds boundsOf(const Shape& s) {
-    return CellBounds(Point(s.xMin(), s.yMin(), s.zMin()), Point(s.xMax(), s.yMax(), s.zMax()));
-}
-
 CellBounds inflated(const CellBounds& b, double by) {
     return CellBounds(b.min().array() - by, b.max().array() + by);
 }
@@ -27,7 +23,7 @@ CellBounds inflated(const CellBounds& b, double by) {
 CellBounds cubeAround(const std::vector<std::unique_ptr<Shape>>& shapes, const CellBounds& mustContain) {
     CellBounds all = mustContain;
     for (const auto& s : shapes) {
-        if (s) all.extend(boundsOf(*s));
+        if (s) all.extend(s->bounds());
     }
     if (all.isEmpty()) all = CellBounds(Point::Constant(-1.0), Point::Constant(1.0));
     const double half = 0.5 * all.sizes().maxCoeff() * (1.0 + 1e-6) + 1e-300;
@@ -81,14 +77,14 @@ void Octree::rebuild(const CellBounds& bounds) {
     const Eigen::Array3d scale = 2097151.0 / rootBounds_.sizes().array();  // 21 bits per axis
     for (std::size_t id = 0; id < shapes_.size(); ++id) {
         if (!shapes_[id]) continue;
-        const Eigen::Array3d cell = ((boundsOf(*shapes_[id]).center() - rootBounds_.min()).array() * scale)
+        const Eigen::Array3d cell = ((shapes_[id]->bounds().center() - rootBounds_.min()).array() * scale)
                                         .max(0.0).min(2097151.0);
         order.emplace_back(mortonCode(static_cast<std::uint32_t>(cell.x()), static_cast<std::uint32_t>(cell.y()),
                                       static_cast<std::uint32_t>(cell.z())),
                            static_cast<ShapeId>(id));
     }
     std::sort(order.begin(), order.end());
-    for (const auto& [code, id] : order) place(0, rootBounds_, id, boundsOf(*shapes_[id]));
+    for (const auto& [code, id] : order) place(0, rootBounds_, id, shapes_[id]->bounds());
     liveShapes_ = order.size();
     freeze();
 }
@@ -194,13 +190,13 @@ void Octree::split(std::uint32_t node, const CellBounds& bounds) {
     parent.firstChild = first;
     parent.level = level - 1;
     std::sort(ids.begin(), ids.end());  // children then list shapes in id order
-    for (ShapeId id : ids) place(node, bounds, id, boundsOf(*shapes_[id]));
+    for (ShapeId id : ids) place(node, bounds, id, shapes_[id]->bounds());
 }
 
 ShapeId Octree::insert(std::unique_ptr<Shape> shape) {
     if (!shape) throw std::invalid_argument("Octree::insert: null shape");
     const auto id = static_cast<ShapeId>(shapes_.size());
-    const CellBounds extent = boundsOf(*shape);
+    const CellBounds extent = shape->bounds();
     const double band = shape->surfaceBand();
     shapes_.push_back(std::move(shape));
     if (!rootBounds_.contains(extent) || 4.0 * band > margin_) {
@@ -219,7 +215,7 @@ void Octree::unstore(std::uint32_t node, const CellBounds& bounds, ShapeId id) {
     n.sphereIds.erase(std::remove(n.sphereIds.begin(), n.sphereIds.end(), id), n.sphereIds.end());
     n.otherIds.erase(std::remove(n.otherIds.begin(), n.otherIds.end(), id), n.otherIds.end());
     if (n.isLeaf()) return;
-    const CellBounds extent = inflated(boundsOf(*shapes_[id]), margin_);
+    const CellBounds extent = inflated(shapes_[id]->bounds(), margin_);
     for (int child = 0; child < 8; ++child) {
         const CellBounds cb = childBounds(bounds, child);
         if (cb.intersects(extent)) unstore(n.firstChild + static_cast<std::uint32_t>(child), cb, id);

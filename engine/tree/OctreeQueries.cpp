@@ -32,8 +32,8 @@ std::optional<ShapeId> Octree::locate(const Point& p) const {
 }
 
 std::vector<ShapeId> Octree::overlapping(const Shape& shape) const {
-    const CellBounds extent(Point(shape.xMin(), shape.yMin(), shape.zMin()) .array() - margin_,
-                            Point(shape.xMax(), shape.yMax(), shape.zMax()).array() + margin_);
+    const CellBounds shapeBounds = shape.bounds();
+    const CellBounds extent(shapeBounds.min().array() - margin_, shapeBounds.max().array() + margin_);
     std::vector<ShapeId> candidates;
     forEachNode([&](std::uint32_t, const Cell& cell, const CellBounds& bounds, int) {
         if (!bounds.intersects(extent)) return false;

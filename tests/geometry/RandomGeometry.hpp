@@ -58,12 +58,8 @@ inline std::unique_ptr<Shape> randomShape(Rng& rng, int i, const Point& around, 
     }
 }
 
-inline Point boundsCenter(const Shape& s) {
-    return 0.5 * Point(s.xMin() + s.xMax(), s.yMin() + s.yMax(), s.zMin() + s.zMax());
-}
+inline Point boundsCenter(const Shape& s) { return s.bounds().center(); }
 
-inline double boundsDiagonal(const Shape& s) {
-    return Point(s.xMax() - s.xMin(), s.yMax() - s.yMin(), s.zMax() - s.zMin()).norm();
-}
+inline double boundsDiagonal(const Shape& s) { return s.bounds().diagonal().norm(); }
 
 }  // namespace dropscope::testing
