@@ -22,8 +22,6 @@ public:
     // Semi-axis lengths, longest first, and the unit axis directions as matching columns.
     const Eigen::Vector3d& semiAxes() const { return semiAxes_; }
     const Eigen::Matrix3d& axes() const { return axes_; }
-    // T with |T (r - r0)| = 1 on the surface: maps the ellipsoid onto the unit sphere.
-    const Eigen::Matrix3d& toUnitSphere() const { return toUnitSphere_; }
 
     ShapeKind kind() const override { return ShapeKind::Ellipsoid; }
     std::string_view typeName() const override { return "ellipsoid"; }
@@ -57,7 +55,7 @@ private:
     Eigen::Matrix3d mInverse_;
     Eigen::Vector3d semiAxes_;
     Eigen::Matrix3d axes_;
-    Eigen::Matrix3d toUnitSphere_;
+    Eigen::Matrix3d toUnitSphere_;  // T with |T (r - r0)| = 1 on the surface (M = T^T T)
     Eigen::Vector3d halfExtent_;
     double surfaceArea_;
     double bandNormalised_;

@@ -189,7 +189,6 @@ void Octree::split(std::uint32_t node, const CellBounds& bounds) {
     parent = Node{};
     parent.firstChild = first;
     parent.level = level - 1;
-    std::sort(ids.begin(), ids.end());  // children then list shapes in id order
     for (ShapeId id : ids) place(node, bounds, id, shapes_[id]->bounds());
 }
 
