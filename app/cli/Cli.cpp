@@ -2,6 +2,8 @@
 
 #include "cli/InspectCommand.hpp"
 #include "cli/QueryCommand.hpp"
+#include "cli/RayCsv.hpp"
+#include "scene/SceneLoader.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -60,6 +62,12 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         // No subcommand: a later version opens the GUI here.
         out << app.help();
         err << "dropscope: no command given (see the commands above)\n";
+        return kExitBadInput;
+    } catch (const SceneError& error) {  // bad input found by any command: its one line
+        err << error.what() << '\n';
+        return kExitBadInput;
+    } catch (const RayCsvError& error) {
+        err << error.what() << '\n';
         return kExitBadInput;
     } catch (const std::exception& error) {
         err << "dropscope: internal error: " << error.what() << '\n';

@@ -17,14 +17,8 @@ CLI::App* addInspectCommand(CLI::App& app, InspectOptions& options) {
     return command;
 }
 
-int runInspect(const InspectOptions& options, std::ostream& out, std::ostream& err) {
-    Scene scene;
-    try {
-        scene = loadScene(options.scenePath);
-    } catch (const SceneError& error) {
-        err << error.what() << '\n';
-        return kExitBadInput;
-    }
+int runInspect(const InspectOptions& options, std::ostream& out, std::ostream&) {
+    const Scene scene = loadScene(options.scenePath);
     const SceneSummary summary = summarise(scene);
     if (options.json) {
         writeInspectJson(scene, summary, out);

@@ -18,8 +18,8 @@ struct InspectOptions {
 CLI::App* addInspectCommand(CLI::App& app, InspectOptions& options);
 
 // Loads the scene and prints its shapes, media, sources and totals: an aligned table, or one JSON
-// document with --json (keys in docs/scene-format.md). Returns the exit status; a bad scene prints
-// its one-line SceneError to `err`.
+// document with --json (keys in docs/scene-format.md). Returns the exit status; a bad scene throws
+// SceneError, which runCli reports.
 int runInspect(const InspectOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace dropscope

@@ -47,18 +47,8 @@ CLI::App* addQueryCommand(CLI::App& app, QueryOptions& options) {
 }
 
 int runQuery(const QueryOptions& options, std::ostream&, std::ostream& err) {
-    Scene scene;
-    std::vector<CsvRay> rays;
-    try {
-        scene = loadScene(options.scenePath);
-        rays = readRayCsv(options.raysPath);
-    } catch (const SceneError& error) {
-        err << error.what() << '\n';
-        return kExitBadInput;
-    } catch (const RayCsvError& error) {
-        err << error.what() << '\n';
-        return kExitBadInput;
-    }
+    Scene scene = loadScene(options.scenePath);
+    const std::vector<CsvRay> rays = readRayCsv(options.raysPath);
 
     const std::size_t shapeCount = scene.shapes.size();
     const Clock::time_point buildStart = Clock::now();
