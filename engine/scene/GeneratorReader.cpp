@@ -41,16 +41,6 @@ std::pair<double, double> readTruncation(const JsonReader& json) {
     return {min, max};
 }
 
-// Runs a RadiusDistribution factory; its std::invalid_argument becomes a SceneError at `json`.
-template <class Make>
-RadiusDistribution construct(const JsonReader& json, Make make) {
-    try {
-        return make();
-    } catch (const std::invalid_argument& error) {
-        json.fail(error.what());
-    }
-}
-
 RadiusDistribution readRadiusDistribution(const JsonReader& json) {
     const JsonReader kindJson = json.member("distribution");
     const std::string kind = kindJson.string();
@@ -71,14 +61,14 @@ RadiusDistribution readRadiusDistribution(const JsonReader& json) {
         const double median = json.member("median").positive();
         const double sigma = json.member("sigma").nonNegative();
         const auto [min, max] = readTruncation(json);
-        return construct(json, [&] { return RadiusDistribution::lognormal(median, sigma, min, max); });
+        return json.construct([&] { return RadiusDistribution::lognormal(median, sigma, min, max); });
     }
     if (kind == "rosin_rammler") {
         json.expectKeys({"distribution", "scale", "shape", "min", "max"});
         const double scale = json.member("scale").positive();
         const double shape = json.member("shape").positive();
         const auto [min, max] = readTruncation(json);
-        return construct(json, [&] { return RadiusDistribution::rosinRammler(scale, shape, min, max); });
+        return json.construct([&] { return RadiusDistribution::rosinRammler(scale, shape, min, max); });
     }
     kindJson.fail("unknown distribution " + jsonpath::quoted(kind) +
                   " (known: fixed, uniform, lognormal, rosin_rammler)");

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -23,6 +24,16 @@ public:
 
     const std::string& path() const { return path_; }
     [[noreturn]] void fail(const std::string& message) const;
+    // Runs a constructor or factory of the value read here; a std::invalid_argument it throws
+    // becomes a SceneError at this path.
+    template <class Make>
+    auto construct(Make make) const -> decltype(make()) {
+        try {
+            return make();
+        } catch (const std::invalid_argument& error) {
+            fail(error.what());
+        }
+    }
 
     // Objects. expectKeys fails on the first key not in `allowed`, suggesting the nearest one.
     void expectObject() const;

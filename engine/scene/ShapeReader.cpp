@@ -14,27 +14,17 @@ namespace dropscope {
 
 namespace {
 
-// Runs a geometry constructor; its std::invalid_argument becomes a SceneError at `where`.
-template <class Make>
-std::unique_ptr<Shape> construct(const JsonReader& where, Make make) {
-    try {
-        return make();
-    } catch (const std::invalid_argument& error) {
-        where.fail(error.what());
-    }
-}
-
 std::unique_ptr<Shape> readSphere(const JsonReader& json) {
     json.expectKeys({"type", "center", "radius", "medium", "name"});
     const Point center = json.member("center").vector3();
     const double radius = json.member("radius").positive();
-    return construct(json, [&] { return std::make_unique<Sphere>(center, radius); });
+    return json.construct([&] { return std::make_unique<Sphere>(center, radius); });
 }
 
 std::unique_ptr<Shape> readBox(const JsonReader& json) {
     json.expectKeys({"type", "min", "max", "medium", "name"});
     const Eigen::AlignedBox3d corners = readCorners(json);
-    return construct(json, [&] { return std::make_unique<Box>(corners.min(), corners.max()); });
+    return json.construct([&] { return std::make_unique<Box>(corners.min(), corners.max()); });
 }
 
 // {"axis": [x, y, z], "angle_deg": a}: a right-handed rotation of a degrees about axis.
@@ -55,12 +45,12 @@ std::unique_ptr<Shape> readEllipsoid(const JsonReader& json) {
     if (matrixJson) {
         if (rotationJson) rotationJson->fail("applies only with \"semi_axes\" (a \"matrix\" is already rotated)");
         const Eigen::Matrix3d m = matrixJson->matrix3();
-        return construct(*matrixJson, [&] { return std::make_unique<Ellipsoid>(Ellipsoid::fromMatrix(center, m)); });
+        return matrixJson->construct([&] { return std::make_unique<Ellipsoid>(Ellipsoid::fromMatrix(center, m)); });
     }
     if (!semiAxesJson) json.fail("missing required key \"semi_axes\" or \"matrix\"");
     const Eigen::Vector3d semiAxes = semiAxesJson->positiveVector3();
     const Eigen::Matrix3d rotation = rotationJson ? readRotation(*rotationJson) : Eigen::Matrix3d::Identity();
-    return construct(json, [&] {
+    return json.construct([&] {
         return std::make_unique<Ellipsoid>(Ellipsoid::fromSemiAxes(center, semiAxes, rotation));
     });
 }
