@@ -51,15 +51,18 @@ int runQuery(const QueryOptions& options, std::ostream&, std::ostream& err) {
     const std::vector<CsvRay> rays = readRayCsv(options.raysPath);
 
     const std::size_t shapeCount = scene.shapes.size();
-    const Clock::time_point buildStart = Clock::now();
-    const Octree octree(std::move(scene.shapes), scene.octree);
-    const double buildSeconds = options.brute ? 0.0 : secondsSince(buildStart);
-
     std::vector<RayHit> hits(rays.size());
-    const Clock::time_point queryStart = Clock::now();
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-        hits[i] = options.brute ? bruteForceFirstHit(octree.shapes(), rays[i].origin, rays[i].direction)
-                                : octree.firstHit(rays[i].origin, rays[i].direction);
+    double buildSeconds = 0.0;
+    Clock::time_point queryStart = Clock::now();
+    if (options.brute) {
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            hits[i] = bruteForceFirstHit(scene.shapes, rays[i].origin, rays[i].direction);
+        }
+    } else {
+        const Octree octree(std::move(scene.shapes), scene.octree);
+        buildSeconds = secondsSince(queryStart);
+        queryStart = Clock::now();
+        for (std::size_t i = 0; i < rays.size(); ++i) hits[i] = octree.firstHit(rays[i].origin, rays[i].direction);
     }
     const double querySeconds = secondsSince(queryStart);
 
