@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config
-  libeigen3-dev libboost-math-dev nlohmann-json3-dev libcli11-dev
+  libeigen3-dev libboost-math-dev nlohmann-json3-dev libcli11-dev librandom123-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libembree-dev libtbb-dev
 )

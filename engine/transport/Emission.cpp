@@ -1,0 +1,37 @@
+#include "transport/Emission.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace dropscope {
+
+void perpendicularBasis(const Direction& d, Eigen::Vector3d& u, Eigen::Vector3d& v) {
+    // Cross with the axis least aligned with d, so the product is never short.
+    Eigen::Index smallest = 0;
+    d.vector().cwiseAbs().minCoeff(&smallest);
+    u = Eigen::Vector3d::Unit(smallest).cross(d.vector()).normalized();
+    v = d.vector().cross(u);
+}
+
+Ray emitPhoton(const Source& source, PhotonRandom& random) {
+    switch (source.type) {
+    case SourceType::Ray: return {source.origin, source.direction};
+    case SourceType::Beam: {
+        Eigen::Vector3d u;
+        Eigen::Vector3d v;
+        perpendicularBasis(source.direction, u, v);
+        const double r = source.radius * std::sqrt(random.uniform());
+        const double phi = 2.0 * std::numbers::pi * random.uniform();
+        return {source.origin + r * (std::cos(phi) * u + std::sin(phi) * v), source.direction};
+    }
+    case SourceType::PointSource: {
+        const double z = 1.0 - 2.0 * random.uniform();
+        const double phi = 2.0 * std::numbers::pi * random.uniform();
+        const double s = std::sqrt((1.0 - z) * (1.0 + z));
+        return {source.origin, Direction(s * std::cos(phi), s * std::sin(phi), z)};
+    }
+    }
+    return {source.origin, source.direction};
+}
+
+}  // namespace dropscope

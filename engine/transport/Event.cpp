@@ -1,0 +1,29 @@
+#include "transport/Event.hpp"
+
+namespace dropscope {
+
+std::string_view eventTypeName(EventType type) {
+    switch (type) {
+    case EventType::Emit: return "emit";
+    case EventType::Reflect: return "reflect";
+    case EventType::Refract: return "refract";
+    case EventType::Tir: return "tir";
+    case EventType::Absorb: return "absorb";
+    case EventType::Escape: return "escape";
+    case EventType::Lost: return "lost";
+    case EventType::Truncated: return "truncated";
+    }
+    return "?";
+}
+
+std::string_view lostReasonName(LostReason reason) {
+    switch (reason) {
+    case LostReason::EventCap: return "event_cap";
+    case LostReason::UndefinedNormal: return "undefined_normal";
+    case LostReason::MediumMismatch: return "medium_mismatch";
+    case LostReason::NoExit: return "no_exit";
+    }
+    return "?";
+}
+
+}  // namespace dropscope

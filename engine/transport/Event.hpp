@@ -1,0 +1,63 @@
+#pragma once
+
+#include "geometry/Shape.hpp"
+#include "geometry/Vector.hpp"
+#include "tree/RayHit.hpp"
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string_view>
+
+namespace dropscope {
+
+// What happened to a photon (or a ray-tree branch). `Truncated` only occurs in the ray tree: a branch
+// whose weight fell below the minimum or whose depth reached the maximum.
+enum class EventType { Emit, Reflect, Refract, Tir, Absorb, Escape, Lost, Truncated };
+
+// Why a photon was lost: every photon ends escaped, absorbed or lost, and a lost one says why.
+enum class LostReason {
+    EventCap,         // more interface events than TransportSettings::maxEvents (e.g. trapped by TIR)
+    UndefinedNormal,  // hit a box edge or vertex, where no normal exists
+    MediumMismatch,   // the surface crossed does not bound the region the photon is in (touching shapes)
+    NoExit,           // inside a shape but no surface ahead: rounding put the photon outside it
+};
+inline constexpr std::size_t kLostReasonCount = 4;
+
+std::string_view eventTypeName(EventType type);
+std::string_view lostReasonName(LostReason reason);
+
+// One recorded event. The direction is the one the photon leaves the event with (the incoming one
+// for absorb, escape and lost); `from`/`to` are the media on the incident and the far side of the
+// surface (both the current medium away from surfaces). `reflectance` is the Fresnel R used, NaN
+// where no surface is involved.
+struct Event {
+    EventType type = EventType::Emit;
+    Point position = Point::Zero();
+    Direction direction;
+    ShapeId shape = RayHit::kNone;
+    MediumId from = 0;
+    MediumId to = 0;
+    double reflectance = std::numeric_limits<double>::quiet_NaN();
+    double weight = 1.0;
+    LostReason lostReason = LostReason::EventCap;  // meaningful only for EventType::Lost
+};
+
+// Interface and absorption events of a set of photons, as summary.json reports them.
+struct EventCounts {
+    std::uint64_t reflect = 0;
+    std::uint64_t refract = 0;
+    std::uint64_t tir = 0;
+    std::uint64_t absorb = 0;
+
+    EventCounts& operator+=(const EventCounts& other) {
+        reflect += other.reflect;
+        refract += other.refract;
+        tir += other.tir;
+        absorb += other.absorb;
+        return *this;
+    }
+    friend bool operator==(const EventCounts&, const EventCounts&) = default;
+};
+
+}  // namespace dropscope

@@ -1,0 +1,42 @@
+#pragma once
+
+#include "scene/Medium.hpp"
+#include "scene/Scene.hpp"
+#include "tree/Octree.hpp"
+
+#include <vector>
+
+namespace dropscope {
+
+// What photon transport needs of a scene: the octree over its shapes, the media, and which region of
+// space every point belongs to. A region is the innermost shape around a point, or RayHit::kNone for
+// the ambient medium outside every shape. Shapes nest but never partly overlap (the loader refuses
+// that), so each shape has one parent region: the smallest shape it nests in, or the ambient.
+class OpticalScene {
+public:
+    static constexpr ShapeId kAmbient = RayHit::kNone;
+
+    // Clones the scene's shapes. O(N log N) for a cloud: each shape's parent is found through the
+    // octree's overlap query.
+    explicit OpticalScene(const Scene& scene);
+
+    const Octree& octree() const { return octree_; }
+    const std::vector<Medium>& media() const { return media_; }
+
+    // The region a point lies in (a point on a surface band belongs to the region around that shape).
+    ShapeId regionAt(const Point& p) const;
+    // The region on the outside of `shape`'s surface.
+    ShapeId parentOf(ShapeId shape) const { return parents_[shape]; }
+    MediumId mediumIdOf(ShapeId region) const {
+        return region == kAmbient ? ambient_ : octree_.shape(region)->mediumId();
+    }
+    const Medium& mediumOf(ShapeId region) const { return media_[mediumIdOf(region)]; }
+
+private:
+    std::vector<Medium> media_;
+    MediumId ambient_;
+    Octree octree_;
+    std::vector<ShapeId> parents_;
+};
+
+}  // namespace dropscope

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <Random123/philox.h>
+
+#include <cstdint>
+
+namespace dropscope {
+
+// The random numbers of one photon: Philox4x64-10 (Random123) keyed by the run's seed, counting
+// through blocks of the photon's own counter space. A photon's numbers depend only on (seed, photon
+// index), so a trace is bit-identical whatever the thread count or the order photons are run in.
+class PhotonRandom {
+public:
+    PhotonRandom(std::uint64_t seed, std::uint64_t photon) : key_{{seed, 0x64726f7073636f70ULL}}, counter_{{photon, 0, 0, 0}} {}
+
+    std::uint64_t bits() {
+        if (next_ == kBlockSize) refill();
+        return block_[next_++];
+    }
+    // In (0, 1), never 0 or 1: (2k + 1) * 2^-53 with k the top 52 bits of one output, so -log(u) and
+    // 1/u are finite and u and 1 - u are equally likely.
+    double uniform() { return static_cast<double>(((bits() >> 12) << 1) | 1U) * 0x1p-53; }
+
+private:
+    using Generator = r123::Philox4x64;
+    static constexpr unsigned kBlockSize = 4;
+
+    void refill() {
+        block_ = Generator{}(counter_, key_);
+        ++counter_[1];
+        next_ = 0;
+    }
+
+    Generator::key_type key_;
+    Generator::ctr_type counter_;
+    Generator::ctr_type block_{};
+    unsigned next_ = kBlockSize;
+};
+
+}  // namespace dropscope

@@ -1,0 +1,95 @@
+#include "transport/PhotonTracer.hpp"
+
+#include <cmath>
+
+namespace dropscope {
+
+namespace {
+
+// Appends events to an optional path.
+class PathRecorder {
+public:
+    explicit PathRecorder(std::vector<Event>* path) : path_(path) {}
+    void operator()(const Event& event) const {
+        if (path_) path_->push_back(event);
+    }
+    bool active() const { return path_ != nullptr; }
+
+private:
+    std::vector<Event>* path_;
+};
+
+}  // namespace
+
+PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
+                          const TransportSettings& settings, std::vector<Event>* path) {
+    const PathRecorder record(path);
+    PhotonOutcome outcome;
+    Point position = emitted.origin;
+    Direction direction = emitted.direction;
+    ShapeId region = scene.regionAt(position);
+    const auto here = [&](EventType type) {
+        const MediumId medium = scene.mediumIdOf(region);
+        return Event{type, position, direction, OpticalScene::kAmbient, medium, medium};
+    };
+    const auto lose = [&](LostReason reason) {
+        outcome.fate = PhotonFate::Lost;
+        outcome.lostReason = reason;
+        if (record.active()) {
+            Event event = here(EventType::Lost);
+            event.lostReason = reason;
+            record(event);
+        }
+        return outcome;
+    };
+    record(here(EventType::Emit));
+
+    for (std::uint32_t interfaceEvents = 0;;) {
+        const RayHit hit = scene.octree().firstHit(position, direction);
+        const double sigma = scene.mediumOf(region).absorptionPerUnit;
+        if (sigma > 0.0) {
+            const double freePath = -std::log(random.uniform()) / sigma;
+            if (!hit || freePath < hit.distance) {
+                position += freePath * direction.vector();
+                ++outcome.events.absorb;
+                outcome.fate = PhotonFate::Absorbed;
+                record(here(EventType::Absorb));
+                return outcome;
+            }
+        }
+        if (!hit) {
+            if (region != OpticalScene::kAmbient) return lose(LostReason::NoExit);
+            outcome.fate = PhotonFate::Escaped;
+            outcome.finalDirection = direction;
+            record(here(EventType::Escape));
+            return outcome;
+        }
+
+        position += hit.distance * direction.vector();
+        outcome.metSurface = true;
+        if (++interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap);
+        const SurfaceCrossing crossing = crossSurface(scene, region, hit.shape, position, direction, settings.fresnel);
+        if (crossing.kind == SurfaceCrossing::Kind::Lost) return lose(crossing.lostReason);
+        if (crossing.kind == SurfaceCrossing::Kind::Tangent) continue;  // goes on unchanged (seed 000 ch. 4)
+
+        EventType type = EventType::Refract;
+        if (crossing.totalInternalReflection) {
+            type = EventType::Tir;
+            ++outcome.events.tir;
+            direction = crossing.reflected;
+        } else if (random.uniform() < crossing.reflectance) {
+            type = EventType::Reflect;
+            ++outcome.events.reflect;
+            direction = crossing.reflected;
+        } else {
+            ++outcome.events.refract;
+            direction = crossing.transmitted;
+            region = crossing.regionBeyond;
+        }
+        if (record.active()) {
+            record(Event{type, position, direction, hit.shape, crossing.from, crossing.to, crossing.reflectance, 1.0});
+        }
+    }
+}
+
+}  // namespace dropscope

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "transport/Emission.hpp"
+#include "transport/Event.hpp"
+#include "transport/OpticalScene.hpp"
+#include "transport/PhotonRandom.hpp"
+#include "transport/SurfaceCrossing.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace dropscope {
+
+struct TransportSettings {
+    // Interface events (reflect, refract, tir, tangent passes) one photon may have before it is
+    // counted lost with LostReason::EventCap. docs/transport.md explains the default.
+    std::uint32_t maxEvents = 10000;
+    FresnelModel fresnel = FresnelModel::Exact;
+};
+
+enum class PhotonFate { Escaped, Absorbed, Lost };
+
+struct PhotonOutcome {
+    PhotonFate fate = PhotonFate::Lost;
+    LostReason lostReason = LostReason::EventCap;  // when fate == Lost
+    Direction finalDirection;                      // the escape direction when fate == Escaped
+    bool metSurface = false;                       // false: it never reached any surface
+    EventCounts events;
+};
+
+// One analog Monte Carlo photon (docs/transport.md): free flight to the next surface through the
+// octree; in an absorbing medium an exponential absorption distance is drawn first; at a surface it
+// reflects with probability R (always on total internal reflection), else refracts. When `path` is
+// given, every event is appended to it, starting with the emission.
+PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
+                          const TransportSettings& settings, std::vector<Event>* path = nullptr);
+
+}  // namespace dropscope

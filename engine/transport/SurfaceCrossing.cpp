@@ -1,0 +1,46 @@
+#include "transport/SurfaceCrossing.hpp"
+
+#include "optics/Fresnel.hpp"
+#include "optics/Interface.hpp"
+
+#include <cmath>
+
+namespace dropscope {
+
+SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId shape, const Point& point,
+                             const Direction& direction, FresnelModel fresnel) {
+    SurfaceCrossing crossing;
+    const Direction normal = scene.octree().shape(shape)->normal(point);
+    if (!normal) {
+        crossing.lostReason = LostReason::UndefinedNormal;
+        return crossing;
+    }
+    const double cosine = direction.dot(normal);
+    if (cosine == 0.0) {
+        crossing.kind = SurfaceCrossing::Kind::Tangent;
+        return crossing;
+    }
+    const bool entering = cosine < 0.0;
+    const ShapeId expectedRegion = entering ? scene.parentOf(shape) : shape;
+    if (region != expectedRegion) return crossing;  // MediumMismatch
+
+    crossing.kind = SurfaceCrossing::Kind::Interface;
+    crossing.regionBeyond = entering ? shape : scene.parentOf(shape);
+    crossing.from = scene.mediumIdOf(region);
+    crossing.to = scene.mediumIdOf(crossing.regionBeyond);
+    const double n1 = scene.media()[crossing.from].n;
+    const double n2 = scene.media()[crossing.to].n;
+    crossing.reflected = reflect(direction, normal);
+    const Refraction refraction = refract(direction, normal, n1, n2);
+    if (refraction.outcome == InterfaceOutcome::TotalInternalReflection) {
+        crossing.totalInternalReflection = true;
+        return crossing;
+    }
+    crossing.transmitted = refraction.transmitted;
+    const double cosIncidence = std::abs(cosine);
+    crossing.reflectance = fresnel == FresnelModel::Exact ? fresnelReflectance(cosIncidence, n1, n2).unpolarised()
+                                                          : schlickReflectance(cosIncidence, n1, n2);
+    return crossing;
+}
+
+}  // namespace dropscope

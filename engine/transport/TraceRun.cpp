@@ -1,0 +1,136 @@
+#include "transport/TraceRun.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <numbers>
+#include <stdexcept>
+
+namespace dropscope {
+
+void TraceTally::add(const PhotonOutcome& outcome, const Direction& emitted) {
+    ++photons;
+    events += outcome.events;
+    switch (outcome.fate) {
+    case PhotonFate::Absorbed: ++absorbed; break;
+    case PhotonFate::Lost:
+        ++lost;
+        ++lostReasons[static_cast<std::size_t>(outcome.lostReason)];
+        break;
+    case PhotonFate::Escaped: {
+        ++escaped;
+        if (!outcome.metSurface) ++unscattered;
+        const double cosine = std::clamp(outcome.finalDirection.dot(emitted), -1.0, 1.0);
+        const double fraction = std::acos(cosine) / std::numbers::pi;
+        const auto bins = angular.size();
+        ++angular[std::min(static_cast<std::size_t>(fraction * static_cast<double>(bins)), bins - 1)];
+        break;
+    }
+    }
+}
+
+TraceTally& TraceTally::operator+=(const TraceTally& other) {
+    photons += other.photons;
+    escaped += other.escaped;
+    absorbed += other.absorbed;
+    lost += other.lost;
+    unscattered += other.unscattered;
+    events += other.events;
+    for (std::size_t i = 0; i < lostReasons.size(); ++i) lostReasons[i] += other.lostReasons[i];
+    for (std::size_t i = 0; i < angular.size(); ++i) angular[i] += other.angular[i];
+    return *this;
+}
+
+namespace {
+
+// Photons are handed out in chunks through one atomic counter: few enough atomics to be free, small
+// enough that a stop request or a progress report is never far away.
+constexpr std::uint64_t kChunk = 256;
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sources, const TraceSettings& settings,
+                     const TraceControl& control) {
+    if (sources.empty()) throw std::invalid_argument("the scene has no light sources");
+    if (settings.bins < 1) throw std::invalid_argument("the number of angular bins must be at least 1");
+
+    TraceResult result;
+    result.requested = settings.photons;
+    result.threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
+    result.tally = TraceTally(settings.bins);
+    const std::uint64_t recorded = std::min(settings.paths, settings.photons);
+    std::vector<PhotonPath> paths(recorded);
+    std::vector<char> pathDone(recorded, 0);
+
+    const auto start = Clock::now();
+    std::atomic<std::uint64_t> nextChunk{0};
+    std::atomic<std::uint64_t> done{0};
+    std::exception_ptr failure;
+    std::atomic<bool> failed{false};
+    const auto stopRequested = [&] {
+        return failed.load(std::memory_order_relaxed) || (control.stop && control.stop->load(std::memory_order_relaxed));
+    };
+
+#pragma omp parallel num_threads(result.threads)
+    {
+        TraceTally local(settings.bins);
+        double lastReport = 0.0;
+        try {
+            while (!stopRequested()) {
+                const std::uint64_t first = kChunk * nextChunk.fetch_add(1, std::memory_order_relaxed);
+                if (first >= settings.photons) break;
+                const std::uint64_t last = std::min(first + kChunk, settings.photons);
+                for (std::uint64_t photon = first; photon < last; ++photon) {
+                    const std::size_t sourceIndex = photon % sources.size();
+                    PhotonRandom random(settings.seed, photon);
+                    const Ray emitted = emitPhoton(sources[sourceIndex], random);
+                    std::vector<Event>* events = nullptr;
+                    if (photon < recorded) {
+                        paths[photon].photon = photon;
+                        paths[photon].source = sourceIndex;
+                        events = &paths[photon].events;
+                    }
+                    const PhotonOutcome outcome = tracePhoton(scene, emitted, random, settings.transport, events);
+                    local.add(outcome, emitted.direction);
+                    if (photon < recorded) {
+                        paths[photon].fate = outcome.fate;
+                        pathDone[photon] = 1;
+                    }
+                }
+                done.fetch_add(last - first, std::memory_order_relaxed);
+                if (omp_get_thread_num() == 0 && control.onProgress) {
+                    const double now = secondsSince(start);
+                    if (now - lastReport >= control.interval) {
+                        lastReport = now;
+                        control.onProgress({done.load(std::memory_order_relaxed), settings.photons, now});
+                    }
+                }
+            }
+        } catch (...) {
+#pragma omp critical(dropscope_trace_failure)
+            if (!failure) failure = std::current_exception();
+            failed = true;
+        }
+#pragma omp critical(dropscope_trace_merge)
+        result.tally += local;
+    }
+    if (failure) std::rethrow_exception(failure);
+
+    result.seconds = secondsSince(start);
+    result.partial = result.tally.photons < settings.photons;
+    for (std::uint64_t photon = 0; photon < recorded; ++photon) {
+        if (pathDone[photon]) result.paths.push_back(std::move(paths[photon]));
+    }
+    return result;
+}
+
+}  // namespace dropscope
