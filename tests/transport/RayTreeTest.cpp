@@ -1,0 +1,103 @@
+#include "TransportFixtures.hpp"
+
+#include "transport/RayTree.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace dropscope {
+namespace {
+
+using testing::fraction;
+using testing::monteCarloTolerance;
+
+constexpr double kWeightRounding = 1e-13;  // sums of a few thousand products of weights in [0, 1]
+
+Scene defaultScene() { return loadScene(DROPSCOPE_SOURCE_DIR "/assets/scenes/default.json"); }
+
+// A pencil into the glass cell of the default scene, off-centre through the drop inside it.
+const Ray kIntoTheCell{Point(0.3, -0.4, -8), Direction(0.02, 0.01, 1)};
+
+TEST(RayTree, LeafWeightsPlusAbsorptionAddUpToTheInputWeight) {
+    const OpticalScene optical(defaultScene());
+    for (double weight : {1.0, 0.25}) {
+        const RayTree tree = traceRayTree(optical, kIntoTheCell, weight, {});
+        EXPECT_GT(tree.nodes.size(), 20U);
+        EXPECT_GT(tree.absorbed, 0.0);
+        EXPECT_NEAR(tree.leafWeight() + tree.absorbed, weight, kWeightRounding);
+        EXPECT_EQ(tree.nodes[0].event.type, EventType::Emit);
+        EXPECT_EQ(tree.nodes[0].parent, -1);
+        for (std::size_t i = 1; i < tree.nodes.size(); ++i) {
+            const RayTreeNode& node = tree.nodes[i];
+            ASSERT_GE(node.parent, 0);
+            ASSERT_LT(static_cast<std::size_t>(node.parent), i);  // parents come first
+            // A branch never gains weight.
+            EXPECT_LE(node.event.weight, tree.nodes[static_cast<std::size_t>(node.parent)].event.weight);
+        }
+    }
+}
+
+TEST(RayTree, BranchesEndAtTheMinimumWeightOrTheMaximumDepth) {
+    const OpticalScene optical(defaultScene());
+    RayTreeSettings shallow;
+    shallow.maxDepth = 3;
+    shallow.minWeight = 0.0;
+    const RayTree tree = traceRayTree(optical, kIntoTheCell, 1.0, shallow);
+    const std::vector<bool> leaves = tree.leaves();
+    int truncated = 0;
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+        EXPECT_LE(tree.nodes[i].depth, 3);
+        if (tree.nodes[i].event.type == EventType::Truncated) {
+            EXPECT_TRUE(leaves[i]);
+            EXPECT_EQ(tree.nodes[i].depth, 3);
+            ++truncated;
+        }
+    }
+    EXPECT_GE(truncated, 1);
+    EXPECT_NEAR(tree.leafWeight() + tree.absorbed, 1.0, kWeightRounding);
+
+    RayTreeSettings light;
+    light.minWeight = 0.01;
+    for (const RayTreeNode& node : traceRayTree(optical, kIntoTheCell, 1.0, light).nodes) {
+        // Light branches end; so do heavy ones trapped by total internal reflection in the glass cell.
+        if (node.event.type == EventType::Truncated) {
+            EXPECT_TRUE(node.event.weight < 0.01 || node.depth == light.maxDepth);
+        }
+    }
+}
+
+TEST(RayTree, IsTheExpectationOfTheMonteCarloPhoton) {
+    // The same pencil traced as 2e5 analog photons: the share escaping into each 10-degree bin and
+    // the share absorbed are the ray tree's leaf weights, within Monte Carlo noise.
+    Scene scene = defaultScene();
+    scene.sources = {Source{SourceType::Ray, kIntoTheCell.origin, kIntoTheCell.direction, 0.0}};
+    const OpticalScene optical(scene);
+    constexpr int kBins = 18;
+    TraceSettings settings;
+    settings.photons = 200000;
+    settings.bins = kBins;
+    const TraceTally tally = runTrace(optical, scene.sources, settings).tally;
+
+    RayTreeSettings fine;
+    fine.minWeight = 1e-12;
+    fine.maxDepth = 200;
+    const RayTree tree = traceRayTree(optical, kIntoTheCell, 1.0, fine);
+    std::vector<double> expected(kBins, 0.0);
+    for (const RayTreeNode& node : tree.nodes) {
+        if (node.event.type != EventType::Escape) continue;
+        const double angle = std::acos(std::clamp(node.event.direction.dot(kIntoTheCell.direction), -1.0, 1.0));
+        expected[std::min(static_cast<std::size_t>(angle / std::numbers::pi * kBins), std::size_t{kBins - 1})] +=
+            node.event.weight;
+    }
+    const double n = static_cast<double>(settings.photons);
+    EXPECT_NEAR(fraction(tally.absorbed, tally), tree.absorbed, monteCarloTolerance(tree.absorbed, n));
+    for (std::size_t bin = 0; bin < expected.size(); ++bin) {
+        EXPECT_NEAR(fraction(tally.angular[bin], tally), expected[bin], monteCarloTolerance(expected[bin], n))
+            << "bin " << bin;
+    }
+}
+
+}  // namespace
+}  // namespace dropscope

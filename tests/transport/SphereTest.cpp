@@ -1,0 +1,129 @@
+// A sphere under a wide beam against a reference computed ray order by ray order (van de Hulst's
+// geometric optics): a ray of impact parameter b = sin(theta_i) enters with theta_t = asin(b/n), every
+// chord inside has length L = 2a cos(theta_t) and meets the surface at theta_t again, where the
+// reflectance R is the same as outside (Stokes). Order p leaves with weight
+//   p = 0: R,   p >= 1: (1-R)^2 R^(p-1) tau^p,   tau = exp(-sigma L),
+// deviated by D_p = 2(theta_i - theta_t) + (p-1)(pi - 2 theta_t) (p >= 1), pi - 2 theta_i (p = 0).
+// Impact parameters are uniform over the disk: weight d(b^2) = 2 cos(theta_i) d cos(theta_i).
+#include "TransportFixtures.hpp"
+
+#include "optics/Fresnel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace dropscope {
+namespace {
+
+using testing::fraction;
+using testing::monteCarloTolerance;
+using testing::sceneFromJson;
+
+constexpr double kWater = 1.3337;
+constexpr double kBeamRadius = 1.25;  // the sphere has radius 1: 64% of the photons hit it
+constexpr int kBins = 36;
+
+struct SphereReference {
+    std::vector<double> angular = std::vector<double>(kBins, 0.0);  // escaped fraction per bin
+    double absorbed = 0.0;
+};
+
+SphereReference reference(double sigma) {
+    constexpr int kSteps = 400000;  // midpoint rule in cos(theta_i); bins are 5 degrees wide
+    const double hit = 1.0 / (kBeamRadius * kBeamRadius);
+    SphereReference result;
+    result.angular[0] = 1.0 - hit;  // the photons that miss go straight on
+    const auto deposit = [&](double deviation, double weight) {
+        const double angle = std::acos(std::cos(deviation));  // folded into [0, pi]
+        const auto bin = std::min(static_cast<int>(angle / std::numbers::pi * kBins), kBins - 1);
+        result.angular[static_cast<std::size_t>(bin)] += weight;
+    };
+    for (int step = 0; step < kSteps; ++step) {
+        const double cosI = (step + 0.5) / kSteps;
+        const double weight = hit * 2.0 * cosI / kSteps;
+        const double thetaI = std::acos(cosI);
+        const double thetaT = std::asin(std::sin(thetaI) / kWater);
+        const double r = fresnelReflectance(cosI, 1.0, kWater).unpolarised();
+        const double tau = std::exp(-sigma * 2.0 * std::cos(thetaT));
+        deposit(std::numbers::pi - 2.0 * thetaI, weight * r);
+        result.absorbed += weight * (1 - r) * (1 - tau) / (1 - r * tau);
+        double inside = weight * (1 - r) * tau;  // arriving at the far wall for the first time
+        for (int p = 1; inside > 1e-15 * weight; ++p) {
+            deposit(2 * (thetaI - thetaT) + (p - 1) * (std::numbers::pi - 2 * thetaT), inside * (1 - r));
+            inside *= r * tau;
+        }
+    }
+    return result;
+}
+
+TraceResult traceSphere(double sigma, std::uint64_t photons) {
+    const Scene scene = sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337, "sigma": )" + std::to_string(sigma) + "}",
+                                      R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
+                                      R"({"type": "beam", "origin": [0, 0, -3], "direction": [0, 0, 1], "radius": 1.25})");
+    TraceSettings settings;
+    settings.photons = photons;
+    settings.bins = kBins;
+    settings.seed = 11;
+    return runTrace(OpticalScene(scene), scene.sources, settings);
+}
+
+class SphereUnderABeam : public ::testing::TestWithParam<double> {};
+
+TEST_P(SphereUnderABeam, AngularDistributionAndAbsorptionMatchTheRayOrderReference) {
+    const double sigma = GetParam();
+    constexpr std::uint64_t kPhotons = 400000;
+    const TraceResult result = traceSphere(sigma, kPhotons);
+    const TraceTally& tally = result.tally;
+    const SphereReference expected = reference(sigma);
+    const double n = static_cast<double>(kPhotons);
+
+    EXPECT_EQ(tally.lost, 0U);
+    EXPECT_NEAR(fraction(tally.unscattered, tally), 1 - 1 / (kBeamRadius * kBeamRadius),
+                monteCarloTolerance(0.36, n));
+    EXPECT_NEAR(fraction(tally.absorbed, tally), expected.absorbed, monteCarloTolerance(expected.absorbed, n));
+    for (int bin = 0; bin < kBins; ++bin) {
+        const double p = expected.angular[static_cast<std::size_t>(bin)];
+        EXPECT_NEAR(fraction(tally.angular[static_cast<std::size_t>(bin)], tally), p, monteCarloTolerance(p, n))
+            << "bin " << bin * 5 << "-" << bin * 5 + 5 << " degrees";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(ClearAndAbsorbing, SphereUnderABeam, ::testing::Values(0.0, 0.4));
+
+TEST(SphereWithAPointSourceInside, TotalInternalReflectionTrapsExactlyTheRaysPastTheCriticalAngle) {
+    // From a point at r0 from the centre of a sphere of radius a, a ray at angle alpha to the radius
+    // meets the wall at sin(theta) = r0 sin(alpha) / a on every bounce. Past the critical angle it is
+    // trapped for ever; with a cap of K interface events it is lost, as is a ray that reflects K times
+    // in a row (probability R^K). cos(alpha) is uniform for an isotropic source.
+    constexpr double kGlass = 1.5;
+    constexpr double kR0 = 0.9;
+    constexpr std::uint32_t kCap = 30;
+    const Scene scene = sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5})",
+                                      R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "glass"})",
+                                      R"({"type": "point", "origin": [0.9, 0, 0]})");
+    TraceSettings settings;
+    settings.photons = 200000;
+    settings.transport.maxEvents = kCap;
+    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
+
+    constexpr int kSteps = 200000;
+    double expectedLost = 0.0;
+    for (int step = 0; step < kSteps; ++step) {
+        const double mu = -1.0 + 2.0 * (step + 0.5) / kSteps;
+        const double sinTheta = kR0 * std::sqrt(1 - mu * mu);
+        const double r = fresnelReflectance(std::sqrt(1 - sinTheta * sinTheta), kGlass, 1.0).unpolarised();
+        expectedLost += std::pow(r, kCap) / kSteps;  // r == 1 past the critical angle
+    }
+    const TraceTally& tally = result.tally;
+    EXPECT_NEAR(fraction(tally.lost, tally), expectedLost, monteCarloTolerance(expectedLost, 2e5));
+    EXPECT_EQ(tally.lost, tally.lostReasons[static_cast<std::size_t>(LostReason::EventCap)]);
+    EXPECT_EQ(tally.escaped + tally.lost, tally.photons);
+    // The closed form of the trapped share alone, sqrt(1 - (a / (n r0))^2), bounds it from below.
+    EXPECT_GT(fraction(tally.lost, tally), std::sqrt(1 - std::pow(1 / (kGlass * kR0), 2)) - 0.01);
+}
+
+}  // namespace
+}  // namespace dropscope

@@ -1,0 +1,124 @@
+#include "TransportFixtures.hpp"
+
+#include "optics/Fresnel.hpp"
+#include "transport/SurfaceCrossing.hpp"
+
+#include <gtest/gtest.h>
+
+namespace dropscope {
+namespace {
+
+using testing::sceneFromJson;
+
+// A glass cell (id 0) holding a water drop (1) holding an air bubble (2), and a free drop (3) outside.
+Scene nestedScene() {
+    return sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5}, "water": {"n": 1.3337})",
+                         R"({"type": "box", "min": [-3, -3, -3], "max": [3, 3, 3], "medium": "glass"},
+                            {"type": "sphere", "center": [0, 0, 0], "radius": 2, "medium": "water"},
+                            {"type": "sphere", "center": [0, 0, 1], "radius": 0.5, "medium": "air"},
+                            {"type": "sphere", "center": [10, 0, 0], "radius": 1, "medium": "water"})",
+                         "");
+}
+
+TEST(OpticalScene, EachShapesParentIsTheSmallestShapeItNestsIn) {
+    const OpticalScene scene(nestedScene());
+    EXPECT_EQ(scene.parentOf(0), OpticalScene::kAmbient);
+    EXPECT_EQ(scene.parentOf(1), 0U);
+    EXPECT_EQ(scene.parentOf(2), 1U);
+    EXPECT_EQ(scene.parentOf(3), OpticalScene::kAmbient);
+}
+
+TEST(OpticalScene, RegionAtIsTheInnermostShapeAroundAPoint) {
+    const OpticalScene scene(nestedScene());
+    EXPECT_EQ(scene.regionAt(Point(0, 0, 1)), 2U);
+    EXPECT_EQ(scene.regionAt(Point(0, 0, -1)), 1U);
+    EXPECT_EQ(scene.regionAt(Point(2.5, 2.5, 0)), 0U);
+    EXPECT_EQ(scene.regionAt(Point(10, 0, 0)), 3U);
+    EXPECT_EQ(scene.regionAt(Point(6, 0, 0)), OpticalScene::kAmbient);
+    EXPECT_EQ(scene.mediumOf(OpticalScene::kAmbient).name, "air");
+    EXPECT_EQ(scene.mediumOf(2).name, "air");
+    EXPECT_EQ(scene.mediumOf(0).name, "glass");
+}
+
+TEST(SurfaceCrossing, NamesTheMediaOnBothSidesWhenEnteringAndLeavingNestedShapes) {
+    const OpticalScene scene(nestedScene());
+    const Direction down(0, 0, -1);
+    const MediumId air = 0, glass = 1, water = 2;
+    struct Case {
+        ShapeId region, shape;
+        Point point;
+        MediumId from, to;
+        ShapeId beyond;
+    };
+    const Case cases[] = {
+        {OpticalScene::kAmbient, 0, Point(0, 0, 3), air, glass, 0},  // into the cell
+        {0, 1, Point(0, 0, 2), glass, water, 1},                     // into the drop
+        {1, 2, Point(0, 0, 1.5), water, air, 2},                     // into the bubble
+        {2, 2, Point(0, 0, 0.5), air, water, 1},                     // out of the bubble
+        {1, 1, Point(0, 0, -2), water, glass, 0},                    // out of the drop
+        {0, 0, Point(0, 0, -3), glass, air, OpticalScene::kAmbient}, // out of the cell
+    };
+    for (const Case& c : cases) {
+        const SurfaceCrossing crossing = crossSurface(scene, c.region, c.shape, c.point, down, FresnelModel::Exact);
+        ASSERT_EQ(crossing.kind, SurfaceCrossing::Kind::Interface) << c.point.transpose();
+        EXPECT_EQ(crossing.from, c.from);
+        EXPECT_EQ(crossing.to, c.to);
+        EXPECT_EQ(crossing.regionBeyond, c.beyond);
+        const double n1 = scene.media()[c.from].n, n2 = scene.media()[c.to].n;
+        EXPECT_DOUBLE_EQ(crossing.reflectance, fresnelReflectance(1.0, n1, n2).unpolarised());
+        EXPECT_EQ(crossing.transmitted.vector(), down.vector());  // normal incidence goes straight on
+        EXPECT_EQ(crossing.reflected.vector(), Eigen::Vector3d(0, 0, 1));
+    }
+}
+
+TEST(SurfaceCrossing, ACrossingThatDoesNotBoundTheCurrentRegionIsLost) {
+    const OpticalScene scene(nestedScene());
+    // Leaving the free drop while supposedly in the ambient air: rounding (or touching shapes) put the
+    // photon on the wrong side; the tracer must not guess a medium.
+    const SurfaceCrossing crossing =
+        crossSurface(scene, OpticalScene::kAmbient, 3, Point(11, 0, 0), Direction(1, 0, 0), FresnelModel::Exact);
+    EXPECT_EQ(crossing.kind, SurfaceCrossing::Kind::Lost);
+    EXPECT_EQ(crossing.lostReason, LostReason::MediumMismatch);
+}
+
+TEST(SurfaceCrossing, ABoxEdgeHasNoNormalAndIsLost) {
+    const OpticalScene scene(nestedScene());
+    const SurfaceCrossing crossing =
+        crossSurface(scene, OpticalScene::kAmbient, 0, Point(3, 3, 0), Direction(-1, 0, 0), FresnelModel::Exact);
+    EXPECT_EQ(crossing.kind, SurfaceCrossing::Kind::Lost);
+    EXPECT_EQ(crossing.lostReason, LostReason::UndefinedNormal);
+}
+
+TEST(SurfaceCrossing, ATangentRayNeitherEntersNorReflects) {
+    const OpticalScene scene(nestedScene());
+    const SurfaceCrossing crossing =
+        crossSurface(scene, OpticalScene::kAmbient, 3, Point(10, 0, 1), Direction(1, 0, 0), FresnelModel::Exact);
+    EXPECT_EQ(crossing.kind, SurfaceCrossing::Kind::Tangent);
+}
+
+TEST(SurfaceCrossing, PastTheCriticalAngleTheRayIsTotallyReflected) {
+    const OpticalScene scene(nestedScene());
+    // Inside the glass towards the top face at 60 degrees from the normal; sin(60) * 1.5 > 1.
+    const Direction up(std::sin(M_PI / 3), 0, std::cos(M_PI / 3));
+    const SurfaceCrossing crossing = crossSurface(scene, 0, 0, Point(2.5, 2.5, 3), up, FresnelModel::Exact);
+    ASSERT_EQ(crossing.kind, SurfaceCrossing::Kind::Interface);
+    EXPECT_TRUE(crossing.totalInternalReflection);
+    EXPECT_EQ(crossing.reflectance, 1.0);
+    EXPECT_FALSE(crossing.transmitted);
+    EXPECT_NEAR((crossing.reflected.vector() - Eigen::Vector3d(up.x(), 0, -up.z())).norm(), 0.0, 1e-15);
+}
+
+TEST(SurfaceCrossing, SchlickIsUsedOnlyWhenAsked) {
+    const OpticalScene scene(nestedScene());
+    const Direction oblique(std::sin(1.0), 0, -std::cos(1.0));
+    const Point top(0, 0, 3);
+    const double exact = crossSurface(scene, OpticalScene::kAmbient, 0, top, oblique, FresnelModel::Exact).reflectance;
+    const double schlick =
+        crossSurface(scene, OpticalScene::kAmbient, 0, top, oblique, FresnelModel::Schlick).reflectance;
+    EXPECT_DOUBLE_EQ(exact, fresnelReflectance(std::cos(1.0), 1.0, 1.5).unpolarised());
+    EXPECT_DOUBLE_EQ(schlick, schlickReflectance(std::cos(1.0), 1.0, 1.5));
+    EXPECT_GT(std::abs(exact - schlick), 1e-3);
+}
+
+}  // namespace
+}  // namespace dropscope

@@ -1,0 +1,150 @@
+#include "TransportFixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+namespace dropscope {
+namespace {
+
+Scene defaultScene() { return loadScene(DROPSCOPE_SOURCE_DIR "/assets/scenes/default.json"); }
+
+TraceSettings settingsFor(std::uint64_t photons, int threads) {
+    TraceSettings settings;
+    settings.photons = photons;
+    settings.threads = threads;
+    settings.paths = 50;
+    settings.seed = 2024;
+    return settings;
+}
+
+void expectSameTally(const TraceTally& a, const TraceTally& b) {
+    EXPECT_EQ(a.photons, b.photons);
+    EXPECT_EQ(a.escaped, b.escaped);
+    EXPECT_EQ(a.absorbed, b.absorbed);
+    EXPECT_EQ(a.lost, b.lost);
+    EXPECT_EQ(a.unscattered, b.unscattered);
+    EXPECT_EQ(a.events, b.events);
+    EXPECT_EQ(a.lostReasons, b.lostReasons);
+    EXPECT_EQ(a.angular, b.angular);
+}
+
+TEST(TraceRun, OneAndTwoThreadsGiveBitIdenticalResults) {
+    const Scene scene = defaultScene();
+    const OpticalScene optical(scene);
+    const TraceResult one = runTrace(optical, scene.sources, settingsFor(30000, 1));
+    const TraceResult two = runTrace(optical, scene.sources, settingsFor(30000, 2));
+    EXPECT_EQ(one.threads, 1);
+    EXPECT_EQ(two.threads, 2);
+    expectSameTally(one.tally, two.tally);
+    ASSERT_EQ(one.paths.size(), two.paths.size());
+    for (std::size_t i = 0; i < one.paths.size(); ++i) {
+        ASSERT_EQ(one.paths[i].events.size(), two.paths[i].events.size());
+        for (std::size_t k = 0; k < one.paths[i].events.size(); ++k) {
+            EXPECT_EQ(one.paths[i].events[k].position, two.paths[i].events[k].position);
+            EXPECT_EQ(one.paths[i].events[k].type, two.paths[i].events[k].type);
+        }
+    }
+}
+
+TEST(TraceRun, EveryPhotonEndsEscapedAbsorbedOrLostExactlyOnce) {
+    const Scene scene = defaultScene();
+    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(20000, 0));
+    const TraceTally& tally = result.tally;
+    EXPECT_FALSE(result.partial);
+    EXPECT_EQ(tally.photons, 20000U);
+    EXPECT_EQ(tally.escaped + tally.absorbed + tally.lost, tally.photons);
+    std::uint64_t binned = 0;
+    for (std::uint64_t count : tally.angular) binned += count;
+    EXPECT_EQ(binned, tally.escaped);
+    std::uint64_t lostByReason = 0;
+    for (std::uint64_t count : tally.lostReasons) lostByReason += count;
+    EXPECT_EQ(lostByReason, tally.lost);
+    EXPECT_EQ(tally.events.absorb, tally.absorbed);
+    EXPECT_LE(tally.unscattered, tally.escaped);
+}
+
+TEST(TraceRun, RecordedPathsAreTheFirstPhotonsAndEndTheWayTheyWereCounted) {
+    const Scene scene = defaultScene();
+    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(1000, 2));
+    ASSERT_EQ(result.paths.size(), 50U);
+    for (std::size_t i = 0; i < result.paths.size(); ++i) {
+        const PhotonPath& path = result.paths[i];
+        EXPECT_EQ(path.photon, i);
+        ASSERT_GE(path.events.size(), 2U);
+        EXPECT_EQ(path.events.front().type, EventType::Emit);
+        const EventType last = path.events.back().type;
+        const EventType expected = path.fate == PhotonFate::Escaped    ? EventType::Escape
+                                   : path.fate == PhotonFate::Absorbed ? EventType::Absorb
+                                                                       : EventType::Lost;
+        EXPECT_EQ(last, expected);
+        for (std::size_t k = 1; k + 1 < path.events.size(); ++k) {
+            const Event& event = path.events[k];
+            EXPECT_NE(event.shape, RayHit::kNone);
+            EXPECT_GE(event.reflectance, 0.0);
+            EXPECT_LE(event.reflectance, 1.0);
+            EXPECT_EQ(event.weight, 1.0);
+            if (event.type == EventType::Tir) {
+                EXPECT_EQ(event.reflectance, 1.0);
+            }
+        }
+    }
+}
+
+TEST(TraceRun, PhotonsTakeTurnsBetweenSources) {
+    // Two pencils, one hitting nothing (unscattered) and one hitting a sphere: half the photons each.
+    const Scene scene = testing::sceneFromJson(
+        R"("air": {"n": 1}, "water": {"n": 1.3337})",
+        R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
+        R"({"type": "ray", "origin": [5, 5, -3], "direction": [0, 0, 1]},
+           {"type": "ray", "origin": [0.3, 0, -3], "direction": [0, 0, 1]})");
+    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(1001, 2));
+    EXPECT_EQ(result.tally.unscattered, 501U);
+    EXPECT_EQ(result.paths[0].source, 0U);
+    EXPECT_EQ(result.paths[1].source, 1U);
+}
+
+TEST(TraceRun, AStopRequestEndsTheRunEarlyWithConsistentPartialResults) {
+    const Scene scene = defaultScene();
+    std::atomic<bool> stop{false};
+    TraceControl control;
+    control.stop = &stop;
+    control.interval = 0.0;
+    int reports = 0;
+    control.onProgress = [&](const TraceProgress& progress) {
+        ++reports;
+        EXPECT_EQ(progress.total, 10000000U);
+        EXPECT_LE(progress.done, progress.total);
+        stop = true;
+    };
+    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(10000000, 2), control);
+    EXPECT_GE(reports, 1);
+    EXPECT_TRUE(result.partial);
+    EXPECT_GT(result.tally.photons, 0U);
+    EXPECT_LT(result.tally.photons, 10000000U);
+    EXPECT_EQ(result.tally.escaped + result.tally.absorbed + result.tally.lost, result.tally.photons);
+    for (const PhotonPath& path : result.paths) EXPECT_FALSE(path.events.empty());
+}
+
+TEST(TraceRun, AStopBeforeTheStartTracesNothing) {
+    const Scene scene = defaultScene();
+    const std::atomic<bool> stop{true};
+    TraceControl control;
+    control.stop = &stop;
+    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(1000, 1), control);
+    EXPECT_TRUE(result.partial);
+    EXPECT_EQ(result.tally.photons, 0U);
+    EXPECT_TRUE(result.paths.empty());
+}
+
+TEST(TraceRun, RefusesARunWithoutSourcesOrBins) {
+    const Scene scene = defaultScene();
+    const OpticalScene optical(scene);
+    EXPECT_THROW(runTrace(optical, {}, settingsFor(10, 1)), std::invalid_argument);
+    TraceSettings noBins = settingsFor(10, 1);
+    noBins.bins = 0;
+    EXPECT_THROW(runTrace(optical, scene.sources, noBins), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace dropscope
