@@ -1,8 +1,10 @@
 #include "cli/Cli.hpp"
 
+#include "cli/BadInput.hpp"
 #include "cli/InspectCommand.hpp"
 #include "cli/QueryCommand.hpp"
 #include "cli/RayCsv.hpp"
+#include "cli/TraceCommand.hpp"
 #include "scene/SceneLoader.hpp"
 
 #include <CLI/CLI.hpp>
@@ -43,11 +45,15 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     try {
         CLI::App app{"dropscope: light through droplets", "dropscope"};
         app.require_subcommand(0, 1);
-        app.footer("Exit status: 0 success, 2 bad input (arguments or scene file), 1 internal error.");
+        app.footer(
+            "Exit status: 0 success, 2 bad input (arguments, scene file, output path), 1 internal error,\n"
+            "130 trace stopped by Ctrl-C (partial results written).");
         InspectOptions inspectOptions;
         const CLI::App* inspect = addInspectCommand(app, inspectOptions);
         QueryOptions queryOptions;
         const CLI::App* query = addQueryCommand(app, queryOptions);
+        TraceOptions traceOptions;
+        const CLI::App* trace = addTraceCommand(app, traceOptions);
         if (const auto message = unknownCommand(app, argc, argv)) return reportUsageError(*message, err);
         try {
             app.parse(argc, argv);
@@ -59,6 +65,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         }
         if (inspect->parsed()) return runInspect(inspectOptions, out, err);
         if (query->parsed()) return runQuery(queryOptions, out, err);
+        if (trace->parsed()) return runTraceCommand(traceOptions, out, err);
         // No subcommand: a later version opens the GUI here.
         out << app.help();
         err << "dropscope: no command given (see the commands above)\n";
@@ -67,6 +74,9 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         err << error.what() << '\n';
         return kExitBadInput;
     } catch (const RayCsvError& error) {
+        err << error.what() << '\n';
+        return kExitBadInput;
+    } catch (const BadInputError& error) {
         err << error.what() << '\n';
         return kExitBadInput;
     } catch (const std::exception& error) {

@@ -22,5 +22,21 @@ dropscope_add_cli_exit_test(cli_inspect_malformed_json 2 "malformed\\.json: line
 dropscope_add_cli_exit_test(cli_inspect_without_scene 2 "^dropscope: .*scene" inspect)
 dropscope_add_cli_exit_test(cli_unknown_command 2 "^dropscope: unknown command \"render\"" render)
 dropscope_add_cli_exit_test(cli_no_command 2 "^dropscope: no command given")
+
+# dropscope trace: a small run (it must print nothing on stderr when stderr is no terminal), bad input,
+# and Ctrl-C on a long run (trace_interrupt.sh: exit 130 and partial results).
+set(_trace_out ${CMAKE_CURRENT_BINARY_DIR}/trace-output)
+dropscope_add_cli_exit_test(cli_trace_default_scene 0 "" trace ${_default_scene} --photons 1e4 --paths 5
+                            --out ${_trace_out}/default)
+dropscope_add_cli_exit_test(cli_trace_without_photons 2 "^dropscope: --photons is required"
+                            trace ${_default_scene} --out ${_trace_out}/bad)
+dropscope_add_cli_exit_test(cli_trace_no_sources 2
+                            "no_sources\\.json: sources: the scene has no light sources to trace$"
+                            trace ${_scenes}/no_sources.json --photons 10 --out ${_trace_out}/bad)
+add_test(NAME cli_trace_interrupt
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/app/trace_interrupt.sh $<TARGET_FILE:dropscope>
+                 ${PROJECT_SOURCE_DIR}/assets/scenes/cloud.json ${_trace_out}/interrupted)
+set_tests_properties(cli_trace_interrupt PROPERTIES TIMEOUT 30)
+unset(_trace_out)
 unset(_scenes)
 unset(_default_scene)

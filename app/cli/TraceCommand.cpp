@@ -1,0 +1,162 @@
+#include "cli/TraceCommand.hpp"
+
+#include "cli/BadInput.hpp"
+#include "cli/Cli.hpp"
+#include "cli/InterruptGuard.hpp"
+#include "cli/ProgressLine.hpp"
+#include "cli/TraceFiles.hpp"
+#include "cli/WholeNumber.hpp"
+#include "scene/SceneLoader.hpp"
+#include "transport/TraceRun.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <ostream>
+#include <system_error>
+
+namespace dropscope {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
+constexpr std::uint64_t kMaxBins = 1'000'000;  // a tally per thread: 8 MB each at most
+constexpr std::uint64_t kMaxThreads = 1024;    // beyond any machine we run on; a typo otherwise
+
+// A whole number in [minimum, maximum] ("1e6" style accepted, see parseWholeNumber), handed on to
+// CLI11 as plain digits.
+CLI::Validator wholeNumberIn(std::uint64_t minimum, std::uint64_t maximum) {
+    const std::string range = maximum == kUnlimited
+                                  ? ">= " + std::to_string(minimum)
+                                  : "from " + std::to_string(minimum) + " to " + std::to_string(maximum);
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            const std::optional<std::uint64_t> value = parseWholeNumber(text);
+            if (!value || *value < minimum || *value > maximum) {
+                return "must be a whole number " + range + ", got \"" + text + "\"";
+            }
+            text = std::to_string(*value);
+            return {};
+        },
+        "");
+}
+
+// Refuses an --out that names something other than a folder, before any work is done.
+void checkOutputPath(const fs::path& directory) {
+    std::error_code error;
+    const fs::file_status status = fs::status(directory, error);
+    if (fs::exists(status) && !fs::is_directory(status)) {
+        throw BadInputError(directory.string() + ": exists and is not a directory");
+    }
+}
+
+void createOutputDirectory(const fs::path& directory) {
+    std::error_code error;
+    fs::create_directories(directory, error);
+    if (error) throw BadInputError(directory.string() + ": cannot create the output directory: " + error.message());
+}
+
+TraceSettings traceSettings(const TraceOptions& options) {
+    TraceSettings settings;
+    settings.photons = options.photons;
+    settings.seed = options.seed;
+    settings.bins = options.bins;
+    settings.threads = options.threads;
+    settings.paths = options.paths;
+    settings.transport.maxEvents = options.maxEvents;
+    settings.transport.fresnel = options.fresnel == "schlick" ? FresnelModel::Schlick : FresnelModel::Exact;
+    return settings;
+}
+
+void printSummary(const TraceResult& result, const fs::path& directory, std::ostream& out) {
+    const TraceTally& tally = result.tally;
+    const double photons = static_cast<double>(tally.photons);
+    const auto share = [&](std::uint64_t count) { return photons > 0.0 ? static_cast<double>(count) / photons : 0.0; };
+    char line[320];
+    if (result.partial) {
+        std::snprintf(line, sizeof line, "trace: interrupted after %llu of %llu photons",
+                      static_cast<unsigned long long>(tally.photons),
+                      static_cast<unsigned long long>(result.requested));
+    } else {
+        std::snprintf(line, sizeof line, "trace: %llu photons", static_cast<unsigned long long>(tally.photons));
+    }
+    out << line;
+    std::snprintf(line, sizeof line, " in %.3f s (%.0f photons/s, %d threads)\n", result.seconds,
+                  result.seconds > 0.0 ? photons / result.seconds : 0.0, result.threads);
+    out << line;
+    std::snprintf(line, sizeof line, "  escaped %.6g (unscattered %.6g), absorbed %.6g, lost %.6g\n",
+                  share(tally.escaped), share(tally.unscattered), share(tally.absorbed), share(tally.lost));
+    out << line;
+    out << "  wrote summary.json, angular.csv, paths.jsonl" << (result.partial ? " (partial results)" : "") << " in "
+        << directory.string() << '\n';
+}
+
+}  // namespace
+
+CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
+    CLI::App* command =
+        app.add_subcommand("trace", "Trace photons through a scene: fates, angular distribution, paths");
+    command->add_option("scene", options.scenePath, "Scene file (docs/scene-format.md)")->required();
+    command->add_option("--photons", options.photons, "Photons to trace (1e6 style accepted)")
+        ->required()
+        ->transform(wholeNumberIn(1, kUnlimited));
+    command->add_option("--seed", options.seed, "Seed: photon i uses the random stream (seed, i)")
+        ->capture_default_str()
+        ->transform(wholeNumberIn(0, kUnlimited));
+    command->add_option("--bins", options.bins, "Angular bins over 0-180 degrees in angular.csv")
+        ->capture_default_str()
+        ->transform(wholeNumberIn(1, kMaxBins));
+    command->add_option("--threads", options.threads, "Threads; 0: all the machine has")
+        ->capture_default_str()
+        ->transform(wholeNumberIn(0, kMaxThreads));
+    command->add_option("--paths", options.paths, "Record every event of the first K photons in paths.jsonl")
+        ->capture_default_str()
+        ->transform(wholeNumberIn(0, kUnlimited));
+    command->add_option("--max-events", options.maxEvents, "Surface events before a photon is counted lost")
+        ->capture_default_str()
+        ->transform(wholeNumberIn(1, std::numeric_limits<std::uint32_t>::max()));
+    command->add_option("--fresnel", options.fresnel, "Reflectance: exact Fresnel equations or Schlick's approximation")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"exact", "schlick"}));
+    command->add_option("--out", options.outDir, "Output folder (created): summary.json, angular.csv, paths.jsonl")
+        ->required();
+    return command;
+}
+
+int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err) {
+    const fs::path directory = options.outDir;
+    checkOutputPath(directory);
+    const Scene scene = loadScene(options.scenePath);
+    if (scene.sources.empty()) throw SceneError(scene.origin, "sources", "the scene has no light sources to trace");
+    const OpticalScene opticalScene(scene);
+    createOutputDirectory(directory);
+
+    const TraceRunInfo info{options.scenePath, scene.sources.size(), traceSettings(options)};
+    // Alive until the files are written: a first Ctrl-C while writing them is absorbed, not fatal.
+    const InterruptGuard interrupt;
+    std::optional<ProgressLine> progress;
+    if (isTerminal(err)) progress.emplace(err);
+    TraceControl control;
+    control.stop = &interrupt.flag();
+    if (progress) control.onProgress = [&](const TraceProgress& now) { progress->update(now); };
+    const TraceResult result = runTrace(opticalScene, scene.sources, info.settings, control);
+    if (progress) progress->finish({result.tally.photons, result.requested, result.seconds});
+
+    try {
+        writeTraceFiles(directory, result, info, opticalScene.media());
+    } catch (const std::runtime_error& error) {
+        throw BadInputError(error.what());
+    }
+    printSummary(result, directory, out);
+    if (!result.partial) return kExitSuccess;
+    err << "dropscope: trace interrupted: " << result.tally.photons << " of " << result.requested
+        << " photons traced, partial results in " << directory.string() << '\n';
+    return kExitInterrupted;
+}
+
+}  // namespace dropscope

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace dropscope {
+
+struct TraceOptions {
+    std::string scenePath;
+    std::uint64_t photons = 0;
+    std::uint64_t seed = 1;
+    int bins = 180;
+    int threads = 0;  // 0: all
+    std::uint64_t paths = 0;
+    std::uint32_t maxEvents = 10000;
+    std::string fresnel = "exact";
+    std::string outDir;
+};
+
+// Registers `dropscope trace SCENE --photons N [--seed S] [--bins B] [--threads T] [--paths K]
+// [--max-events M] [--fresnel exact|schlick] --out DIR`.
+CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options);
+
+// Traces the photons (engine/transport runTrace) and writes DIR/summary.json, DIR/angular.csv and
+// DIR/paths.jsonl (docs/cli.md), each whole or not at all; a short summary goes to `out`, a progress
+// line to `err` when that is a terminal. Ctrl-C stops the run: the partial results are written and
+// the status is kExitInterrupted. Bad input (scene, output directory) throws SceneError or
+// BadInputError, which runCli reports, before any file is written. (Not `runTrace`: that is the
+// engine's function this one calls.)
+int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace dropscope

@@ -1,0 +1,309 @@
+// `dropscope trace`, run in-process: the three files, their consistency, and bad input.
+#include "app/CliRun.hpp"
+#include "cli/Cli.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace dropscope {
+namespace {
+
+using test::CliRun;
+using test::expectOneLineFailure;
+using test::runDropscope;
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+const std::string kDataDir = DROPSCOPE_TEST_DATA_DIR;
+const std::string kDefaultScene = std::string(DROPSCOPE_SOURCE_DIR) + "/assets/scenes/default.json";
+const std::string kSingleRay = kDataDir + "/scenes/single_ray.json";  // one ray, no shapes
+const std::string kNoSources = kDataDir + "/scenes/no_sources.json";
+
+struct AngularRow {
+    double lo, hi, fraction, perSteradian;
+};
+
+class TraceCommand : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* test = ::testing::UnitTest::GetInstance();
+        dir_ = fs::temp_directory_path() /
+               ("dropscope-trace-" + std::to_string(test->random_seed()) + "-" + test->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    // `dropscope trace SCENE --photons N ARGUMENTS... --out DIR/out`
+    CliRun trace(const std::string& scene, const std::string& photons, std::vector<std::string> arguments = {},
+                 const std::string& out = "out") const {
+        std::vector<std::string> all{"trace", scene, "--photons", photons};
+        all.insert(all.end(), arguments.begin(), arguments.end());
+        all.insert(all.end(), {"--out", path(out)});
+        return runDropscope(all);
+    }
+
+    static std::string read(const std::string& file) {
+        std::ifstream in(file);
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str();
+    }
+    static std::vector<std::string> lines(const std::string& file) {
+        std::istringstream text(read(file));
+        std::vector<std::string> result;
+        for (std::string line; std::getline(text, line);) result.push_back(line);
+        return result;
+    }
+    Json summary(const std::string& out = "out") const { return Json::parse(read(path(out + "/summary.json"))); }
+    std::vector<AngularRow> angular(const std::string& out = "out") const {
+        std::vector<std::string> rows = lines(path(out + "/angular.csv"));
+        EXPECT_EQ(rows.empty() ? "" : rows.front(), "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr");
+        std::vector<AngularRow> result;
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+            AngularRow row{};
+            char comma = 0;
+            std::istringstream fields(rows[i]);
+            fields >> row.lo >> comma >> row.hi >> comma >> row.fraction >> comma >> row.perSteradian;
+            EXPECT_TRUE(fields && fields.peek() == EOF) << rows[i];
+            result.push_back(row);
+        }
+        return result;
+    }
+
+    fs::path dir_;
+};
+
+std::vector<std::string> keysOf(const Json& object) {
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : object.items()) keys.push_back(key);
+    return keys;
+}
+
+TEST_F(TraceCommand, WritesTheThreeFilesWithTheDocumentedKeys) {
+    const CliRun run = trace(kDefaultScene, "20000", {"--paths", "3", "--bins", "36", "--seed", "9"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    EXPECT_EQ(run.err, "");  // no progress line: err is not a terminal
+    EXPECT_NE(run.out.find("trace: 20000 photons"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find(path("out")), std::string::npos) << run.out;
+
+    const Json s = summary();
+    EXPECT_EQ(keysOf(s), (std::vector<std::string>{"photons", "seed", "threads", "seconds", "fractions", "events",
+                                                   "photons_requested", "partial", "scene", "bins", "fresnel",
+                                                   "max_events", "paths", "counts", "lost_reasons", "sources"}));
+    EXPECT_EQ(keysOf(s["fractions"]), (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered"}));
+    EXPECT_EQ(keysOf(s["counts"]), (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered"}));
+    EXPECT_EQ(keysOf(s["events"]), (std::vector<std::string>{"reflect", "refract", "tir", "absorb"}));
+    EXPECT_EQ(keysOf(s["lost_reasons"]),
+              (std::vector<std::string>{"event_cap", "undefined_normal", "medium_mismatch", "no_exit"}));
+    EXPECT_EQ(s["photons"], 20000);
+    EXPECT_EQ(s["photons_requested"], 20000);
+    EXPECT_EQ(s["partial"], false);
+    EXPECT_EQ(s["seed"], 9);
+    EXPECT_EQ(s["scene"], kDefaultScene);
+    EXPECT_EQ(s["bins"], 36);
+    EXPECT_EQ(s["fresnel"], "exact");
+    EXPECT_EQ(s["max_events"], 10000);
+    EXPECT_EQ(s["paths"], 3);
+    EXPECT_EQ(s["sources"], 1);
+    EXPECT_GE(s["threads"].get<int>(), 1);
+    EXPECT_GT(s["events"]["refract"].get<std::uint64_t>(), 0u);
+
+    const std::vector<AngularRow> rows = angular();
+    ASSERT_EQ(rows.size(), 36u);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        EXPECT_EQ(rows[i].lo, 5.0 * static_cast<double>(i));
+        EXPECT_EQ(rows[i].hi, 5.0 * static_cast<double>(i + 1));
+    }
+    EXPECT_EQ(lines(path("out/paths.jsonl")).size(), 3u);
+}
+
+TEST_F(TraceCommand, CountsAddUpAndFractionsAreTheirShares) {
+    ASSERT_EQ(trace(kDefaultScene, "20000", {"--max-events", "3"}).status, kExitSuccess);  // some photons lost
+    const Json s = summary();
+    const Json& counts = s["counts"];
+    const auto photons = s["photons"].get<std::uint64_t>();
+    EXPECT_EQ(counts["escaped"].get<std::uint64_t>() + counts["absorbed"].get<std::uint64_t>() +
+                  counts["lost"].get<std::uint64_t>(),
+              photons);
+    EXPECT_GT(counts["lost"].get<std::uint64_t>(), 0u);
+    std::uint64_t lostForAReason = 0;
+    for (const auto& [reason, count] : s["lost_reasons"].items()) lostForAReason += count.get<std::uint64_t>();
+    EXPECT_EQ(lostForAReason, counts["lost"].get<std::uint64_t>());
+    EXPECT_EQ(s["lost_reasons"]["event_cap"], counts["lost"]);  // a cap of 3 events is all that loses them here
+    double total = 0.0;
+    for (const char* fate : {"escaped", "absorbed", "lost", "unscattered"}) {
+        const double expected = counts[fate].get<double>() / static_cast<double>(photons);
+        EXPECT_EQ(s["fractions"][fate].get<double>(), expected) << fate;
+        if (std::string(fate) != "unscattered") total += expected;
+    }
+    EXPECT_NEAR(total, 1.0, 1e-15);
+}
+
+TEST_F(TraceCommand, AngularFractionsSumToTheEscapedShareOverTheirSolidAngles) {
+    ASSERT_EQ(trace(kDefaultScene, "20000", {"--bins", "50"}).status, kExitSuccess);
+    const Json s = summary();
+    double sum = 0.0;
+    for (const AngularRow& row : angular()) {
+        sum += row.fraction;
+        const double lo = row.lo * std::numbers::pi / 180.0;
+        const double hi = row.hi * std::numbers::pi / 180.0;
+        const double solidAngle = 2.0 * std::numbers::pi * (std::cos(lo) - std::cos(hi));
+        EXPECT_NEAR(row.perSteradian * solidAngle, row.fraction, 1e-12 * row.fraction) << row.lo;
+    }
+    EXPECT_NEAR(sum, s["fractions"]["escaped"].get<double>(), 1e-12);
+    EXPECT_GT(sum, 0.9);
+}
+
+TEST_F(TraceCommand, SingleRayWithoutShapesEscapesUnscatteredInTheFirstBin) {
+    ASSERT_EQ(trace(kSingleRay, "1000", {"--bins", "10"}).status, kExitSuccess);
+    const Json s = summary();
+    EXPECT_EQ(s["fractions"]["escaped"], 1.0);
+    EXPECT_EQ(s["fractions"]["unscattered"], 1.0);
+    EXPECT_EQ(s["counts"]["unscattered"], 1000);
+    const std::vector<AngularRow> rows = angular();
+    ASSERT_EQ(rows.size(), 10u);
+    EXPECT_EQ(rows[0].fraction, 1.0);
+    for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i].fraction, 0.0) << i;
+}
+
+TEST_F(TraceCommand, ThreadCountChangesNothingButThreadsAndSeconds) {
+    ASSERT_EQ(trace(kDefaultScene, "30000", {"--threads", "1", "--paths", "20"}, "one").status, kExitSuccess);
+    ASSERT_EQ(trace(kDefaultScene, "30000", {"--threads", "2", "--paths", "20"}, "two").status, kExitSuccess);
+    Json one = summary("one");
+    Json two = summary("two");
+    EXPECT_EQ(one["threads"], 1);
+    EXPECT_EQ(two["threads"], 2);
+    for (Json* s : {&one, &two}) {
+        s->erase("threads");
+        s->erase("seconds");
+    }
+    EXPECT_EQ(one, two);
+    EXPECT_EQ(read(path("one/angular.csv")), read(path("two/angular.csv")));
+    EXPECT_EQ(read(path("one/paths.jsonl")), read(path("two/paths.jsonl")));
+}
+
+TEST_F(TraceCommand, PathsHoldTheFirstKPhotonsFromEmissionToTheirFate) {
+    ASSERT_EQ(trace(kDefaultScene, "2000", {"--paths", "25", "--max-events", "4"}).status, kExitSuccess);
+    const std::vector<std::string> jsonLines = lines(path("out/paths.jsonl"));
+    ASSERT_EQ(jsonLines.size(), 25u);
+    const std::vector<std::string> eventKeys{"type",        "position",  "direction", "shape",
+                                             "medium_from", "medium_to", "R",         "weight"};
+    for (std::size_t i = 0; i < jsonLines.size(); ++i) {
+        SCOPED_TRACE(jsonLines[i]);
+        const Json photon = Json::parse(jsonLines[i]);
+        EXPECT_EQ(keysOf(photon), (std::vector<std::string>{"photon", "source", "fate", "events"}));
+        EXPECT_EQ(photon["photon"], i);
+        EXPECT_EQ(photon["source"], 0);
+        const Json& events = photon["events"];
+        ASSERT_GE(events.size(), 2u);
+        EXPECT_EQ(events.front()["type"], "emit");
+        EXPECT_TRUE(events.front()["R"].is_null());
+        EXPECT_TRUE(events.front()["shape"].is_null());
+        EXPECT_EQ(events.front()["medium_from"], "air");
+        const Json& last = events.back();
+        const std::string fate = photon["fate"];
+        const std::string lastType = fate == "escaped" ? "escape" : fate == "absorbed" ? "absorb" : "lost";
+        EXPECT_EQ(last["type"], lastType);
+        for (const Json& event : events) {
+            std::vector<std::string> keys = eventKeys;
+            if (event["type"] == "lost") keys.push_back("reason");
+            EXPECT_EQ(keysOf(event), keys);
+            EXPECT_EQ(event["position"].size(), 3u);
+            EXPECT_EQ(event["direction"].size(), 3u);
+        }
+        if (fate == "lost") {
+            EXPECT_EQ(last["reason"], "event_cap");
+        }
+    }
+}
+
+TEST_F(TraceCommand, PathsBeyondThePhotonsAreClamped) {
+    ASSERT_EQ(trace(kSingleRay, "5", {"--paths", "1000"}).status, kExitSuccess);
+    EXPECT_EQ(lines(path("out/paths.jsonl")).size(), 5u);
+    EXPECT_EQ(summary()["paths"], 5);
+}
+
+TEST_F(TraceCommand, OptionsAreRecordedAndScientificCountsAccepted) {
+    ASSERT_EQ(trace(kDefaultScene, "2e3", {"--fresnel", "schlick", "--max-events", "500", "--threads", "1"}).status,
+              kExitSuccess);
+    const Json s = summary();
+    EXPECT_EQ(s["photons"], 2000);
+    EXPECT_EQ(s["fresnel"], "schlick");
+    EXPECT_EQ(s["max_events"], 500);
+    EXPECT_EQ(s["threads"], 1);
+    EXPECT_EQ(s["bins"], 180);
+    EXPECT_EQ(s["seed"], 1);
+    EXPECT_EQ(s["paths"], 0);
+    EXPECT_EQ(read(path("out/paths.jsonl")), "");
+}
+
+TEST_F(TraceCommand, FresnelModelChangesTheReflectance) {
+    ASSERT_EQ(trace(kDefaultScene, "3000", {"--fresnel", "exact"}, "exact").status, kExitSuccess);
+    ASSERT_EQ(trace(kDefaultScene, "3000", {"--fresnel", "schlick"}, "schlick").status, kExitSuccess);
+    EXPECT_NE(summary("exact")["events"], summary("schlick")["events"]);
+}
+
+TEST_F(TraceCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
+    std::ofstream(path("file")) << "keep me\n";
+    const struct {
+        std::vector<std::string> arguments;
+        std::string message;  // the start of the one line on stderr
+    } cases[] = {
+        {{"trace", kDefaultScene, "--out", path("out")}, "dropscope: --photons is required"},
+        {{"trace", kDefaultScene, "--photons", "0", "--out", path("out")},
+         "dropscope: --photons: must be a whole number >= 1"},
+        {{"trace", kDefaultScene, "--photons", "-3", "--out", path("out")}, "dropscope: --photons: must be"},
+        {{"trace", kDefaultScene, "--photons", "2.5", "--out", path("out")}, "dropscope: --photons: must be"},
+        {{"trace", kDefaultScene, "--photons", "10", "--bins", "0", "--out", path("out")},
+         "dropscope: --bins: must be"},
+        {{"trace", kDefaultScene, "--photons", "10", "--threads", "-1", "--out", path("out")},
+         "dropscope: --threads: must be"},
+        {{"trace", kDefaultScene, "--photons", "10", "--max-events", "0", "--out", path("out")},
+         "dropscope: --max-events: must be"},
+        {{"trace", kDefaultScene, "--photons", "10", "--fresnel", "fast", "--out", path("out")},
+         "dropscope: --fresnel: fast not in"},
+        {{"trace", kDefaultScene, "--photons", "10"}, "dropscope: --out is required"},
+        {{"trace", kDefaultScene, "--photons", "10", "--out", path("file")},
+         path("file") + ": exists and is not a directory"},
+        {{"trace", kDefaultScene, "--photons", "10", "--out", path("file/out")},
+         path("file/out") + ": cannot create the output directory: "},
+        {{"trace", kNoSources, "--photons", "10", "--out", path("out")},
+         kNoSources + ": sources: the scene has no light sources to trace"},
+        {{"trace", path("missing.json"), "--photons", "10", "--out", path("out")},
+         path("missing.json") + ": no such file"},
+        {{"trace", kDataDir + "/scenes/malformed.json", "--photons", "10", "--out", path("out")},
+         kDataDir + "/scenes/malformed.json: line 4"},
+    };
+    for (const auto& [arguments, message] : cases) {
+        SCOPED_TRACE(message);
+        const CliRun run = runDropscope(arguments);
+        expectOneLineFailure(run);
+        EXPECT_TRUE(run.err.starts_with(message)) << run.err;
+        EXPECT_FALSE(fs::exists(path("out")));
+        EXPECT_EQ(read(path("file")), "keep me\n");
+    }
+}
+
+TEST_F(TraceCommand, BadInputLeavesAnEarlierRunsFilesAlone) {
+    ASSERT_EQ(trace(kSingleRay, "10").status, kExitSuccess);
+    const std::string before = read(path("out/summary.json"));
+    expectOneLineFailure(trace(kNoSources, "10"));
+    expectOneLineFailure(trace(kSingleRay, "10", {"--bins", "0"}));
+    EXPECT_EQ(read(path("out/summary.json")), before);
+    EXPECT_EQ(std::distance(fs::directory_iterator(path("out")), fs::directory_iterator()), 3);  // no leftovers
+}
+
+}  // namespace
+}  // namespace dropscope
