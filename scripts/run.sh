@@ -7,4 +7,6 @@ cd "$root"
 
 scripts/install-deps.sh
 scripts/build.sh build -DCMAKE_BUILD_TYPE=Release -DDROPSCOPE_BUILD_TESTS=OFF -DDROPSCOPE_BUILD_BENCH=OFF
-build/app/dropscope inspect assets/scenes/default.json "$@"
+build/app/dropscope inspect assets/scenes/default.json
+# Extra arguments go to trace (e.g. --threads 1 --seed 7); PHOTONS=1e7 scripts/run.sh traces more.
+build/app/dropscope trace assets/scenes/default.json --photons "${PHOTONS:-1e6}" --paths 10 --out build/trace-default "$@"
