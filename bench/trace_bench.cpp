@@ -1,0 +1,379 @@
+// Photon transport through a cloud of 1e5 water droplets (issue 4): photons per second with 1 and 2
+// threads, and what one photon costs. The reference, measured in the same run, is Octree::firstHit
+// alone on the photons' own segments (the emission and every interface event of recorded photons,
+// replayed in order), which splits the time per photon into the octree search and the rest (surface
+// crossing, Fresnel, random numbers, emission, tallies). Every run's tally must be identical, whatever
+// the thread count; the program exits 1 if not. docs/performance.md ("Photon transport") has the
+// figures and how to read them.
+//
+// Run: build/bench/trace_bench [--photons 2e5] [--repeat 5] [--threads 2] [--reference-photons 2e4]
+//                              [--seed 1] [--scene FILE]
+#include "geometry/Sphere.hpp"
+#include "octree/Measure.hpp"
+#include "scene/SceneLoader.hpp"
+#include "transport/OpticalScene.hpp"
+#include "transport/TraceRun.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <exception>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace dropscope;
+using dropscope::bench::Stopwatch;
+
+// The built-in cloud: 1e5 water droplets (n 1.3337, kappa 1.9e-9 at 532 nm) in air, with the radii of
+// assets/scenes/cloud.json (lognormal, median 0.1 mm, sigma 0.35, at most 0.5 mm), in a cube of
+// half-side 15 mm: 2.7 % of the volume, and a mean optical depth of about 4.5 along the beam, so about
+// 1 % of the photons cross it without meeting a droplet. The beam fills the disk inscribed in the
+// cube's face, so every photon enters the cloud.
+constexpr std::size_t kDroplets = 100000;
+constexpr double kHalfSide = 15.0;
+
+std::string cloudSceneText() {
+    const std::string h = std::to_string(kHalfSide);
+    return R"({"dropscope": 1, "unit": "mm", "wavelength_nm": 532, "ambient": "air",
+  "media": {"air": {"n": 1.000278}, "water": {"n": 1.3337, "kappa": 1.9e-9}},
+  "generators": [{"type": "droplet_cloud", "region": {"min": [-)" + h + ", -" + h + ", -" + h + R"(], "max": [)" +
+           h + ", " + h + ", " + h + R"(]}, "count": )" + std::to_string(kDroplets) + R"(,
+    "radius": {"distribution": "lognormal", "median": 0.1, "sigma": 0.35, "max": 0.5}, "medium": "water", "seed": 7}],
+  "sources": [{"type": "beam", "origin": [0, 0, -)" + std::to_string(2.0 * kHalfSide) +
+           R"(], "direction": [0, 0, 1], "radius": )" + h + R"(}],
+  "octree": {"max_depth": 10, "max_shapes_per_leaf": 16}})";
+}
+
+struct Options {
+    std::uint64_t photons = 200000;
+    int repeat = 5;
+    int threads = 2;                         // compared with 1
+    std::uint64_t referencePhotons = 20000;  // photons whose segments are replayed through firstHit
+    std::uint64_t seed = 1;
+    std::optional<std::string> scene;        // a scene file instead of the built-in cloud
+};
+
+std::uint64_t parseCount(const std::string& flag, const char* text) {
+    char* end = nullptr;
+    const double value = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !(value >= 0.0) || value > 1e12) {
+        throw std::invalid_argument(flag + ": expected a count such as 1e5, got '" + text + "'");
+    }
+    return static_cast<std::uint64_t>(std::llround(value));
+}
+
+Options parseOptions(int argc, char** argv) {
+    Options options;
+    for (int i = 1; i < argc; ++i) {
+        const std::string flag = argv[i];
+        if (flag == "--help" || flag == "-h") {
+            std::cout << "trace_bench [--photons 2e5] [--repeat 5 (median of)] [--threads 2 (against 1)]\n"
+                         "            [--reference-photons 2e4] [--seed 1] [--scene FILE (default: the built-in 1e5 cloud)]\n";
+            std::exit(0);
+        }
+        if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
+        const char* value = argv[++i];
+        if (flag == "--photons") options.photons = parseCount(flag, value);
+        else if (flag == "--repeat") options.repeat = std::max(1, static_cast<int>(parseCount(flag, value)));
+        else if (flag == "--threads") options.threads = std::max(1, static_cast<int>(parseCount(flag, value)));
+        else if (flag == "--reference-photons") options.referencePhotons = parseCount(flag, value);
+        else if (flag == "--seed") options.seed = parseCount(flag, value);
+        else if (flag == "--scene") options.scene = value;
+        else throw std::invalid_argument("unknown option " + flag);
+    }
+    if (options.photons == 0) throw std::invalid_argument("--photons must be > 0");
+    if (options.referencePhotons == 0) throw std::invalid_argument("--reference-photons must be > 0");
+    return options;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double best(const std::vector<double>& values) { return *std::min_element(values.begin(), values.end()); }
+
+std::string fixed(double value, int digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    return text;
+}
+
+bool sameTally(const TraceTally& a, const TraceTally& b) {
+    return a.photons == b.photons && a.escaped == b.escaped && a.absorbed == b.absorbed && a.lost == b.lost &&
+           a.unscattered == b.unscattered && a.events == b.events && a.lostReasons == b.lostReasons &&
+           a.angular == b.angular;
+}
+
+// Medians over the repeats of: cloning the scene's shapes, an Octree over the clones alone, and the
+// whole OpticalScene (clone + octree + each shape's parent through the octree's overlap query).
+struct BuildTimes {
+    double clone = 0.0;
+    double octree = 0.0;
+    double opticalScene = 0.0;
+};
+
+std::unique_ptr<OpticalScene> buildOpticalScene(const Scene& scene, int repeat, BuildTimes& times) {
+    std::vector<double> clone;
+    std::vector<double> octree;
+    std::vector<double> whole;
+    std::unique_ptr<OpticalScene> optical;
+    for (int r = 0; r < repeat; ++r) {
+        optical.reset();
+        const Stopwatch cloneWatch;
+        std::vector<std::unique_ptr<Shape>> copies;
+        copies.reserve(scene.shapes.size());
+        for (const auto& shape : scene.shapes) copies.push_back(shape->clone());
+        clone.push_back(cloneWatch.seconds());
+        const Stopwatch octreeWatch;
+        { const Octree alone(std::move(copies), scene.octree); octree.push_back(octreeWatch.seconds()); }
+        const Stopwatch wholeWatch;
+        optical = std::make_unique<OpticalScene>(scene);
+        whole.push_back(wholeWatch.seconds());
+    }
+    times = {median(clone), median(octree), median(whole)};
+    return optical;
+}
+
+// Sum of pi r^2 over the spheres per unit area of the built-in cloud's face: the mean optical depth of
+// the cloud along the beam, so exp(-tau) is the expected unscattered fraction.
+double builtInOpticalDepth(const Scene& scene) {
+    double crossSection = 0.0;
+    for (const auto& shape : scene.shapes) {
+        if (const auto* sphere = dynamic_cast<const Sphere*>(shape.get())) {
+            crossSection += std::numbers::pi * sphere->radius() * sphere->radius();
+        }
+    }
+    return crossSection / (4.0 * kHalfSide * kHalfSide);
+}
+
+double volumeFraction(const Scene& scene) {
+    double volume = 0.0;
+    for (const auto& shape : scene.shapes) volume += shape->volume();
+    return volume / std::pow(2.0 * kHalfSide, 3);
+}
+
+// Wall seconds of each run (runTrace's own clock), and the process CPU seconds across it. On a shared
+// machine a run with more threads than free cores loses its speedup to the scheduler, so the fastest
+// run is printed beside the median; CPU time per photon that stays flat from 1 to 2 threads means the
+// threads do not slow each other down (shared caches, memory, atomics).
+struct ThreadRuns {
+    int threads = 1;
+    std::vector<double> seconds;
+    std::vector<double> cpuSeconds;
+    double medianSeconds() const { return median(seconds); }
+    double bestSeconds() const { return best(seconds); }
+};
+
+double processCpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+// 1 and `threads` threads, interleaved so that both see the same drift in the machine's load; the
+// first run's tally is the one every other must equal.
+std::vector<ThreadRuns> timeTransport(const OpticalScene& optical, const std::vector<Source>& sources,
+                                      const Options& options, TraceTally& tally, bool& identical) {
+    std::vector<ThreadRuns> runs{{1, {}, {}}};
+    if (options.threads > 1) runs.push_back({options.threads, {}, {}});
+    TraceSettings settings;
+    settings.seed = options.seed;
+    settings.photons = std::min<std::uint64_t>(options.photons, 2000);  // warm-up: thread pool, caches
+    for (const ThreadRuns& run : runs) {
+        settings.threads = run.threads;
+        runTrace(optical, sources, settings);
+    }
+    settings.photons = options.photons;
+    identical = true;
+    std::optional<TraceTally> first;
+    for (int r = 0; r < options.repeat; ++r) {
+        for (ThreadRuns& run : runs) {
+            std::cerr << "  trace: " << run.threads << " thread(s), run " << r + 1 << '/' << options.repeat << '\n';
+            settings.threads = run.threads;
+            const double cpuStart = processCpuSeconds();
+            const TraceResult result = runTrace(optical, sources, settings);
+            run.cpuSeconds.push_back(processCpuSeconds() - cpuStart);
+            run.seconds.push_back(result.seconds);
+            if (!first) first = result.tally;
+            identical = identical && !result.partial && sameTally(*first, result.tally);
+        }
+    }
+    tally = *first;
+    return runs;
+}
+
+// The rays Octree::firstHit is asked for while photons [0, count) are traced: each photon's emission
+// and the leaving direction of each reflect, refract and TIR (tangent passes are not recorded; they
+// have measure zero), in tracing order.
+std::vector<Ray> segmentStarts(const OpticalScene& optical, const std::vector<Source>& sources, std::uint64_t count,
+                               std::uint64_t seed) {
+    TraceSettings settings;
+    settings.photons = count;
+    settings.seed = seed;
+    settings.threads = 1;
+    settings.paths = count;
+    const TraceResult recorded = runTrace(optical, sources, settings);
+    std::vector<Ray> rays;
+    for (const PhotonPath& path : recorded.paths) {
+        for (const Event& event : path.events) {
+            if (event.type == EventType::Emit || event.type == EventType::Reflect || event.type == EventType::Refract ||
+                event.type == EventType::Tir) {
+                rays.push_back({event.position, event.direction});
+            }
+        }
+    }
+    return rays;
+}
+
+struct FirstHitTimes {
+    std::size_t rays = 0;
+    double hitFraction = 0.0;
+    std::vector<double> oneThread;    // seconds over all rays, each repeat
+    std::vector<double> manyThreads;  // the same rays split statically over options.threads
+};
+
+FirstHitTimes timeFirstHits(const Octree& octree, const std::vector<Ray>& rays, const Options& options) {
+    const auto pass = [&](int threads, std::size_t& hits) {
+        const Stopwatch watch;
+        std::size_t found = 0;
+        const auto n = static_cast<std::ptrdiff_t>(rays.size());
+#pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : found)
+        for (std::ptrdiff_t i = 0; i < n; ++i) {
+            const Ray& ray = rays[static_cast<std::size_t>(i)];
+            found += octree.firstHit(ray.origin, ray.direction) ? 1 : 0;
+        }
+        hits = found;
+        return watch.seconds();
+    };
+    FirstHitTimes times;
+    times.rays = rays.size();
+    std::size_t hits = 0;
+    pass(options.threads, hits);  // warm-up
+    for (int r = 0; r < options.repeat; ++r) {
+        times.oneThread.push_back(pass(1, hits));
+        times.manyThreads.push_back(pass(options.threads, hits));
+    }
+    times.hitFraction = static_cast<double>(hits) / static_cast<double>(rays.size());
+    return times;
+}
+
+void printScene(const Scene& scene, const std::string& name, const BuildTimes& build, double parseSeconds,
+                bool builtIn) {
+    std::cout << "\n### Scene and build (median of the repeats; one thread)\n\n"
+                 "| scene | shapes | volume fraction | mean optical depth | parse + generate s | clone s | "
+                 "octree alone s | OpticalScene s | of which parents s |\n|---|---|---|---|---|---|---|---|---|\n"
+              << "| " << name << " | " << scene.shapes.size() << " | "
+              << (builtIn ? fixed(100.0 * volumeFraction(scene), 2) + " %" : "-") << " | "
+              << (builtIn ? fixed(builtInOpticalDepth(scene), 2) : "-") << " | " << fixed(parseSeconds, 3) << " | "
+              << fixed(build.clone, 3) << " | " << fixed(build.octree, 3) << " | " << fixed(build.opticalScene, 3)
+              << " | " << fixed(build.opticalScene - build.clone - build.octree, 3) << " |\n";
+}
+
+void printPhotons(const TraceTally& tally, double expectedUnscattered) {
+    const auto perPhoton = [&](std::uint64_t count) {
+        return static_cast<double>(count) / static_cast<double>(tally.photons);
+    };
+    const EventCounts& e = tally.events;
+    std::cout << "\n### What a photon does\n\n"
+                 "| photons | reflect | refract | TIR | absorb | events (all four) | escaped | absorbed | lost | "
+                 "unscattered | exp(-optical depth) |\n|---|---|---|---|---|---|---|---|---|---|---|\n"
+              << "| " << tally.photons << " | " << fixed(perPhoton(e.reflect), 3) << " | " << fixed(perPhoton(e.refract), 3)
+              << " | " << fixed(perPhoton(e.tir), 4) << " | " << fixed(perPhoton(e.absorb), 5) << " | "
+              << fixed(perPhoton(e.reflect + e.refract + e.tir + e.absorb), 3) << " | "
+              << fixed(100.0 * perPhoton(tally.escaped), 3) << " % | " << fixed(100.0 * perPhoton(tally.absorbed), 3)
+              << " % | " << fixed(100.0 * perPhoton(tally.lost), 4) << " % | "
+              << fixed(100.0 * perPhoton(tally.unscattered), 3) << " % | "
+              << (expectedUnscattered >= 0.0 ? fixed(100.0 * expectedUnscattered, 3) + " %" : "-") << " |\n"
+              << "\nPer photon except the percentages.\n";
+}
+
+void printTransport(const std::vector<ThreadRuns>& runs, const TraceTally& tally) {
+    const auto photons = static_cast<double>(tally.photons);
+    const EventCounts& e = tally.events;
+    const auto interface = static_cast<double>(e.reflect + e.refract + e.tir);
+    std::cout << "\n### Throughput (median of the repeats)\n\n"
+                 "| threads | seconds (each run) | photons/s | speedup | speedup of the fastest runs | "
+                 "interface events/s | CPU us per photon |\n|---|---|---|---|---|---|---|\n";
+    const double base = runs.front().medianSeconds();
+    const double baseBest = runs.front().bestSeconds();
+    for (const ThreadRuns& run : runs) {
+        std::string each;
+        for (double s : run.seconds) each += (each.empty() ? "" : ", ") + fixed(s, 3);
+        const double t = run.medianSeconds();
+        std::cout << "| " << run.threads << " | " << each << " | " << fixed(photons / t, 0) << " | "
+                  << fixed(base / t, 2) << " | " << fixed(baseBest / run.bestSeconds(), 2) << " | "
+                  << fixed(interface / t * 1e-6, 3) << " M | "
+                  << fixed(median(run.cpuSeconds) / photons * 1e6, 2) << " |\n";
+    }
+}
+
+void printReference(const FirstHitTimes& hits, const ThreadRuns& oneThread, const TraceTally& tally, int threads) {
+    const auto photons = static_cast<double>(tally.photons);
+    const EventCounts& e = tally.events;
+    const double events = static_cast<double>(e.reflect + e.refract + e.tir + e.absorb) / photons;
+    const double queries = 1.0 + static_cast<double>(e.reflect + e.refract + e.tir) / photons;
+    const double hitSeconds = median(hits.oneThread);
+    const double perHit = hitSeconds / static_cast<double>(hits.rays);
+    const double perPhoton = oneThread.medianSeconds() / photons;
+    std::cout << "\n### Reference: Octree::firstHit alone on the photons' own segments (same run, median)\n\n"
+                 "| segments | hit | firstHit Mrays/s (1 thread) | ns per firstHit | firstHit speedup on "
+              << threads
+              << " threads (median / fastest) | us per photon (1 thread) | firstHit calls per photon | time per photon / "
+                 "(events per photon x time per firstHit) | octree share of the photon time |\n"
+                 "|---|---|---|---|---|---|---|---|---|\n"
+              << "| " << hits.rays << " | " << fixed(100.0 * hits.hitFraction, 1) << " % | "
+              << fixed(static_cast<double>(hits.rays) / hitSeconds * 1e-6, 3) << " | " << fixed(perHit * 1e9, 0) << " | "
+              << fixed(hitSeconds / median(hits.manyThreads), 2) << " / "
+              << fixed(best(hits.oneThread) / best(hits.manyThreads), 2) << " | " << fixed(perPhoton * 1e6, 2) << " | "
+              << fixed(queries, 3) << " | " << fixed(perPhoton / (events * perHit), 2) << " | "
+              << fixed(100.0 * queries * perHit / perPhoton, 1) << " % |\n"
+              << "\nfirstHit calls per photon = 1 + interface events per photon (the emission's query, then one "
+                 "after each event; the last one finds nothing, or an absorption comes first).\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const Options options = parseOptions(argc, argv);
+        const bool builtIn = !options.scene;
+        const std::string name = builtIn ? "built-in cloud, 1e5 droplets" : *options.scene;
+        std::cerr << "scene: " << name << '\n';
+        const Stopwatch parseWatch;
+        const Scene scene = builtIn ? parseScene(cloudSceneText(), "trace_bench cloud") : loadScene(*options.scene);
+        const double parseSeconds = parseWatch.seconds();
+        if (scene.sources.empty()) throw std::invalid_argument(name + ": the scene has no light sources");
+
+        std::cerr << "OpticalScene\n";
+        BuildTimes build;
+        const std::unique_ptr<OpticalScene> optical = buildOpticalScene(scene, options.repeat, build);
+        std::cerr << "reference: segments of " << options.referencePhotons << " photons\n";
+        const std::vector<Ray> rays = segmentStarts(*optical, scene.sources, options.referencePhotons, options.seed);
+        TraceTally tally;
+        bool identical = false;
+        const std::vector<ThreadRuns> runs = timeTransport(*optical, scene.sources, options, tally, identical);
+        std::cerr << "reference: firstHit on " << rays.size() << " segments\n";
+        const FirstHitTimes hits = timeFirstHits(optical->octree(), rays, options);
+
+        std::cout << "trace_bench: " << name << ", photons " << options.photons << ", repeat " << options.repeat
+                  << ", threads 1 and " << options.threads << ", seed " << options.seed << ", reference photons "
+                  << options.referencePhotons << '\n';
+        printScene(scene, name, build, parseSeconds, builtIn);
+        printPhotons(tally, builtIn ? std::exp(-builtInOpticalDepth(scene)) : -1.0);
+        printTransport(runs, tally);
+        printReference(hits, runs.front(), tally, options.threads);
+        std::cout << "\nevery run's tally identical (1 and " << options.threads
+                  << " threads, every repeat): " << (identical ? "yes" : "NO") << '\n';
+        return identical ? 0 : 1;
+    } catch (const std::exception& error) {
+        std::cerr << "trace_bench: " << error.what() << '\n';
+        return 2;
+    }
+}
