@@ -20,13 +20,22 @@ OpticalScene::OpticalScene(const Scene& scene)
       parents_(octree_.slotCount(), kAmbient) {
     for (ShapeId id = 0; id < octree_.slotCount(); ++id) {
         const Shape* inner = octree_.shape(id);
-        if (!inner) continue;
-        for (ShapeId other : octree_.overlapping(*inner)) {
-            const Shape& outer = *octree_.shape(other);
-            if (!nestsInside(*inner, outer)) continue;
-            if (parents_[id] == kAmbient || outer.volume() < octree_.shape(parents_[id])->volume()) parents_[id] = other;
-        }
+        if (inner) parents_[id] = smallestContainer(*inner, id);
     }
+}
+
+ShapeId OpticalScene::smallestContainer(const Shape& inner, ShapeId innerId) const {
+    // A container encloses the inner shape's centre, so it is stored on the cells along that
+    // point's path (shapes are convex and symmetric: the centre of the bounds is inside).
+    ShapeId best = kAmbient;
+    const double innerVolume = inner.volume();
+    octree_.forEachShapeAlongPath(inner.bounds().center(), [&](ShapeId other) {
+        if (other == innerId) return;
+        const Shape& outer = *octree_.shape(other);
+        if (outer.volume() <= innerVolume || !nestsInside(inner, outer)) return;
+        if (best == kAmbient || outer.volume() < octree_.shape(best)->volume()) best = other;
+    });
+    return best;
 }
 
 ShapeId OpticalScene::regionAt(const Point& p) const {

@@ -16,8 +16,7 @@ class OpticalScene {
 public:
     static constexpr ShapeId kAmbient = RayHit::kNone;
 
-    // Clones the scene's shapes. O(N log N) for a cloud: each shape's parent is found through the
-    // octree's overlap query.
+    // Clones the scene's shapes and finds each one's parent along the octree path of its centre.
     explicit OpticalScene(const Scene& scene);
 
     const Octree& octree() const { return octree_; }
@@ -33,6 +32,8 @@ public:
     const Medium& mediumOf(ShapeId region) const { return media_[mediumIdOf(region)]; }
 
 private:
+    ShapeId smallestContainer(const Shape& inner, ShapeId innerId) const;
+
     std::vector<Medium> media_;
     MediumId ambient_;
     Octree octree_;

@@ -44,6 +44,11 @@ public:
     RayHit firstHit(const Point& p, const Direction& d, TraversalRecord& record) const;
     // The innermost shape (smallest volume) that encloses p, if any.
     std::optional<ShapeId> locate(const Point& p) const;
+    // Calls f(id) for every shape stored in the cells on the path from the root to the leaf holding
+    // p: a superset of the shapes whose inflated bounds contain p, so of every shape enclosing p.
+    // Nothing when p is outside the root cell.
+    template <class F>
+    void forEachShapeAlongPath(const Point& p, F&& f) const;
     // Ids of the stored shapes that overlap `shape` (Shape::overlaps), ascending.
     std::vector<ShapeId> overlapping(const Shape& shape) const;
 
@@ -118,6 +123,23 @@ template <class F>
 void Octree::forEachShapeIn(const Cell& cell, F&& f) const {
     for (std::uint32_t k = 0; k < cell.sphereCount; ++k) f(spheres_[cell.firstSphere + k].id);
     for (std::uint32_t k = 0; k < cell.otherCount; ++k) f(others_[cell.firstOther + k]);
+}
+
+template <class F>
+void Octree::forEachShapeAlongPath(const Point& p, F&& f) const {
+    if (!p.allFinite() || !rootBounds_.contains(p)) return;
+    std::uint32_t index = 0;
+    CellBounds bounds = rootBounds_;
+    while (true) {
+        const Cell& cell = cells_[index];
+        forEachShapeIn(cell, f);
+        if (cell.isLeaf()) return;
+        const Point mid = bounds.center();
+        int child = 0;
+        for (int axis = 0; axis < 3; ++axis) child |= (p[axis] >= mid[axis] ? 1 : 0) << axis;
+        index = cell.firstChild + static_cast<std::uint32_t>(child);
+        bounds = childBounds(bounds, child);
+    }
 }
 
 template <class Visit>

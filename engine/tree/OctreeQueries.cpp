@@ -6,29 +6,16 @@
 namespace dropscope {
 
 std::optional<ShapeId> Octree::locate(const Point& p) const {
-    if (!p.allFinite() || !rootBounds_.contains(p)) return std::nullopt;
     std::optional<ShapeId> innermost;
-    const auto consider = [&](ShapeId id) {
+    forEachShapeAlongPath(p, [&](ShapeId id) {
         const Shape& s = *shapes_[id];
         if (!s.encloses(p)) return;
         if (!innermost || s.volume() < shapes_[*innermost]->volume() ||
             (s.volume() == shapes_[*innermost]->volume() && id < *innermost)) {
             innermost = id;
         }
-    };
-    // Down the single path of cells containing p; a shape enclosing p is stored on it.
-    std::uint32_t index = 0;
-    CellBounds bounds = rootBounds_;
-    while (true) {
-        const Cell& cell = cells_[index];
-        forEachShapeIn(cell, consider);
-        if (cell.isLeaf()) return innermost;
-        const Point mid = bounds.center();
-        int child = 0;
-        for (int axis = 0; axis < 3; ++axis) child |= (p[axis] >= mid[axis] ? 1 : 0) << axis;
-        index = cell.firstChild + static_cast<std::uint32_t>(child);
-        bounds = childBounds(bounds, child);
-    }
+    });
+    return innermost;
 }
 
 std::vector<ShapeId> Octree::overlapping(const Shape& shape) const {

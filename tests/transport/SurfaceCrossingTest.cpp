@@ -1,6 +1,7 @@
 #include "TransportFixtures.hpp"
 
 #include "optics/Fresnel.hpp"
+#include "geometry/Sphere.hpp"
 #include "transport/SurfaceCrossing.hpp"
 
 #include <gtest/gtest.h>
@@ -26,6 +27,32 @@ TEST(OpticalScene, EachShapesParentIsTheSmallestShapeItNestsIn) {
     EXPECT_EQ(scene.parentOf(1), 0U);
     EXPECT_EQ(scene.parentOf(2), 1U);
     EXPECT_EQ(scene.parentOf(3), OpticalScene::kAmbient);
+}
+
+TEST(OpticalScene, ACloudGeneratedInsideAGlassCellHasTheCellAsParent) {
+    const Scene scene = parseScene(
+        R"({"dropscope": 1, "ambient": "air", "media": {"air": {"n": 1}, "glass": {"n": 1.5}, "water": {"n": 1.33}},
+            "shapes": [{"type": "box", "min": [0, 0, 0], "max": [10, 10, 10], "medium": "glass"},
+                       {"type": "sphere", "center": [20, 5, 5], "radius": 1, "medium": "water"}],
+            "generators": [{"type": "droplet_cloud", "region": {"min": [1, 1, 1], "max": [9, 9, 9]}, "count": 2000,
+                            "radius": {"distribution": "fixed", "value": 0.1}, "medium": "water", "seed": 3},
+                           {"type": "droplet_cloud", "region": {"min": [15, 0, 0], "max": [25, 10, 10]}, "count": 500,
+                            "radius": {"distribution": "fixed", "value": 0.1}, "medium": "water", "seed": 4}]})",
+        "cloud-in-cell.json");
+    const OpticalScene optical(scene);
+    ASSERT_EQ(optical.octree().slotCount(), 2502U);
+    EXPECT_EQ(optical.parentOf(0), OpticalScene::kAmbient);
+    EXPECT_EQ(optical.parentOf(1), OpticalScene::kAmbient);
+    for (ShapeId id = 2; id < 2002; ++id) ASSERT_EQ(optical.parentOf(id), 0U) << id;
+    // The second cloud surrounds the free sphere; droplets placed wholly inside it nest in it.
+    int nestedInSphere = 0;
+    for (ShapeId id = 2002; id < 2502; ++id) {
+        const auto& droplet = static_cast<const Sphere&>(*optical.octree().shape(id));
+        const bool inside = (droplet.center() - Point(20, 5, 5)).norm() + droplet.radius() <= 1.0;
+        nestedInSphere += inside;
+        ASSERT_EQ(optical.parentOf(id), inside ? 1U : OpticalScene::kAmbient) << id;
+    }
+    EXPECT_GT(nestedInSphere, 0);
 }
 
 TEST(OpticalScene, RegionAtIsTheInnermostShapeAroundAPoint) {
