@@ -7,6 +7,7 @@
 //                               [--brute-max-n 1e4] [--repeat 1] [--seed 1] [--max-depth D] [--max-leaf K]
 #include "geometry/Sphere.hpp"
 #include "octree/EmbreePeers.hpp"
+#include "octree/CountArgument.hpp"
 #include "octree/Measure.hpp"
 #include "octree/Rays.hpp"
 #include "octree/SphereCloud.hpp"
@@ -56,15 +57,6 @@ struct Options {
     std::uint64_t seed = 1;
     OctreeSettings octree;  // the engine's defaults unless --max-depth / --max-leaf
 };
-
-std::size_t parseCount(const std::string& flag, const char* text) {
-    char* end = nullptr;
-    const double value = std::strtod(text, &end);
-    if (end == text || *end != '\0' || !(value >= 0.0) || value > 1e12) {
-        throw std::invalid_argument(flag + ": expected a count such as 1e6, got '" + text + "'");
-    }
-    return static_cast<std::size_t>(std::llround(value));
-}
 
 Options parseOptions(int argc, char** argv) {
     Options options;

@@ -9,6 +9,7 @@
 // Run: build/bench/trace_bench [--photons 2e5] [--repeat 5] [--threads 2] [--reference-photons 2e4]
 //                              [--seed 1] [--scene FILE]
 #include "geometry/Sphere.hpp"
+#include "octree/CountArgument.hpp"
 #include "octree/Measure.hpp"
 #include "scene/SceneLoader.hpp"
 #include "transport/OpticalScene.hpp"
@@ -32,6 +33,7 @@ namespace {
 
 using namespace dropscope;
 using dropscope::bench::Stopwatch;
+using dropscope::bench::parseCount;
 
 // The built-in cloud: 1e5 water droplets (n 1.3337, kappa 1.9e-9 at 532 nm) in air, with the radii of
 // assets/scenes/cloud.json (lognormal, median 0.1 mm, sigma 0.35, at most 0.5 mm), in a cube of
@@ -61,15 +63,6 @@ struct Options {
     std::uint64_t seed = 1;
     std::optional<std::string> scene;        // a scene file instead of the built-in cloud
 };
-
-std::uint64_t parseCount(const std::string& flag, const char* text) {
-    char* end = nullptr;
-    const double value = std::strtod(text, &end);
-    if (end == text || *end != '\0' || !(value >= 0.0) || value > 1e12) {
-        throw std::invalid_argument(flag + ": expected a count such as 1e5, got '" + text + "'");
-    }
-    return static_cast<std::uint64_t>(std::llround(value));
-}
 
 Options parseOptions(int argc, char** argv) {
     Options options;
