@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Reruns the literature comparisons of docs/validation.md with the Release build:
-#   scripts/validate.sh [PHOTONS]    (default 1e7; the figures in the doc used 1e7, and 1e8 for absorption)
+#   scripts/validate.sh [PHOTONS]    (default 1e7, about 5 s in all; the figures in the doc used 1e8, about 45 s)
 # Needs build/app/dropscope (scripts/run.sh builds it). Writes its traces under ${TMPDIR:-/tmp}.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -7,25 +7,50 @@
 
 namespace dropscope {
 
-void writeFileAtomically(const std::filesystem::path& target, const std::function<void(std::ostream&)>& write) {
-    std::filesystem::path temporary = target;
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temporaryFor(const fs::path& target) {
+    fs::path temporary = target;
     temporary += ".partial-" + std::to_string(::getpid());
+    return temporary;
+}
+
+void writeTemporary(const FileToWrite& file) {
+    std::error_code error;
+    const fs::file_status status = fs::symlink_status(file.target, error);
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+        throw std::runtime_error(file.target.string() + ": exists and is not a regular file");
+    }
+    std::ofstream out(temporaryFor(file.target), std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error(file.target.string() + ": cannot write (does the folder exist?)");
+    file.write(out);
+    out.flush();
+    if (!out) throw std::runtime_error(file.target.string() + ": write failed (disk full?)");
+}
+
+}  // namespace
+
+void writeFilesAtomically(const std::vector<FileToWrite>& files) {
     try {
-        {
-            std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-            if (!out) throw std::runtime_error(target.string() + ": cannot write (does the folder exist?)");
-            write(out);
-            out.flush();
-            if (!out) throw std::runtime_error(target.string() + ": write failed (disk full?)");
+        for (const FileToWrite& file : files) writeTemporary(file);
+        for (const FileToWrite& file : files) {
+            std::error_code error;
+            fs::rename(temporaryFor(file.target), file.target, error);
+            if (error) throw std::runtime_error(file.target.string() + ": cannot replace: " + error.message());
         }
-        std::error_code error;
-        std::filesystem::rename(temporary, target, error);
-        if (error) throw std::runtime_error(target.string() + ": cannot replace: " + error.message());
     } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
+        for (const FileToWrite& file : files) {
+            std::error_code ignored;
+            fs::remove(temporaryFor(file.target), ignored);
+        }
         throw;
     }
+}
+
+void writeFileAtomically(const fs::path& target, const std::function<void(std::ostream&)>& write) {
+    writeFilesAtomically({{target, write}});
 }
 
 }  // namespace dropscope

@@ -25,8 +25,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
-constexpr std::uint64_t kMaxBins = 1'000'000;  // a tally per thread: 8 MB each at most
+constexpr std::uint64_t kMaxBins = 100'000;    // 0.0018 degrees; a tally per thread: 0.8 MB each at most
 constexpr std::uint64_t kMaxThreads = 1024;    // beyond any machine we run on; a typo otherwise
+constexpr std::uint64_t kMaxPaths = 1'000'000; // every event kept in memory: ~1 KB per photon
 
 // A whole number in [minimum, maximum] ("1e6" style accepted, see parseWholeNumber), handed on to
 // CLI11 as plain digits.
@@ -46,12 +47,19 @@ CLI::Validator wholeNumberIn(std::uint64_t minimum, std::uint64_t maximum) {
         "");
 }
 
-// Refuses an --out that names something other than a folder, before any work is done.
+// Refuses an --out that names something other than a folder, or holds an output name that is not a
+// regular file, before any work is done.
 void checkOutputPath(const fs::path& directory) {
     std::error_code error;
     const fs::file_status status = fs::status(directory, error);
     if (fs::exists(status) && !fs::is_directory(status)) {
         throw BadInputError(directory.string() + ": exists and is not a directory");
+    }
+    for (const char* name : {"summary.json", "angular.csv", "paths.jsonl"}) {
+        const fs::file_status file = fs::symlink_status(directory / name, error);
+        if (fs::exists(file) && !fs::is_regular_file(file)) {
+            throw BadInputError((directory / name).string() + ": exists and is not a regular file");
+        }
     }
 }
 
@@ -116,7 +124,7 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
         ->transform(wholeNumberIn(0, kMaxThreads));
     command->add_option("--paths", options.paths, "Record every event of the first K photons in paths.jsonl")
         ->capture_default_str()
-        ->transform(wholeNumberIn(0, kUnlimited));
+        ->transform(wholeNumberIn(0, kMaxPaths));
     command->add_option("--max-events", options.maxEvents, "Surface events before a photon is counted lost")
         ->capture_default_str()
         ->transform(wholeNumberIn(1, std::numeric_limits<std::uint32_t>::max()));

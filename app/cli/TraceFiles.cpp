@@ -126,10 +126,12 @@ void writePathsJsonl(const std::vector<PhotonPath>& paths, const std::vector<Med
 
 void writeTraceFiles(const std::filesystem::path& directory, const TraceResult& result, const TraceRunInfo& info,
                      const std::vector<Medium>& media) {
-    writeFileAtomically(directory / "angular.csv", [&](std::ostream& out) { writeAngularCsv(result.tally, out); });
-    writeFileAtomically(directory / "paths.jsonl",
-                        [&](std::ostream& out) { writePathsJsonl(result.paths, media, out); });
-    writeFileAtomically(directory / "summary.json", [&](std::ostream& out) { writeTraceSummary(result, info, out); });
+    // All three or none, so a failed run never leaves new files beside old ones.
+    writeFilesAtomically({
+        {directory / "angular.csv", [&](std::ostream& out) { writeAngularCsv(result.tally, out); }},
+        {directory / "paths.jsonl", [&](std::ostream& out) { writePathsJsonl(result.paths, media, out); }},
+        {directory / "summary.json", [&](std::ostream& out) { writeTraceSummary(result, info, out); }},
+    });
 }
 
 }  // namespace dropscope

@@ -33,8 +33,8 @@ void writeAngularCsv(const TraceTally& tally, std::ostream& out);
 // paths.jsonl: one JSON object per recorded photon, with every event; media by name.
 void writePathsJsonl(const std::vector<PhotonPath>& paths, const std::vector<Medium>& media, std::ostream& out);
 
-// Writes angular.csv, paths.jsonl and, last, summary.json into `directory`, each whole or not at all
-// (writeFileAtomically): a summary.json is only ever beside the files of the same run.
+// Writes angular.csv, paths.jsonl and summary.json into `directory`, all three or none
+// (writeFilesAtomically): a summary.json is only ever beside the files of the same run.
 void writeTraceFiles(const std::filesystem::path& directory, const TraceResult& result, const TraceRunInfo& info,
                      const std::vector<Medium>& media);
 

@@ -2,6 +2,8 @@
 
 #include "scene/SceneOverlaps.hpp"
 
+#include <limits>
+
 namespace dropscope {
 
 namespace {
@@ -40,6 +42,25 @@ ShapeId OpticalScene::smallestContainer(const Shape& inner, ShapeId innerId) con
 
 ShapeId OpticalScene::regionAt(const Point& p) const {
     return octree_.locate(p).value_or(kAmbient);
+}
+
+ShapeId OpticalScene::regionAt(const Point& p, const Direction& d) const {
+    ShapeId region = regionAt(p);
+    double regionVolume = region == kAmbient ? std::numeric_limits<double>::infinity() : octree_.shape(region)->volume();
+    octree_.forEachShapeAlongPath(p, [&](ShapeId id) {
+        const Shape& shape = *octree_.shape(id);
+        if (shape.volume() >= regionVolume || shape.locatePoint(p) != PointLocation::OnSurface) return;
+        const Direction normal = shape.normal(p);
+        if (!normal || d.dot(normal) >= 0.0) return;
+        region = id;
+        regionVolume = shape.volume();
+    });
+    return region;
+}
+
+double OpticalScene::approachDistance(const Point& p, const Direction& d) const {
+    const std::optional<std::pair<double, double>> span = octree_.rootSpan(p, d);
+    return span ? span->first : 0.0;
 }
 
 }  // namespace dropscope

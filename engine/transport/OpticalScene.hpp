@@ -24,6 +24,12 @@ public:
 
     // The region a point lies in (a point on a surface band belongs to the region around that shape).
     ShapeId regionAt(const Point& p) const;
+    // The region a photon at p travelling along d is in: as regionAt(p), except that on a shape's
+    // surface band heading into the shape it is already inside that shape.
+    ShapeId regionAt(const Point& p, const Direction& d) const;
+    // How far a ray from p must travel to reach the octree's root cell, outside which there is
+    // nothing but the ambient medium: 0 when p is inside it or the ray misses it.
+    double approachDistance(const Point& p, const Direction& d) const;
     // The region on the outside of `shape`'s surface.
     ShapeId parentOf(ShapeId shape) const { return parents_[shape]; }
     MediumId mediumIdOf(ShapeId region) const {

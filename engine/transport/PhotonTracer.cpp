@@ -1,6 +1,7 @@
 #include "transport/PhotonTracer.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace dropscope {
 
@@ -27,7 +28,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     PhotonOutcome outcome;
     Point position = emitted.origin;
     Direction direction = emitted.direction;
-    ShapeId region = scene.regionAt(position);
+    ShapeId region = scene.regionAt(position, direction);
     const auto here = [&](EventType type) {
         const MediumId medium = scene.mediumIdOf(region);
         return Event{type, position, direction, OpticalScene::kAmbient, medium, medium};
@@ -42,21 +43,34 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         }
         return outcome;
     };
+    // Draws an absorption distance in the current medium; when it is shorter than `distance` the
+    // photon is absorbed there.
+    const auto absorbedWithin = [&](double distance) {
+        const double sigma = scene.mediumOf(region).absorptionPerUnit;
+        if (sigma <= 0.0) return false;
+        const double freePath = -std::log(random.uniform()) / sigma;
+        if (freePath >= distance) return false;
+        position += freePath * direction.vector();
+        ++outcome.events.absorb;
+        outcome.fate = PhotonFate::Absorbed;
+        record(here(EventType::Absorb));
+        return true;
+    };
     record(here(EventType::Emit));
 
-    for (std::uint32_t interfaceEvents = 0;;) {
-        const RayHit hit = scene.octree().firstHit(position, direction);
-        const double sigma = scene.mediumOf(region).absorptionPerUnit;
-        if (sigma > 0.0) {
-            const double freePath = -std::log(random.uniform()) / sigma;
-            if (!hit || freePath < hit.distance) {
-                position += freePath * direction.vector();
-                ++outcome.events.absorb;
-                outcome.fate = PhotonFate::Absorbed;
-                record(here(EventType::Absorb));
-                return outcome;
-            }
+    // From a distant source, cross the empty ambient up to the scene first, so that hit points are
+    // computed from nearby and stay within the surface bands (docs/transport.md).
+    if (region == OpticalScene::kAmbient) {
+        const double approach = scene.approachDistance(position, direction);
+        if (approach > 0.0) {
+            if (absorbedWithin(approach)) return outcome;
+            position += approach * direction.vector();
         }
+    }
+
+    for (std::uint64_t interfaceEvents = 0;;) {
+        const RayHit hit = scene.octree().firstHit(position, direction);
+        if (absorbedWithin(hit ? hit.distance : std::numeric_limits<double>::infinity())) return outcome;
         if (!hit) {
             if (region != OpticalScene::kAmbient) return lose(LostReason::NoExit);
             outcome.fate = PhotonFate::Escaped;

@@ -37,12 +37,24 @@ struct Branch {
 RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, const RayTreeSettings& settings) {
     RayTree tree;
     tree.inputWeight = weight;
-    const ShapeId startRegion = scene.regionAt(ray.origin);
+    const ShapeId startRegion = scene.regionAt(ray.origin, ray.direction);
     const MediumId startMedium = scene.mediumIdOf(startRegion);
     tree.nodes.push_back({Event{EventType::Emit, ray.origin, ray.direction, OpticalScene::kAmbient, startMedium,
                                 startMedium, std::nan(""), weight},
                           -1, 0});
-    std::vector<Branch> pending{{ray.origin, ray.direction, startRegion, weight, 0, 0}};
+    // As the photon does: cross the empty ambient up to the scene first (docs/transport.md).
+    Point start = ray.origin;
+    double startWeight = weight;
+    if (startRegion == OpticalScene::kAmbient) {
+        const double approach = scene.approachDistance(start, ray.direction);
+        const double sigma = scene.media()[startMedium].absorptionPerUnit;
+        if (approach > 0.0 && sigma > 0.0) {
+            startWeight = weight * std::exp(-sigma * approach);
+            tree.absorbed += weight - startWeight;
+        }
+        start += approach * ray.direction.vector();
+    }
+    std::vector<Branch> pending{{start, ray.direction, startRegion, startWeight, 0, 0}};
 
     while (!pending.empty()) {
         Branch branch = pending.back();
@@ -78,6 +90,10 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
             const double transmitted = branch.weight * std::exp(-sigma * hit.distance);
             tree.absorbed += branch.weight - transmitted;
             branch.weight = transmitted;
+            if (transmitted == 0.0) {  // exp underflowed: nothing reaches the surface
+                leaf(EventType::Absorb, 0.0);
+                continue;
+            }
         }
         const SurfaceCrossing crossing =
             crossSurface(scene, branch.region, hit.shape, branch.position, branch.direction, settings.fresnel);

@@ -80,11 +80,14 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
         return failed.load(std::memory_order_relaxed) || (control.stop && control.stop->load(std::memory_order_relaxed));
     };
 
+    int threadsUsed = 1;
 #pragma omp parallel num_threads(result.threads)
     {
-        TraceTally local(settings.bins);
-        double lastReport = 0.0;
+#pragma omp single nowait
+        threadsUsed = omp_get_num_threads();  // OMP_THREAD_LIMIT and the like may give fewer
         try {
+            TraceTally local(settings.bins);
+            double lastReport = 0.0;
             while (!stopRequested()) {
                 const std::uint64_t first = kChunk * nextChunk.fetch_add(1, std::memory_order_relaxed);
                 if (first >= settings.photons) break;
@@ -115,15 +118,16 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                     }
                 }
             }
+#pragma omp critical(dropscope_trace_merge)
+            result.tally += local;
         } catch (...) {
 #pragma omp critical(dropscope_trace_failure)
             if (!failure) failure = std::current_exception();
             failed = true;
         }
-#pragma omp critical(dropscope_trace_merge)
-        result.tally += local;
     }
     if (failure) std::rethrow_exception(failure);
+    result.threads = threadsUsed;
 
     result.seconds = secondsSince(start);
     result.partial = result.tally.photons < settings.photons;

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace dropscope {
@@ -42,6 +43,9 @@ public:
     // The nearest surface along the ray, exactly as bruteForceFirstHit.
     RayHit firstHit(const Point& p, const Direction& d) const;
     RayHit firstHit(const Point& p, const Direction& d, TraversalRecord& record) const;
+    // The stretch [enter, exit] of the ray inside the root cell inflated by margin(), beyond which no
+    // stored shape reaches (enter is 0 when p is inside); nullopt when the ray misses it.
+    std::optional<std::pair<double, double>> rootSpan(const Point& p, const Direction& d) const;
     // The innermost shape (smallest volume) that encloses p, if any.
     std::optional<ShapeId> locate(const Point& p) const;
     // Calls f(id) for every shape stored in the cells on the path from the root to the leaf holding

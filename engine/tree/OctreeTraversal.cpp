@@ -96,26 +96,32 @@ struct Octree::Traversal {
     void run() {
         if (!d || !p.allFinite()) return;
         inverse = d.vector().cwiseInverse();
-        // The inflated root: no stored shape reaches beyond it.
-        const CellBounds root(tree.rootBounds_.min().array() - tree.margin_,
-                              tree.rootBounds_.max().array() + tree.margin_);
-        double tEnter = 0.0;
-        double tExit = kInfinity;
-        for (int axis = 0; axis < 3; ++axis) {
-            if (d[axis] == 0.0) {
-                if (p[axis] < root.min()[axis] || p[axis] > root.max()[axis]) return;
-                continue;
-            }
-            const double t0 = crossing(axis, root.min()[axis]);
-            const double t1 = crossing(axis, root.max()[axis]);
-            tEnter = std::max(tEnter, std::min(t0, t1));
-            tExit = std::min(tExit, std::max(t0, t1));
-        }
-        if (tEnter > tExit) return;
-        visit(0, tree.rootBounds_, 0, tEnter, tExit);
+        const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d);
+        if (!span) return;
+        visit(0, tree.rootBounds_, 0, span->first, span->second);
         if (record) record->hit = hit;
     }
 };
+
+std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const Direction& d) const {
+    if (!d || !p.allFinite()) return std::nullopt;
+    const CellBounds root(rootBounds_.min().array() - margin_, rootBounds_.max().array() + margin_);
+    double tEnter = 0.0;
+    double tExit = kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (d[axis] == 0.0) {
+            if (p[axis] < root.min()[axis] || p[axis] > root.max()[axis]) return std::nullopt;
+            continue;
+        }
+        const double inverse = 1.0 / d[axis];
+        const double t0 = (root.min()[axis] - p[axis]) * inverse;
+        const double t1 = (root.max()[axis] - p[axis]) * inverse;
+        tEnter = std::max(tEnter, std::min(t0, t1));
+        tExit = std::min(tExit, std::max(t0, t1));
+    }
+    if (tEnter > tExit) return std::nullopt;
+    return std::pair{tEnter, tExit};
+}
 
 RayHit Octree::firstHit(const Point& p, const Direction& d) const {
     Traversal traversal{*this, p, d, {}, nullptr, {}};

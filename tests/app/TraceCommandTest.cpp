@@ -268,6 +268,10 @@ TEST_F(TraceCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
         {{"trace", kDefaultScene, "--photons", "2.5", "--out", path("out")}, "dropscope: --photons: must be"},
         {{"trace", kDefaultScene, "--photons", "10", "--bins", "0", "--out", path("out")},
          "dropscope: --bins: must be"},
+        {{"trace", kDefaultScene, "--photons", "10", "--bins", "100001", "--out", path("out")},
+         "dropscope: --bins: must be a whole number from 1 to 100000"},
+        {{"trace", kDefaultScene, "--photons", "1e12", "--paths", "1e12", "--out", path("out")},
+         "dropscope: --paths: must be a whole number from 0 to 1000000"},
         {{"trace", kDefaultScene, "--photons", "10", "--threads", "-1", "--out", path("out")},
          "dropscope: --threads: must be"},
         {{"trace", kDefaultScene, "--photons", "10", "--max-events", "0", "--out", path("out")},
@@ -303,6 +307,17 @@ TEST_F(TraceCommand, BadInputLeavesAnEarlierRunsFilesAlone) {
     expectOneLineFailure(trace(kSingleRay, "10", {"--bins", "0"}));
     EXPECT_EQ(read(path("out/summary.json")), before);
     EXPECT_EQ(std::distance(fs::directory_iterator(path("out")), fs::directory_iterator()), 3);  // no leftovers
+}
+
+TEST_F(TraceCommand, AnOutputNameTakenByAFolderIsRefusedBeforeAnyFileIsReplaced) {
+    ASSERT_EQ(trace(kSingleRay, "10").status, kExitSuccess);
+    const std::string angular = read(path("out/angular.csv"));
+    fs::remove(path("out/summary.json"));
+    fs::create_directory(path("out/summary.json"));
+    const CliRun run = trace(kSingleRay, "10", {"--bins", "7"});
+    expectOneLineFailure(run);
+    EXPECT_TRUE(run.err.starts_with(path("out/summary.json") + ": exists and is not a regular file")) << run.err;
+    EXPECT_EQ(read(path("out/angular.csv")), angular);
 }
 
 }  // namespace

@@ -70,3 +70,92 @@ TEST(PhotonTracer, APhotonThatMeetsNothingEscapesUnscattered) {
 
 }  // namespace
 }  // namespace dropscope
+
+namespace dropscope {
+namespace {
+
+TEST(PhotonTracer, TheEventCapEndsAPhotonAfterExactlyThatManyInterfaceEvents) {
+    // Inside a glass cube, a direction whose cosines are all below cos(theta_c) = sqrt(1 - 1/n^2)
+    // reflects totally on every face for ever.
+    const Scene scene = testing::sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5})",
+                                               R"({"type": "box", "min": [-1, -1, -1], "max": [1, 1, 1], "medium": "glass"})",
+                                               "");
+    const OpticalScene optical(scene);
+    for (std::uint32_t cap : {1U, 7U, 500U}) {
+        PhotonRandom random(1, 0);
+        std::vector<Event> path;
+        TransportSettings settings;
+        settings.maxEvents = cap;
+        const PhotonOutcome outcome =
+            tracePhoton(optical, {Point(0.1, 0.2, 0.3), Direction(0.6, 0.5, 0.62)}, random, settings, &path);
+        EXPECT_EQ(outcome.fate, PhotonFate::Lost);
+        EXPECT_EQ(outcome.lostReason, LostReason::EventCap);
+        EXPECT_EQ(outcome.events.tir, cap);
+        ASSERT_EQ(path.size(), cap + 2U);  // emit, cap TIRs, lost
+        EXPECT_EQ(path.back().type, EventType::Lost);
+        EXPECT_EQ(path.back().lostReason, LostReason::EventCap);
+    }
+}
+
+TEST(PhotonTracer, APhotonEmittedOnASurfaceIsInsideTheShapeWhenItHeadsInward) {
+    // A point source on a drop's surface: the inward half of the photons start in the water. Those at
+    // more than the critical angle to the normal stay trapped by total internal reflection (every
+    // chord of a sphere meets the wall at the angle it started with), a share
+    // 1/2 cos(theta_c) = 1/2 sqrt(1 - 1/n^2) of all photons, and end at the event cap; none is lost
+    // for any other reason.
+    const Scene scene = testing::sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337})",
+                                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
+                                               R"({"type": "point", "origin": [0, 0, 1]})");
+    TraceSettings settings;
+    settings.photons = 20000;
+    settings.paths = 200;
+    settings.transport.maxEvents = 50;
+    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
+    for (const PhotonPath& path : result.paths) {
+        const Event& emit = path.events.front();
+        EXPECT_EQ(emit.from, emit.direction.z() < 0 ? 1U : 0U) << path.photon;  // water : air
+    }
+    const TraceTally& tally = result.tally;
+    EXPECT_EQ(tally.lost, tally.lostReasons[static_cast<std::size_t>(LostReason::EventCap)]);
+    const double trapped = 0.5 * std::sqrt(1 - 1 / (1.3337 * 1.3337));
+    // Near-critical rays that reflect 50 times in a row add a little to the trapped share.
+    EXPECT_GT(testing::fraction(tally.lost, tally), trapped - testing::monteCarloTolerance(trapped, 2e4));
+    EXPECT_LT(testing::fraction(tally.lost, tally), trapped + 0.01);
+}
+
+TEST(PhotonTracer, ADistantSourceHitsATinyDropletAsWellAsANearOne) {
+    // A 5 um droplet under a beam of twice its radius: a quarter of the photons hit it, whether the
+    // beam starts 1 mm or 1e8 mm away (hit points are computed from the scene, not the source).
+    for (double distance : {1.0, 1e5, 1e8}) {
+        const Scene scene = testing::sceneFromJson(
+            R"("air": {"n": 1}, "water": {"n": 1.3337})",
+            R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.005, "medium": "water"})",
+            R"({"type": "beam", "origin": [0, 0, )" + std::to_string(-distance) + R"(], "direction": [0, 0, 1], "radius": 0.01})");
+        TraceSettings settings;
+        settings.photons = 40000;
+        const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
+        EXPECT_EQ(result.tally.lost, 0U) << distance;
+        EXPECT_NEAR(testing::fraction(result.tally.unscattered, result.tally), 0.75,
+                    testing::monteCarloTolerance(0.75, 4e4))
+            << distance;
+    }
+}
+
+TEST(PhotonTracer, AbsorptionOnTheWayFromADistantSourceIsStillSampled) {
+    // An absorbing ambient, a source 10 mm before the scene: exp(-sigma * 10) of the photons arrive.
+    const Scene scene = testing::sceneFromJson(R"("air": {"n": 1, "sigma": 0.1}, "water": {"n": 1})",
+                                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
+                                               R"({"type": "ray", "origin": [0, 0, -11], "direction": [0, 0, 1]})");
+    TraceSettings settings;
+    settings.photons = 40000;
+    settings.paths = 2000;
+    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
+    EXPECT_EQ(result.tally.absorbed, result.tally.photons);  // the ambient goes on for ever
+    int beforeTheDrop = 0;
+    for (const PhotonPath& path : result.paths) beforeTheDrop += path.events.back().position.z() < -1.0;
+    const double expected = 1.0 - std::exp(-0.1 * 10.0);
+    EXPECT_NEAR(beforeTheDrop / 2000.0, expected, testing::monteCarloTolerance(expected, 2000));
+}
+
+}  // namespace
+}  // namespace dropscope
