@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace dropscope {
@@ -88,7 +89,7 @@ TEST_P(SlabAtNormalIncidence, RayTreeReproducesTheClosedFormToRounding) {
     }
     const SlabExpectation expected = closedForm(sigma);
     constexpr double kSeriesRounding = 1e-14;  // a few ulps per term of a geometric series of ~40 terms
-    EXPECT_LT(truncated, 1e-29);
+    EXPECT_LT(truncated, 10 * settings.minWeight);  // only the last few branches of the series are cut
     EXPECT_NEAR(forward, expected.transmitted, kSeriesRounding);
     EXPECT_NEAR(backward, expected.reflected, kSeriesRounding);
     EXPECT_NEAR(tree.absorbed, expected.absorbed, kSeriesRounding);
@@ -110,7 +111,7 @@ TEST(BeerLambert, AnIndexMatchedSlabTransmitsExactlyExpMinusSigmaD) {
     EXPECT_NEAR(fraction(result.tally.escaped, result.tally), expected, monteCarloTolerance(expected, 1e5));
 
     const RayTree tree = traceRayTree(optical, {scene.sources[0].origin, scene.sources[0].direction}, 1.0, {});
-    EXPECT_NEAR(tree.absorbed, 1.0 - expected, 1e-15);
+    EXPECT_NEAR(tree.absorbed, 1.0 - expected, 4 * std::numeric_limits<double>::epsilon());  // one exp, one subtraction
 }
 
 TEST(BeerLambert, AbsorptionDistancesInAnAbsorbingAmbientAreExponential) {
