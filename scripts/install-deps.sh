@@ -7,6 +7,7 @@ packages=(
   cmake g++ make pkg-config
   libeigen3-dev libboost-math-dev nlohmann-json3-dev libcli11-dev librandom123-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libosmesa6-dev libglm-dev libstb-dev
   libembree-dev libtbb-dev
 )
 

@@ -16,4 +16,5 @@ echo "== Sanitizer build and tests (build-asan/: ASan + UBSan)"
 scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
   -DDROPSCOPE_SANITIZE=ON -DDROPSCOPE_BUILD_TESTS=ON -DDROPSCOPE_BUILD_BENCH=OFF
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  LSAN_OPTIONS=suppressions="$root/scripts/lsan.supp" \
   ctest --test-dir build-asan --output-on-failure --parallel "$jobs"

@@ -4,6 +4,7 @@
 #include "cli/InspectCommand.hpp"
 #include "cli/QueryCommand.hpp"
 #include "cli/RayCsv.hpp"
+#include "cli/SnapshotCommand.hpp"
 #include "cli/TraceCommand.hpp"
 #include "scene/SceneLoader.hpp"
 
@@ -54,6 +55,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         const CLI::App* query = addQueryCommand(app, queryOptions);
         TraceOptions traceOptions;
         const CLI::App* trace = addTraceCommand(app, traceOptions);
+        SnapshotCommandOptions snapshotOptions;
+        const CLI::App* snapshot = addSnapshotCommand(app, snapshotOptions);
         if (const auto message = unknownCommand(app, argc, argv)) return reportUsageError(*message, err);
         try {
             app.parse(argc, argv);
@@ -66,6 +69,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         if (inspect->parsed()) return runInspect(inspectOptions, out, err);
         if (query->parsed()) return runQuery(queryOptions, out, err);
         if (trace->parsed()) return runTraceCommand(traceOptions, out, err);
+        if (snapshot->parsed()) return runSnapshotCommand(snapshotOptions, out, err);
         // No subcommand: a later version opens the GUI here.
         out << app.help();
         err << "dropscope: no command given (see the commands above)\n";

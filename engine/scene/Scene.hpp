@@ -2,6 +2,7 @@
 
 #include "geometry/Shape.hpp"
 #include "scene/Medium.hpp"
+#include "scene/SceneView.hpp"
 #include "scene/Source.hpp"
 #include "tree/OctreeTypes.hpp"
 
@@ -27,6 +28,7 @@ struct Scene {
     std::size_t explicitShapeCount = 0;   // shapes[0, explicitShapeCount) come from "shapes"
     std::vector<Source> sources;
     OctreeSettings octree;       // scene key "octree"
+    std::optional<SceneView> view;  // scene key "view": the renderer's starting camera
 
     const Medium& mediumOf(const Shape& shape) const { return media.at(shape.mediumId()); }
     std::optional<MediumId> findMedium(const std::string& name) const;

@@ -107,6 +107,24 @@ void readOctreeSettings(const JsonReader& json, Scene& scene) {
     }
 }
 
+// {"eye": [..], "target": [..], "up": [..] (optional), "fov_deg": (optional, 0 < f < 180)}.
+void readView(const JsonReader& json, Scene& scene) {
+    json.expectKeys({"eye", "target", "up", "fov_deg"});
+    SceneView view;
+    view.eye = json.member("eye").vector3();
+    view.target = json.member("target").vector3();
+    if ((view.eye - view.target).norm() == 0.0) json.member("target").fail("must differ from eye");
+    if (const auto up = json.optionalMember("up")) {
+        view.up = up->direction();
+        if ((view.target - view.eye).cross(view.up.vector()).norm() == 0.0) up->fail("must not be parallel to target - eye");
+    }
+    if (const auto fov = json.optionalMember("fov_deg")) {
+        view.fovDeg = fov->positive();
+        if (view.fovDeg >= 180.0) fov->fail("must be < 180, got " + std::to_string(view.fovDeg));
+    }
+    scene.view = view;
+}
+
 }  // namespace
 
 Scene parseScene(std::string_view jsonText, const std::string& origin) {
@@ -116,7 +134,7 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     scene.origin = origin;
     readFormatVersion(root, scene);
     root.expectKeys(
-        {"dropscope", "unit", "wavelength_nm", "ambient", "media", "shapes", "sources", "octree", "generators"});
+        {"dropscope", "unit", "wavelength_nm", "ambient", "media", "shapes", "sources", "octree", "generators", "view"});
     readUnit(root, scene);
     if (const auto wavelength = root.optionalMember("wavelength_nm")) scene.wavelengthNm = wavelength->positive();
     if (const auto media = root.optionalMember("media")) {
@@ -128,6 +146,7 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
         for (const JsonReader& json : sources->elements()) scene.sources.push_back(readSource(json));
     }
     if (const auto octree = root.optionalMember("octree")) readOctreeSettings(*octree, scene);
+    if (const auto view = root.optionalMember("view")) readView(*view, scene);
     // Only the explicit shapes need the pairwise check; generated droplets avoid everything by construction.
     checkShapesDisjoint(scene);
     scene.explicitShapeCount = scene.shapes.size();

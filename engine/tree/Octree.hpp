@@ -60,6 +60,10 @@ public:
     std::unique_ptr<Shape> remove(ShapeId id);
 
     std::vector<LevelStatistics> statistics() const;
+    // Calls visit(bounds, level, isLeaf, shapesStored) for every cell, depth first from the root, for
+    // drawing; descends into a cell's children only when visit returns true.
+    template <class Visit>
+    void visitCells(Visit&& visit) const;
     std::size_t bytesUsed() const;
 
     // The seed's node model: a BoundingBox per cell holding at most 8 children. For tests and the
@@ -127,6 +131,13 @@ template <class F>
 void Octree::forEachShapeIn(const Cell& cell, F&& f) const {
     for (std::uint32_t k = 0; k < cell.sphereCount; ++k) f(spheres_[cell.firstSphere + k].id);
     for (std::uint32_t k = 0; k < cell.otherCount; ++k) f(others_[cell.firstOther + k]);
+}
+
+template <class Visit>
+void Octree::visitCells(Visit&& visit) const {
+    forEachNode([&](std::uint32_t, const Cell& cell, const CellBounds& bounds, int level) {
+        return visit(bounds, level, cell.isLeaf(), cell.size());
+    });
 }
 
 template <class F>

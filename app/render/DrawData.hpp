@@ -1,0 +1,69 @@
+#pragma once
+
+#include "geometry/Shape.hpp"
+#include "render/Colour.hpp"
+#include "tree/RayHit.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace dropscope::render {
+
+// Positions go to the GPU in float, relative to an anchor near the scene (its centre), so a scene far
+// from the origin keeps its detail.
+struct Anchor {
+    Point origin = Point::Zero();
+    std::array<float, 3> relative(const Point& p) const {
+        const Point r = p - origin;
+        return {static_cast<float>(r.x()), static_cast<float>(r.y()), static_cast<float>(r.z())};
+    }
+};
+
+// One shape as the shaders see it: x = center + linear * u for u on the unit sphere (spheres,
+// ellipsoids) or in the cube [-1, 1]^3 (boxes). Matrices column-major, as GLSL reads a mat3.
+struct ShapeInstance {
+    std::array<float, 3> center;
+    std::array<float, 9> linear;
+    std::array<float, 9> inverseLinear;
+    Colour colour;
+};
+
+struct ShapeInstances {
+    std::vector<ShapeInstance> rounded;  // spheres and ellipsoids (impostor.vert/.frag)
+    std::vector<ShapeId> roundedIds;
+    std::vector<ShapeInstance> boxes;    // box.vert/.frag
+    std::vector<ShapeId> boxIds;
+};
+
+// Null slots are skipped; `selected` is drawn in the highlight colour.
+ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& shapes, const Anchor& anchor,
+                                   ShapeId selected = RayHit::kNone);
+
+inline constexpr Colour kHighlight{1.0f, 0.85f, 0.1f, 1.0f};
+
+struct LineVertex {
+    std::array<float, 3> position;
+    Colour colour;
+};
+
+// Coloured segments for line.vert/.frag (GL_LINES: two vertices a segment).
+class LineBatch {
+public:
+    explicit LineBatch(const Anchor& anchor) : anchor_(anchor) {}
+    void add(const Point& a, const Point& b, const Colour& colour) { add(a, b, colour, colour); }
+    void add(const Point& a, const Point& b, const Colour& colourA, const Colour& colourB) {
+        vertices_.push_back({anchor_.relative(a), colourA});
+        vertices_.push_back({anchor_.relative(b), colourB});
+    }
+    // The 12 edges of an axis-aligned box.
+    void addBox(const Eigen::AlignedBox3d& box, const Colour& colour);
+    const std::vector<LineVertex>& vertices() const { return vertices_; }
+    bool empty() const { return vertices_.empty(); }
+
+private:
+    Anchor anchor_;
+    std::vector<LineVertex> vertices_;
+};
+
+}  // namespace dropscope::render

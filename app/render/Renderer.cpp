@@ -1,0 +1,172 @@
+#include "render/Renderer.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstddef>
+
+namespace dropscope::render {
+
+namespace {
+
+// The unit cube [-1, 1]^3 as 12 triangles with outward face normals: position, normal.
+std::vector<float> cubeTriangles() {
+    std::vector<float> out;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int side = -1; side <= 1; side += 2) {
+            const int u = (axis + 1) % 3;
+            const int v = (axis + 2) % 3;
+            const float corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+            for (int k : {0, 1, 2, 0, 2, 3}) {
+                float p[3];
+                p[axis] = static_cast<float>(side);
+                p[u] = corners[k][0];
+                p[v] = corners[k][1];
+                float n[3] = {0, 0, 0};
+                n[axis] = static_cast<float>(side);
+                out.insert(out.end(), {p[0], p[1], p[2], n[0], n[1], n[2]});
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+// A vertex array with a static mesh (optional) and a per-instance or per-vertex buffer.
+struct Renderer::Mesh {
+    const GlFunctions& gl;
+    GLuint vertexArray = 0;
+    GLuint meshBuffer = 0;
+    GLuint dataBuffer = 0;
+    GLsizei meshVertices = 0;
+    GLsizei count = 0;  // instances, or vertices for lines
+
+    explicit Mesh(const GlFunctions& functions) : gl(functions) {
+        gl.GenVertexArrays(1, &vertexArray);
+        gl.GenBuffers(1, &meshBuffer);
+        gl.GenBuffers(1, &dataBuffer);
+    }
+    ~Mesh() {
+        gl.DeleteBuffers(1, &dataBuffer);
+        gl.DeleteBuffers(1, &meshBuffer);
+        gl.DeleteVertexArrays(1, &vertexArray);
+    }
+    Mesh(const Mesh&) = delete;
+    Mesh& operator=(const Mesh&) = delete;
+
+    void attribute(GLuint location, GLint size, GLsizei stride, std::size_t offset, GLuint divisor) const {
+        gl.EnableVertexAttribArray(location);
+        gl.VertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
+        gl.VertexAttribDivisor(location, divisor);
+    }
+
+    // The cube mesh in locations 0 (position) and 1 (normal), ShapeInstance in 2..9 (one per instance).
+    void makeInstancedCube() {
+        const std::vector<float> cube = cubeTriangles();
+        meshVertices = static_cast<GLsizei>(cube.size() / 6);
+        gl.BindVertexArray(vertexArray);
+        gl.BindBuffer(GL_ARRAY_BUFFER, meshBuffer);
+        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cube.size() * sizeof(float)), cube.data(), GL_STATIC_DRAW);
+        attribute(0, 3, 6 * sizeof(float), 0, 0);
+        attribute(1, 3, 6 * sizeof(float), 3 * sizeof(float), 0);
+        gl.BindBuffer(GL_ARRAY_BUFFER, dataBuffer);
+        constexpr auto stride = static_cast<GLsizei>(sizeof(ShapeInstance));
+        attribute(2, 3, stride, offsetof(ShapeInstance, center), 1);
+        for (GLuint column = 0; column < 3; ++column) {
+            attribute(3 + column, 3, stride, offsetof(ShapeInstance, linear) + column * 3 * sizeof(float), 1);
+            attribute(6 + column, 3, stride, offsetof(ShapeInstance, inverseLinear) + column * 3 * sizeof(float), 1);
+        }
+        attribute(9, 4, stride, offsetof(ShapeInstance, colour), 1);
+        gl.BindVertexArray(0);
+    }
+
+    void makeLines() {
+        gl.BindVertexArray(vertexArray);
+        gl.BindBuffer(GL_ARRAY_BUFFER, dataBuffer);
+        constexpr auto stride = static_cast<GLsizei>(sizeof(LineVertex));
+        attribute(0, 3, stride, offsetof(LineVertex, position), 0);
+        attribute(1, 4, stride, offsetof(LineVertex, colour), 0);
+        gl.BindVertexArray(0);
+    }
+
+    template <class T>
+    void upload(const std::vector<T>& data) {
+        gl.BindBuffer(GL_ARRAY_BUFFER, dataBuffer);
+        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(T)), data.data(), GL_STATIC_DRAW);
+        count = static_cast<GLsizei>(data.size());
+    }
+};
+
+Renderer::Renderer(const GlFunctions& gl)
+    : gl_(gl), impostor_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag")),
+      box_(std::make_unique<ShaderProgram>(gl, "box.vert", "box.frag")),
+      line_(std::make_unique<ShaderProgram>(gl, "line.vert", "line.frag")), rounded_(std::make_unique<Mesh>(gl)),
+      boxes_(std::make_unique<Mesh>(gl)), markers_(std::make_unique<Mesh>(gl)), lines_(std::make_unique<Mesh>(gl)) {
+    rounded_->makeInstancedCube();
+    boxes_->makeInstancedCube();
+    markers_->makeInstancedCube();
+    lines_->makeLines();
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::setShapes(const ShapeInstances& instances) {
+    rounded_->upload(instances.rounded);
+    boxes_->upload(instances.boxes);
+}
+
+void Renderer::setLines(const LineBatch& lines) { lines_->upload(lines.vertices()); }
+
+void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) { markers_->upload(markers); }
+
+void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const glm::mat4& viewProjection,
+                          const glm::vec3& eye, float opacity) {
+    if (mesh.count == 0) return;
+    program.use();
+    gl_.UniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+    gl_.Uniform3fv(program.uniform("eye"), 1, glm::value_ptr(eye));
+    gl_.Uniform1f(program.uniform("opacity"), opacity);
+    gl_.BindVertexArray(mesh.vertexArray);
+    gl_.DrawArraysInstanced(GL_TRIANGLES, 0, mesh.meshVertices, mesh.count);
+}
+
+void Renderer::draw(const Camera& camera, const RenderOptions& options, int width, int height) {
+    Camera local = camera;  // the same camera, in anchor-relative coordinates
+    const glm::dvec3 origin(anchor_.origin.x(), anchor_.origin.y(), anchor_.origin.z());
+    local.eye -= origin;
+    local.target -= origin;
+    const double aspect = static_cast<double>(width) / static_cast<double>(height);
+    const glm::mat4 viewProjection = local.projectionMatrix(aspect) * local.viewMatrix();
+    const glm::vec3 eye(local.eye);
+
+    gl_.Viewport(0, 0, width, height);
+    gl_.ClearColor(options.background[0], options.background[1], options.background[2], options.background[3]);
+    gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl_.Enable(GL_DEPTH_TEST);
+    gl_.DepthFunc(GL_LESS);
+    gl_.Disable(GL_BLEND);
+    gl_.DepthMask(GL_TRUE);
+
+    drawShapes(*markers_, *impostor_, viewProjection, eye, 1.0f);
+    const bool boxesBlended = options.translucent || options.translucentBoxes;
+    if (options.shapes && !options.translucent) drawShapes(*rounded_, *impostor_, viewProjection, eye, 1.0f);
+    if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, viewProjection, eye, 1.0f);
+    if (options.lines && lines_->count > 0) {
+        line_->use();
+        gl_.UniformMatrix4fv(line_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+        gl_.BindVertexArray(lines_->vertexArray);
+        gl_.DrawArrays(GL_LINES, 0, lines_->count);
+    }
+    if (options.shapes && boxesBlended) {
+        gl_.Enable(GL_BLEND);
+        gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        gl_.DepthMask(GL_FALSE);
+        drawShapes(*boxes_, *box_, viewProjection, eye, options.opacity);
+        if (options.translucent) drawShapes(*rounded_, *impostor_, viewProjection, eye, options.opacity);
+        gl_.DepthMask(GL_TRUE);
+        gl_.Disable(GL_BLEND);
+    }
+    gl_.BindVertexArray(0);
+}
+
+}  // namespace dropscope::render

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "render/Camera.hpp"
+#include "render/DrawData.hpp"
+#include "render/GlFunctions.hpp"
+#include "render/ShaderProgram.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace dropscope::render {
+
+// What to draw; every layer can be switched off.
+struct RenderOptions {
+    bool shapes = true;
+    bool translucent = false;      // every shape blended at `opacity`, drawn after everything opaque
+    bool translucentBoxes = true;  // boxes blended: usually cells around the droplets
+    float opacity = 0.35f;
+    bool lines = true;         // the line layers handed to setLines (octree, paths, glyphs, axes, grid)
+    Colour background{0.08f, 0.09f, 0.11f, 1.0f};
+};
+
+// Draws a scene with OpenGL 3.3 core through a GlFunctions table; the same code for the GUI's window and
+// the headless snapshot. Shapes are instanced (two draw calls for any number of shapes); every line
+// layer is one draw call.
+class Renderer {
+public:
+    explicit Renderer(const GlFunctions& gl);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    void setAnchor(const Anchor& anchor) { anchor_ = anchor; }
+    const Anchor& anchor() const { return anchor_; }
+    void setShapes(const ShapeInstances& instances);
+    void setLines(const LineBatch& lines);
+    // Small spheres (event markers): instances of the impostor, drawn with the shapes, always opaque.
+    void setMarkers(const std::vector<ShapeInstance>& markers);
+
+    void draw(const Camera& camera, const RenderOptions& options, int width, int height);
+
+private:
+    struct Mesh;
+    void drawShapes(const Mesh& mesh, const ShaderProgram& program, const glm::mat4& viewProjection,
+                    const glm::vec3& eye, float opacity);
+
+    const GlFunctions& gl_;
+    Anchor anchor_;
+    std::unique_ptr<ShaderProgram> impostor_;
+    std::unique_ptr<ShaderProgram> box_;
+    std::unique_ptr<ShaderProgram> line_;
+    std::unique_ptr<Mesh> rounded_;
+    std::unique_ptr<Mesh> boxes_;
+    std::unique_ptr<Mesh> markers_;
+    std::unique_ptr<Mesh> lines_;
+};
+
+}  // namespace dropscope::render

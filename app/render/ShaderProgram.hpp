@@ -1,0 +1,30 @@
+#pragma once
+
+#include "render/GlFunctions.hpp"
+
+#include <string>
+#include <string_view>
+
+namespace dropscope::render {
+
+// A linked vertex + fragment program from two files of shaders/. A compile or link error throws
+// RenderError with the file name(s) and the driver's log.
+class ShaderProgram {
+public:
+    ShaderProgram(const GlFunctions& gl, std::string_view vertexFile, std::string_view fragmentFile);
+    ~ShaderProgram();
+    ShaderProgram(const ShaderProgram&) = delete;
+    ShaderProgram& operator=(const ShaderProgram&) = delete;
+
+    void use() const { gl_.UseProgram(program_); }
+    GLint uniform(const char* name) const { return gl_.GetUniformLocation(program_, name); }
+
+    // The compile step alone, exposed for tests of the error message.
+    static GLuint compile(const GlFunctions& gl, GLenum stage, std::string_view file, std::string_view source);
+
+private:
+    const GlFunctions& gl_;
+    GLuint program_ = 0;
+};
+
+}  // namespace dropscope::render

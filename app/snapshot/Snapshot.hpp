@@ -1,0 +1,26 @@
+#pragma once
+
+#include "scene/Scene.hpp"
+#include "snapshot/Image.hpp"
+
+#include <cstdint>
+#include <optional>
+
+namespace dropscope::snapshot {
+
+struct SnapshotOptions {
+    int width = 800;
+    int height = 600;
+    std::optional<Point> eye;        // default: the scene's "view", else a three-quarter view fitted to it
+    std::optional<Point> target;     // default: the view's target, else the scene's centre
+    std::optional<double> fovDeg;    // default: the view's, else 40
+    std::optional<int> octreeLevel;  // draw the octree's cells at this level
+    std::uint64_t paths = 0;         // draw the paths of the first K traced photons
+    std::uint64_t photons = 0;       // photons to trace (at least `paths`)
+    std::uint64_t seed = 1;
+};
+
+// Renders the scene headless (OSMesa) into an image: the same pixels for the same arguments.
+Image renderSnapshot(const Scene& scene, const SnapshotOptions& options);
+
+}  // namespace dropscope::snapshot
