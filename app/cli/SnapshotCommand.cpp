@@ -32,6 +32,74 @@ Point parsePoint(const std::string& option, const std::string& text) {
     return p;
 }
 
+// The layer switches beyond the options (docs/rendering.md).
+void addLayerOptions(CLI::App& command, SnapshotCommandOptions& options) {
+    render::LayerOptions& layers = options.render.layers;
+    command.add_option("--octree-filter", options.octreeFilter,
+                       "Octree cells drawn: only level L, levels <= L (both with --octree-level), or the leaves")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"level", "upto", "leaves"}));
+    command.add_option("--octree-colour", options.octreeColour, "Octree cells coloured by level or by occupancy (heat)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"level", "occupancy"}));
+    command.add_option("--colour-by", options.colourBy, "Paths coloured by weight (viridis) or by event type")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"weight", "event"}));
+    command.add_flag("--markers", layers.markers, "Mark the events of the paths and the ray tree");
+    command.add_flag("--ray-tree", layers.rayTree, "Draw the ray tree of the first source's central ray");
+    command.add_flag("--traversal", layers.traversal, "Draw the octree cells the first source's central ray visits");
+    command.add_flag("--sources", layers.sources, "Draw the sources as glyphs");
+    command.add_flag("--axes", layers.axes, "Draw the coordinate axes");
+    command.add_flag("--grid", layers.grid, "Draw a ground grid under the scene");
+    command.add_flag("--no-shapes", options.noShapes, "Leave the shapes out");
+    command.add_flag("--translucent", layers.render.translucent, "Draw every shape translucent");
+    command.add_option("--select", options.select, "Highlight the shape with this id")
+        ->check(CLI::Range(std::int64_t{0}, std::int64_t{RayHit::kNone} - 1));
+}
+
+// The layer switches whose meaning depends on other options, checked once all are parsed.
+void applyLayerOptions(SnapshotCommandOptions& options) {
+    render::LayerOptions& layers = options.render.layers;
+    const bool leaves = options.octreeFilter == "leaves";
+    if (leaves && options.octreeLevel >= 0) {
+        throw BadInputError("--octree-filter leaves: takes no --octree-level (the leaves are at every level)");
+    }
+    if (!leaves && options.octreeFilter != "level" && options.octreeLevel < 0) {
+        throw BadInputError("--octree-filter " + options.octreeFilter + ": needs --octree-level L");
+    }
+    if (options.octreeColour != "level" && !leaves && options.octreeLevel < 0) {
+        throw BadInputError("--octree-colour " + options.octreeColour +
+                            ": needs --octree-level L or --octree-filter leaves");
+    }
+    using Mode = render::OctreeFilter::Mode;
+    layers.octree = leaves;  // --octree-level switches it on too (SnapshotOptions::octreeLevel)
+    layers.octreeFilter.mode = leaves                            ? Mode::LeavesOnly
+                               : options.octreeFilter == "upto" ? Mode::UpToLevel
+                                                                : Mode::OnlyLevel;
+    layers.octreeFilter.occupancyColour = options.octreeColour == "occupancy";
+    layers.pathColouring = options.colourBy == "event" ? render::PathColouring::Event : render::PathColouring::Weight;
+    layers.render.shapes = !options.noShapes;
+}
+
+// What the scene must have for the switches given.
+void checkAgainstScene(const SnapshotCommandOptions& options, const Scene& scene) {
+    const snapshot::SnapshotOptions& render = options.render;
+    const auto needSources = [&](const char* option) {
+        if (scene.sources.empty()) {
+            throw SceneError(scene.origin, "sources",
+                             std::string(option) + " needs a light source, and the scene has none");
+        }
+    };
+    if (render.paths > 0) needSources("--paths");
+    if (render.layers.rayTree) needSources("--ray-tree");
+    if (render.layers.traversal) needSources("--traversal");
+    if (options.select >= 0 && static_cast<std::uint64_t>(options.select) >= scene.shapes.size()) {
+        throw SceneError(scene.origin, "shapes",
+                         "--select " + std::to_string(options.select) + ": no such shape (the scene has " +
+                             std::to_string(scene.shapes.size()) + ", ids from 0)");
+    }
+}
+
 }  // namespace
 
 CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options) {
@@ -54,6 +122,7 @@ CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options) {
         ->check(CLI::Range(std::uint64_t{0}, kMaxDrawnPaths));
     command->add_option("--photons", options.render.photons, "Photons to trace (default and minimum: K)");
     command->add_option("--seed", options.render.seed, "Seed of the traced photons")->capture_default_str();
+    addLayerOptions(*command, options);
     return command;
 }
 
@@ -65,10 +134,10 @@ int runSnapshotCommand(SnapshotCommandOptions options, std::ostream& out, std::o
     if (options.render.eye && options.render.target && (*options.render.eye - *options.render.target).norm() == 0.0) {
         throw BadInputError("--eye and --target must differ");
     }
+    applyLayerOptions(options);
     const Scene scene = loadScene(options.scenePath);
-    if (options.render.paths > 0 && scene.sources.empty()) {
-        throw SceneError(scene.origin, "sources", "--paths needs a light source, and the scene has none");
-    }
+    checkAgainstScene(options, scene);
+    if (options.select >= 0) options.render.layers.selected = static_cast<ShapeId>(options.select);
     snapshot::Image image;
     try {
         image = snapshot::renderSnapshot(scene, options.render);

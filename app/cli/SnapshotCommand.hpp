@@ -2,6 +2,7 @@
 
 #include "snapshot/Snapshot.hpp"
 
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 
@@ -18,11 +19,19 @@ struct SnapshotCommandOptions {
     std::string target;  // "x,y,z", empty: not given
     double fovDeg = 0.0;  // 0: not given
     int octreeLevel = -1;  // -1: not given
+    std::string octreeFilter = "level";  // level | upto | leaves
+    std::string octreeColour = "level";  // level | occupancy
+    std::string colourBy = "weight";     // weight | event (paths)
+    bool noShapes = false;
+    std::int64_t select = -1;  // -1: not given
     snapshot::SnapshotOptions render;
 };
 
 // Registers `dropscope snapshot SCENE --out PNG [--width W] [--height H] [--eye x,y,z] [--target x,y,z]
-// [--fov-deg F] [--octree-level L] [--paths K] [--photons N] [--seed S]`.
+// [--fov-deg F] [--octree-level L] [--paths K] [--photons N] [--seed S]` and the layer switches
+// (docs/rendering.md): [--octree-filter level|upto|leaves] [--octree-colour level|occupancy]
+// [--colour-by weight|event] [--markers] [--ray-tree] [--traversal] [--sources] [--axes] [--grid]
+// [--no-shapes] [--translucent] [--select ID].
 CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options);
 
 // Renders the scene headless (OSMesa) and writes the PNG whole or not at all.

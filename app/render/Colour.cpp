@@ -53,4 +53,23 @@ Colour viridis(double t) {
     return c;
 }
 
+Colour logWeightColour(double weight, double decades) {
+    if (!(weight > 0.0)) return viridis(0.0);
+    return viridis(1.0 + std::log10(weight) / decades);
+}
+
+Colour eventColour(EventType type) {
+    switch (type) {
+    case EventType::Emit: return {1.00f, 1.00f, 1.00f, 1.0f};       // white
+    case EventType::Reflect: return {1.00f, 0.55f, 0.10f, 1.0f};    // orange
+    case EventType::Refract: return {0.20f, 0.75f, 1.00f, 1.0f};    // sky blue
+    case EventType::Tir: return {0.85f, 0.30f, 1.00f, 1.0f};        // violet
+    case EventType::Absorb: return {0.90f, 0.15f, 0.15f, 1.0f};     // red
+    case EventType::Escape: return {0.35f, 0.90f, 0.35f, 1.0f};     // green
+    case EventType::Lost: return {1.00f, 0.20f, 0.75f, 1.0f};       // pink
+    case EventType::Truncated: return {0.55f, 0.55f, 0.55f, 1.0f};  // grey
+    }
+    return {1.0f, 1.0f, 1.0f, 1.0f};
+}
+
 }  // namespace dropscope::render

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "transport/Event.hpp"
+
 #include <array>
 #include <cstddef>
 
@@ -13,5 +15,10 @@ Colour mediumColour(std::size_t index);
 Colour levelColour(int level);
 // Viridis (the perceptual colour map of matplotlib) at t in [0, 1]; t outside is clamped.
 Colour viridis(double t);
+// Viridis on a log scale of `weight`: 10^-decades (and below) at the bottom of the map, 1 at the top; for
+// ray-tree branches, whose weights span many decades.
+Colour logWeightColour(double weight, double decades = 6.0);
+// The colour of an event type (markers, paths coloured by event): a small fixed palette.
+Colour eventColour(EventType type);
 
 }  // namespace dropscope::render

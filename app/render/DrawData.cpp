@@ -22,6 +22,10 @@ ShapeInstance instance(const Point& center, const Eigen::Matrix3d& linear, const
 
 }  // namespace
 
+ShapeInstance sphereInstance(const Point& centre, double radius, const Anchor& anchor, const Colour& colour) {
+    return instance(centre, radius * Eigen::Matrix3d::Identity(), anchor, colour);
+}
+
 ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& shapes, const Anchor& anchor,
                                    ShapeId selected) {
     ShapeInstances out;
@@ -32,7 +36,7 @@ ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& sh
         switch (shape->kind()) {
         case ShapeKind::Sphere: {
             const auto& sphere = static_cast<const Sphere&>(*shape);
-            out.rounded.push_back(instance(sphere.center(), sphere.radius() * Eigen::Matrix3d::Identity(), anchor, colour));
+            out.rounded.push_back(sphereInstance(sphere.center(), sphere.radius(), anchor, colour));
             out.roundedIds.push_back(id);
             break;
         }

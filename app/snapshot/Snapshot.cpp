@@ -1,9 +1,9 @@
 #include "snapshot/Snapshot.hpp"
 
-#include "render/Layers.hpp"
 #include "render/Renderer.hpp"
 #include "snapshot/OsmesaContext.hpp"
 #include "transport/OpticalScene.hpp"
+#include "transport/RayTree.hpp"
 #include "transport/TraceRun.hpp"
 
 #include <algorithm>
@@ -11,15 +11,6 @@
 namespace dropscope::snapshot {
 
 namespace {
-
-Eigen::AlignedBox3d sceneBounds(const Octree& octree) {
-    Eigen::AlignedBox3d bounds;
-    for (const auto& shape : octree.shapes()) {
-        if (shape) bounds.extend(shape->bounds());
-    }
-    if (bounds.isEmpty()) bounds = Eigen::AlignedBox3d(Point::Constant(-1.0), Point::Constant(1.0));
-    return bounds;
-}
 
 render::Camera snapshotCamera(const Scene& scene, const SnapshotOptions& options, const Eigen::AlignedBox3d& bounds) {
     const double aspect = static_cast<double>(options.width) / static_cast<double>(options.height);
@@ -32,37 +23,66 @@ render::Camera snapshotCamera(const Scene& scene, const SnapshotOptions& options
     if (options.eye && !options.target && !scene.view) {
         camera.target = {bounds.center().x(), bounds.center().y(), bounds.center().z()};
     }
-    camera.clipTo(bounds);
     return camera;
+}
+
+// The data of the layers that need a trace, computed only when they are drawn.
+struct TracedData {
+    std::optional<TraceResult> traced;
+    std::optional<RayTree> rayTree;
+    std::optional<render::RayTraversal> traversal;
+};
+
+TracedData traceData(const Scene& scene, const OpticalScene& optical, const SnapshotOptions& options,
+                     const render::LayerOptions& layers) {
+    TracedData data;
+    if (scene.sources.empty()) return data;
+    if (options.paths > 0 && layers.paths) {
+        TraceSettings settings;
+        settings.photons = std::max(options.photons, options.paths);
+        settings.paths = options.paths;
+        settings.seed = options.seed;
+        data.traced = runTrace(optical, scene.sources, settings);
+    }
+    const Source& first = scene.sources.front();
+    const Ray central{first.origin, first.direction};
+    if (layers.rayTree) data.rayTree = traceRayTree(optical, central, 1.0, RayTreeSettings{});
+    if (layers.traversal) data.traversal = render::traceTraversal(optical.octree(), central);
+    return data;
 }
 
 }  // namespace
 
 Image renderSnapshot(const Scene& scene, const SnapshotOptions& options) {
     const OpticalScene optical(scene);
-    const Eigen::AlignedBox3d bounds = sceneBounds(optical.octree());
+    const Eigen::AlignedBox3d bounds = render::sceneBounds(optical.octree().shapes());
     const render::Anchor anchor{bounds.center()};
+    render::Camera camera = snapshotCamera(scene, options, bounds);
+
+    render::LayerOptions layers = options.layers;
+    if (options.octreeLevel) {
+        layers.octree = true;
+        layers.octreeFilter.level = *options.octreeLevel;
+    }
+    const TracedData data = traceData(scene, optical, options, layers);
+    render::LayerInputs inputs{optical.octree(), scene.sources, bounds,
+                               Eigen::Vector3d(camera.up.x, camera.up.y, camera.up.z)};
+    if (data.traced) inputs.paths = &data.traced->paths;
+    if (data.rayTree) inputs.rayTree = &*data.rayTree;
+    if (data.traversal) inputs.traversal = &*data.traversal;
+
+    // The near and far planes: around the shapes, and the sources when a layer starts at them.
+    Eigen::AlignedBox3d clipBox = bounds;
+    if (layers.sources || layers.rayTree || layers.traversal) {
+        for (const Source& source : scene.sources) clipBox.extend(source.origin);
+    }
+    camera.clipTo(clipBox);
 
     OsmesaContext context(options.width, options.height);
     render::Renderer renderer(context.gl());
     renderer.setAnchor(anchor);
-    renderer.setShapes(render::buildShapeInstances(optical.octree().shapes(), anchor));
-
-    render::LineBatch lines(anchor);
-    if (options.octreeLevel) {
-        render::addOctreeCells(lines, optical.octree(), {render::OctreeFilter::Mode::OnlyLevel, *options.octreeLevel});
-    }
-    if (options.paths > 0 && !scene.sources.empty()) {
-        TraceSettings settings;
-        settings.photons = std::max(options.photons, options.paths);
-        settings.paths = options.paths;
-        settings.seed = options.seed;
-        const TraceResult traced = runTrace(optical, scene.sources, settings);
-        render::addPhotonPaths(lines, traced.paths, 0.5 * bounds.diagonal().norm());
-    }
-    renderer.setLines(lines);
-
-    renderer.draw(snapshotCamera(scene, options, bounds), render::RenderOptions{}, options.width, options.height);
+    render::uploadScene(renderer, optical.octree().shapes(), render::buildSceneLayers(inputs, layers, anchor), layers);
+    renderer.draw(camera, layers.render, options.width, options.height);
     return context.read();
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render/SceneLayers.hpp"
 #include "scene/Scene.hpp"
 #include "snapshot/Image.hpp"
 
@@ -14,10 +15,13 @@ struct SnapshotOptions {
     std::optional<Point> eye;        // default: the scene's "view", else a three-quarter view fitted to it
     std::optional<Point> target;     // default: the view's target, else the scene's centre
     std::optional<double> fovDeg;    // default: the view's, else 40
-    std::optional<int> octreeLevel;  // draw the octree's cells at this level
+    std::optional<int> octreeLevel;  // draw the octree's cells, filtered at this level
     std::uint64_t paths = 0;         // draw the paths of the first K traced photons
     std::uint64_t photons = 0;       // photons to trace (at least `paths`)
     std::uint64_t seed = 1;
+    // What is drawn. `octreeLevel` switches the octree on and sets its filter's level; the traversal
+    // and the ray tree are those of the first source's central ray (its origin and direction).
+    render::LayerOptions layers;
 };
 
 // Renders the scene headless (OSMesa) into an image: the same pixels for the same arguments.

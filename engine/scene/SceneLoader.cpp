@@ -120,7 +120,7 @@ void readView(const JsonReader& json, Scene& scene) {
     }
     if (const auto fov = json.optionalMember("fov_deg")) {
         view.fovDeg = fov->positive();
-        if (view.fovDeg >= 180.0) fov->fail("must be < 180, got " + std::to_string(view.fovDeg));
+        if (view.fovDeg >= 180.0) fov->fail("must be < 180, got " + jsonpath::number(view.fovDeg));
     }
     scene.view = view;
 }

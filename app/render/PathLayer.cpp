@@ -1,0 +1,45 @@
+#include "render/PathLayer.hpp"
+
+#include "render/Colour.hpp"
+
+namespace dropscope::render {
+
+namespace {
+
+Colour segmentColour(const Event& start, PathColouring colouring) {
+    return colouring == PathColouring::Weight ? viridis(start.weight) : eventColour(start.type);
+}
+
+}  // namespace
+
+void addPhotonPaths(LineBatch& lines, const std::vector<PhotonPath>& paths, double escapeLength,
+                    PathColouring colouring) {
+    for (const PhotonPath& path : paths) {
+        if (path.events.empty()) continue;
+        for (std::size_t k = 0; k + 1 < path.events.size(); ++k) {
+            lines.add(path.events[k].position, path.events[k + 1].position, segmentColour(path.events[k], colouring));
+        }
+        const Event& last = path.events.back();
+        if (last.type == EventType::Escape) {
+            const Point end = last.position + escapeLength * last.direction.vector();
+            lines.add(last.position, end, segmentColour(last, colouring));
+        }
+    }
+}
+
+void addEventMarkers(std::vector<ShapeInstance>& markers, const std::vector<PhotonPath>& paths, double radius,
+                     const Anchor& anchor) {
+    for (const PhotonPath& path : paths) {
+        for (const Event& event : path.events) {
+            markers.push_back(sphereInstance(event.position, radius, anchor, eventColour(event.type)));
+        }
+    }
+}
+
+void addEventMarkers(std::vector<ShapeInstance>& markers, const RayTree& tree, double radius, const Anchor& anchor) {
+    for (const RayTreeNode& node : tree.nodes) {
+        markers.push_back(sphereInstance(node.event.position, radius, anchor, eventColour(node.event.type)));
+    }
+}
+
+}  // namespace dropscope::render

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "render/DrawData.hpp"
+#include "transport/RayTree.hpp"
+#include "transport/TraceRun.hpp"
+
+#include <vector>
+
+namespace dropscope::render {
+
+// How photon path segments are coloured.
+enum class PathColouring {
+    Weight,  // along viridis by the weight the segment starts with (an analog photon's is 1: the top)
+    Event,   // by the type of the event the segment starts at (eventColour): how the light got there
+};
+
+// Photon paths as polylines; an escape goes on for `escapeLength` along its direction.
+void addPhotonPaths(LineBatch& lines, const std::vector<PhotonPath>& paths, double escapeLength,
+                    PathColouring colouring = PathColouring::Weight);
+
+// One small sphere of `radius` at every event of the paths, coloured by event type (eventColour).
+void addEventMarkers(std::vector<ShapeInstance>& markers, const std::vector<PhotonPath>& paths, double radius,
+                     const Anchor& anchor);
+// The same at every node of a ray tree.
+void addEventMarkers(std::vector<ShapeInstance>& markers, const RayTree& tree, double radius, const Anchor& anchor);
+
+}  // namespace dropscope::render

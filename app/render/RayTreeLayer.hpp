@@ -1,0 +1,14 @@
+#pragma once
+
+#include "render/DrawData.hpp"
+#include "transport/RayTree.hpp"
+
+namespace dropscope::render {
+
+// The branches of a ray tree: each segment from an event to the next one along its branch, coloured by
+// the weight the branch leaves the first event with, on viridis with a log scale (logWeightColour: the
+// weights span 1 to the tree's minimum weight, 1e-6 by default). An escaping branch goes on for
+// `escapeLength`.
+void addRayTree(LineBatch& lines, const RayTree& tree, double escapeLength);
+
+}  // namespace dropscope::render

@@ -1,0 +1,67 @@
+#pragma once
+
+#include "render/DrawData.hpp"
+#include "render/OctreeLayer.hpp"
+#include "render/PathLayer.hpp"
+#include "render/Renderer.hpp"
+#include "scene/Source.hpp"
+#include "transport/RayTree.hpp"
+#include "transport/TraceRun.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace dropscope::render {
+
+// Every switch of what is drawn, in one struct the GUI holds and the snapshot fills from its options.
+struct LayerOptions {
+    RenderOptions render;              // shapes on/off, translucency, background (Renderer::draw)
+    ShapeId selected = RayHit::kNone;  // drawn in kHighlight
+    bool octree = false;
+    OctreeFilter octreeFilter{OctreeFilter::Mode::OnlyLevel, 0, false};
+    bool traversal = false;  // the cells of one ray's octree traversal
+    bool paths = true;
+    PathColouring pathColouring = PathColouring::Weight;
+    bool markers = false;    // event markers of the paths and the ray tree
+    bool rayTree = false;
+    bool sources = false;
+    bool axes = false;
+    bool grid = false;
+};
+
+// What the layers are drawn from. Paths, the ray tree and the traversal are computed by the caller
+// (the GUI on demand, the snapshot from its options); a layer whose data is absent draws nothing.
+struct LayerInputs {
+    const Octree& octree;
+    const std::vector<Source>& sources;
+    Eigen::AlignedBox3d bounds;                     // the shapes' (sceneBounds): sizes glyphs, markers, grid
+    Eigen::Vector3d up = Eigen::Vector3d::UnitY();  // the camera's: the grid lies across it
+    const std::vector<PhotonPath>* paths = nullptr;
+    const RayTree* rayTree = nullptr;
+    const RayTraversal* traversal = nullptr;
+};
+
+// Sizes of the drawn helpers, as fractions of the diagonal of the scene's bounds.
+inline constexpr double kEscapeLength = 0.5;   // escaping paths and branches go on this far
+inline constexpr double kMarkerRadius = 0.006;
+inline constexpr double kSourceGlyph = 0.15;   // a source's arrow
+inline constexpr double kAxisLength = 0.25;
+
+struct SceneLayers {
+    LineBatch lines;
+    std::vector<ShapeInstance> markers;
+};
+
+// The bounds of the shapes (null slots skipped); the cube [-1, 1]^3 for a scene with none.
+Eigen::AlignedBox3d sceneBounds(const std::vector<std::unique_ptr<Shape>>& shapes);
+
+// The line batch and the markers of every layer switched on. Where lines coincide the first one added
+// wins the depth test (GL_LESS), so they go in order of importance: traversal, ray tree, paths,
+// sources, axes, octree cells, grid.
+SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& options, const Anchor& anchor);
+
+// Hands the shapes (the selected one highlighted) and the layers to the renderer.
+void uploadScene(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& shapes, const SceneLayers& layers,
+                 const LayerOptions& options);
+
+}  // namespace dropscope::render
