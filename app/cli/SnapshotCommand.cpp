@@ -127,8 +127,8 @@ CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options) {
 }
 
 int runSnapshotCommand(SnapshotCommandOptions options, std::ostream& out, std::ostream&) {
-    if (!options.eye.empty()) options.render.eye = parsePoint("--eye", options.eye);
-    if (!options.target.empty()) options.render.target = parsePoint("--target", options.target);
+    if (options.eye) options.render.eye = parsePoint("--eye", *options.eye);
+    if (options.target) options.render.target = parsePoint("--target", *options.target);
     if (options.fovDeg > 0.0) options.render.fovDeg = options.fovDeg;
     if (options.octreeLevel >= 0) options.render.octreeLevel = options.octreeLevel;
     if (options.render.eye && options.render.target && (*options.render.eye - *options.render.target).norm() == 0.0) {
@@ -145,7 +145,11 @@ int runSnapshotCommand(SnapshotCommandOptions options, std::ostream& out, std::o
         throw std::runtime_error(std::string("rendering failed: ") + error.what());
     }
     const std::string png = snapshot::encodePng(image);
-    writeFileAtomically(options.outPath, [&](std::ostream& file) { file << png; });
+    try {
+        writeFileAtomically(options.outPath, [&](std::ostream& file) { file << png; });
+    } catch (const std::runtime_error& error) {
+        throw BadInputError(error.what());  // an unusable output path, like query's and trace's
+    }
     out << "snapshot: " << image.width << "x" << image.height << " written to " << options.outPath << '\n';
     return kExitSuccess;
 }

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -15,8 +16,8 @@ namespace dropscope {
 struct SnapshotCommandOptions {
     std::string scenePath;
     std::string outPath;
-    std::string eye;     // "x,y,z", empty: not given
-    std::string target;  // "x,y,z", empty: not given
+    std::optional<std::string> eye;     // "x,y,z"
+    std::optional<std::string> target;  // "x,y,z"
     double fovDeg = 0.0;  // 0: not given
     int octreeLevel = -1;  // -1: not given
     std::string octreeFilter = "level";  // level | upto | leaves

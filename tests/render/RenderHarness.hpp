@@ -1,0 +1,74 @@
+#pragma once
+
+#include "render/Camera.hpp"
+#include "render/DrawData.hpp"
+#include "render/Renderer.hpp"
+#include "snapshot/Image.hpp"
+#include "snapshot/OsmesaContext.hpp"
+
+#include <Eigen/Core>
+
+#include <cmath>
+
+namespace dropscope::test {
+
+// Lines drawn by the tests: pure green, written exactly (no lighting, no blending) onto black.
+inline constexpr render::Colour kLineColour{0.0f, 1.0f, 0.0f, 1.0f};
+
+// An OSMesa context and a renderer that draws onto a black background, opaque shapes only: the
+// renderer on its own, without the snapshot's choices of camera, layers and colours.
+class DirectRenderer {
+public:
+    DirectRenderer(int width, int height);
+
+    snapshot::Image draw(const render::Camera& camera, const render::Anchor& anchor,
+                         const render::ShapeInstances& shapes, const render::LineBatch& lines);
+    int width() const { return context_.width(); }
+    int height() const { return context_.height(); }
+
+private:
+    snapshot::OsmesaContext context_;
+    render::Renderer renderer_;
+};
+
+// A camera from `eye` to `target`, up +y, with its near and far planes around `bounds`.
+render::Camera cameraLookingAt(const Point& eye, const Point& target, double fovDeg, const Eigen::AlignedBox3d& bounds);
+
+// Background: black in every colour channel (a shaded shape keeps at least 30 % of its colour).
+bool isBlack(const snapshot::Image& image, int x, int y);
+bool isLineColour(const snapshot::Image& image, int x, int y);
+bool samePixel(const snapshot::Image& image, int x, int y, const std::uint8_t* rgba);
+
+// Camera::project's x and y: pixel coordinates, origin at the image's top-left corner.
+Eigen::Vector2d projectToPixels(const render::Camera& camera, const Point& world, int width, int height);
+
+// The eye ray through the centre of pixel (i, j), from the pinhole model the camera stands for (look-at
+// basis, vertical field of view, square pixels), written out here independently of the GL matrices.
+Direction pixelRay(const render::Camera& camera, int i, int j, int width, int height);
+
+// Whether a pixel within `reach` (Chebyshev distance) of the pixel holding `point` satisfies `lit`
+// (which answers false outside the image).
+template <class Lit>
+bool litNear(const Eigen::Vector2d& point, int reach, Lit lit) {
+    const int cx = static_cast<int>(std::floor(point.x()));
+    const int cy = static_cast<int>(std::floor(point.y()));
+    for (int y = cy - reach; y <= cy + reach; ++y) {
+        for (int x = cx - reach; x <= cx + reach; ++x) {
+            if (lit(x, y)) return true;
+        }
+    }
+    return false;
+}
+
+// Whether (x, y) is a pixel of the image.
+inline bool inImage(const snapshot::Image& image, int x, int y) {
+    return x >= 0 && y >= 0 && x < image.width && y < image.height;
+}
+
+// Distance from p to the segment [a, b] in the image plane.
+double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+
+// Whether the pixel centre (i + 0.5, j + 0.5) lies inside the image's margin-shrunk frame.
+bool insideImage(const Eigen::Vector2d& point, int width, int height, double margin);
+
+}  // namespace dropscope::test

@@ -1,0 +1,178 @@
+// Shapes land where the camera math and the engine's geometry say: the silhouettes of a sphere and of
+// rotated ellipsoids, pixel by pixel, without golden images.
+#include "geometry/Ellipsoid.hpp"
+#include "geometry/Rotation.hpp"
+#include "geometry/Sphere.hpp"
+#include "render/RenderHarness.hpp"
+#include "render/RenderTolerances.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+namespace dropscope {
+namespace {
+
+using test::DirectRenderer;
+using test::isBlack;
+
+constexpr int kWidth = 160;  // not square: a wrong aspect ratio shows as an ellipse
+constexpr int kHeight = 120;
+
+std::vector<std::unique_ptr<Shape>> oneShape(std::unique_ptr<Shape> shape) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::move(shape));
+    return shapes;
+}
+
+// Looking at `target` from `distance` along `fromDirection`, 40 degrees high.
+render::Camera lookingAt(const Point& target, const Eigen::Vector3d& fromDirection, double distance,
+                         const Eigen::AlignedBox3d& bounds) {
+    return test::cameraLookingAt(target + distance * fromDirection.normalized(), target, 40.0, bounds);
+}
+
+// A sphere away from the origin (so the anchor matters), seen obliquely with the view axis through its
+// centre: its silhouette is the circle of angular radius asin(r / d) about the image centre.
+TEST(SphereSilhouette, CentredSphereCoversTheCircleTheCameraMathPredicts) {
+    const Point centre(3.0, -2.0, 5.0);
+    const double radius = 1.0;
+    const double distance = 5.0;
+    const auto shapes = oneShape(std::make_unique<Sphere>(centre, radius));
+    const render::Camera camera = lookingAt(centre, {1.0, 0.5, 2.0}, distance, shapes[0]->bounds());
+    const render::Anchor anchor{centre};
+
+    DirectRenderer renderer(kWidth, kHeight);
+    const snapshot::Image image =
+        renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
+
+    const Eigen::Vector2d middle = test::projectToPixels(camera, centre, kWidth, kHeight);
+    ASSERT_NEAR(middle.x(), 0.5 * kWidth, 1e-9);
+    ASSERT_NEAR(middle.y(), 0.5 * kHeight, 1e-9);
+    const double halfHeight = std::tan(camera.fovDeg * std::numbers::pi / 360.0);
+    const double expectedRadius = 0.5 * kHeight * std::tan(std::asin(radius / distance)) / halfHeight;
+
+    EXPECT_FALSE(isBlack(image, kWidth / 2, kHeight / 2)) << "the centre pixel is not coloured";
+    const int outside = static_cast<int>(std::lround(middle.x() + 1.5 * expectedRadius));
+    ASSERT_LT(outside, kWidth);
+    EXPECT_TRUE(isBlack(image, outside, kHeight / 2)) << "a pixel at 1.5 radii is coloured";
+
+    int covered = 0;
+    int outsideBand = 0;
+    int band = 0;
+    int bandMismatches = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const double r = (Eigen::Vector2d(x + 0.5, y + 0.5) - middle).norm();
+            const bool isCovered = !isBlack(image, x, y);
+            const bool mismatch = isCovered != (r < expectedRadius);
+            covered += isCovered ? 1 : 0;
+            if (std::abs(r - expectedRadius) > test::kSilhouetteBandPixels) {
+                outsideBand += mismatch ? 1 : 0;
+                EXPECT_FALSE(mismatch && outsideBand <= 5)
+                    << "pixel (" << x << ", " << y << ") is " << (isCovered ? "" : "not ") << "covered, "
+                    << r - expectedRadius << " px from the circle";
+            } else {
+                ++band;
+                bandMismatches += mismatch ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_EQ(outsideBand, 0) << "pixels farther than " << test::kSilhouetteBandPixels
+                              << " px from the projected circle (radius " << expectedRadius << " px) decided wrongly";
+    EXPECT_LE(bandMismatches, test::kBandMismatchShare * band) << "of " << band << " pixels along the circle";
+    const double areaRadius = std::sqrt(covered / std::numbers::pi);
+    EXPECT_NEAR(areaRadius, expectedRadius, test::kAreaRadiusPixels);
+}
+
+// The harness's pinhole rays and Camera::project are the same camera: projecting a point along the ray
+// through a pixel centre gives back that centre.
+TEST(SphereSilhouette, PixelRaysAndCameraProjectAgree) {
+    const render::Camera camera =
+        lookingAt({1.0, 2.0, -3.0}, {-0.3, 0.8, 0.6}, 7.0, Eigen::AlignedBox3d(Point(0, 1, -4), Point(2, 3, -2)));
+    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+    for (const auto& [i, j] : std::vector<std::pair<int, int>>{{0, 0}, {159, 0}, {80, 60}, {17, 101}, {159, 119}}) {
+        const Point along = eye + 6.0 * test::pixelRay(camera, i, j, kWidth, kHeight).vector();
+        const Eigen::Vector2d back = test::projectToPixels(camera, along, kWidth, kHeight);
+        EXPECT_NEAR(back.x(), i + 0.5, 1e-6) << i << "," << j;
+        EXPECT_NEAR(back.y(), j + 0.5, 1e-6) << i << "," << j;
+    }
+}
+
+// Whether the engine's ray from the eye through pixel (x, y) hits the shape.
+std::vector<char> engineCoverage(const Shape& shape, const render::Camera& camera) {
+    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+    std::vector<char> hit(static_cast<std::size_t>(kWidth * kHeight));
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const double t = shape.distanceToSurface(eye, test::pixelRay(camera, x, y, kWidth, kHeight));
+            hit[static_cast<std::size_t>(y * kWidth + x)] = std::isnan(t) ? 0 : 1;
+        }
+    }
+    return hit;
+}
+
+// Within one pixel of the engine's silhouette: some 8-neighbour is classified the other way.
+bool onBoundary(const std::vector<char>& hit, int x, int y) {
+    const char here = hit[static_cast<std::size_t>(y * kWidth + x)];
+    for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, kHeight - 1); ++ny) {
+        for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, kWidth - 1); ++nx) {
+            if (hit[static_cast<std::size_t>(ny * kWidth + nx)] != here) return true;
+        }
+    }
+    return false;
+}
+
+// Seeded random ellipsoids (semi-axes, rotation, place) from random directions: every pixel the engine's
+// distanceToSurface hits is covered and every pixel it misses is background; in the one-pixel band along
+// the silhouette (a pixel with an 8-neighbour classified the other way), at most kBandMismatchShare differ.
+TEST(EllipsoidSilhouette, RotatedEllipsoidsCoverExactlyThePixelsWhoseRaysHitTheEngineShape) {
+    DirectRenderer renderer(kWidth, kHeight);
+    for (int k = 0; k < 6; ++k) {
+        SCOPED_TRACE("case " + std::to_string(k));
+        std::mt19937_64 rng(static_cast<std::uint64_t>(k));
+        std::uniform_real_distribution<double> unit(-1.0, 1.0);
+        std::uniform_real_distribution<double> semi(0.3, 1.3);
+        const Direction axis(unit(rng), unit(rng), unit(rng));
+        const double angle = std::numbers::pi * unit(rng);
+        const Point centre(5.0 * unit(rng), 5.0 * unit(rng), 5.0 * unit(rng));
+        const Eigen::Vector3d semiAxes(semi(rng), semi(rng), semi(rng));
+        const Eigen::Vector3d from(unit(rng), unit(rng), unit(rng));
+        const auto shapes = oneShape(
+            std::make_unique<Ellipsoid>(Ellipsoid::fromSemiAxes(centre, semiAxes, rotationAboutAxis(axis, angle))));
+        const render::Camera camera = lookingAt(centre, from, 6.0, shapes[0]->bounds());
+        const render::Anchor anchor{centre};
+        const snapshot::Image image =
+            renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
+
+        const std::vector<char> hit = engineCoverage(*shapes[0], camera);
+        int hits = 0;
+        int outsideBand = 0;
+        int band = 0;
+        int bandMismatches = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                const bool engineHit = hit[static_cast<std::size_t>(y * kWidth + x)] != 0;
+                const bool mismatch = engineHit == isBlack(image, x, y);
+                hits += engineHit ? 1 : 0;
+                if (!onBoundary(hit, x, y)) {
+                    outsideBand += mismatch ? 1 : 0;
+                    EXPECT_FALSE(mismatch && outsideBand <= 5)
+                        << "pixel (" << x << ", " << y << "): engine " << (engineHit ? "hit" : "miss") << ", rendered "
+                        << (engineHit ? "background" : "covered");
+                } else {
+                    ++band;
+                    bandMismatches += mismatch ? 1 : 0;
+                }
+            }
+        }
+        EXPECT_EQ(outsideBand, 0) << "pixels away from the silhouette where the renderer and the engine disagree";
+        EXPECT_LE(bandMismatches, test::kBandMismatchShare * band) << "of " << band << " pixels along the silhouette";
+        EXPECT_GT(hits, 300) << "the ellipsoid should fill a good part of the image";
+    }
+}
+
+}  // namespace
+}  // namespace dropscope
