@@ -8,6 +8,7 @@
 //
 // Run: build/bench/trace_bench [--photons 2e5] [--repeat 5] [--threads 2] [--reference-photons 2e4]
 //                              [--seed 1] [--scene FILE]
+#include "CloudScene.hpp"
 #include "geometry/Sphere.hpp"
 #include "octree/CountArgument.hpp"
 #include "octree/Measure.hpp"
@@ -33,27 +34,14 @@ namespace {
 
 using namespace dropscope;
 using dropscope::bench::Stopwatch;
+using dropscope::bench::cloudSceneText;
 using dropscope::bench::parseCount;
 
-// The built-in cloud: 1e5 water droplets (n 1.3337, kappa 1.9e-9 at 532 nm) in air, with the radii of
-// assets/scenes/cloud.json (lognormal, median 0.1 mm, sigma 0.35, at most 0.5 mm), in a cube of
-// half-side 15 mm: 2.7 % of the volume, and a mean optical depth of about 4.5 along the beam, so about
-// 1 % of the photons cross it without meeting a droplet. The beam fills the disk inscribed in the
-// cube's face, so every photon enters the cloud.
+// The built-in cloud: 1e5 water droplets in a cube of half-side 15 mm (bench/CloudScene.hpp): 2.7 % of
+// the volume, and a mean optical depth of about 4.5 along the beam, so about 1 % of the photons cross
+// it without meeting a droplet.
 constexpr std::size_t kDroplets = 100000;
 constexpr double kHalfSide = 15.0;
-
-std::string cloudSceneText() {
-    const std::string h = std::to_string(kHalfSide);
-    return R"({"dropscope": 1, "unit": "mm", "wavelength_nm": 532, "ambient": "air",
-  "media": {"air": {"n": 1.000278}, "water": {"n": 1.3337, "kappa": 1.9e-9}},
-  "generators": [{"type": "droplet_cloud", "region": {"min": [-)" + h + ", -" + h + ", -" + h + R"(], "max": [)" +
-           h + ", " + h + ", " + h + R"(]}, "count": )" + std::to_string(kDroplets) + R"(,
-    "radius": {"distribution": "lognormal", "median": 0.1, "sigma": 0.35, "max": 0.5}, "medium": "water", "seed": 7}],
-  "sources": [{"type": "beam", "origin": [0, 0, -)" + std::to_string(2.0 * kHalfSide) +
-           R"(], "direction": [0, 0, 1], "radius": )" + h + R"(}],
-  "octree": {"max_depth": 10, "max_shapes_per_leaf": 16}})";
-}
 
 struct Options {
     std::uint64_t photons = 200000;
@@ -340,7 +328,8 @@ int main(int argc, char** argv) {
         const std::string name = builtIn ? "built-in cloud, 1e5 droplets" : *options.scene;
         std::cerr << "scene: " << name << '\n';
         const Stopwatch parseWatch;
-        const Scene scene = builtIn ? parseScene(cloudSceneText(), "trace_bench cloud") : loadScene(*options.scene);
+        const Scene scene = builtIn ? parseScene(cloudSceneText(kDroplets, kHalfSide), "trace_bench cloud")
+                                    : loadScene(*options.scene);
         const double parseSeconds = parseWatch.seconds();
         if (scene.sources.empty()) throw std::invalid_argument(name + ": the scene has no light sources");
 
