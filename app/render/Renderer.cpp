@@ -30,6 +30,14 @@ std::vector<float> cubeTriangles() {
     return out;
 }
 
+// Two triangles over the square (+-1, +-1, 0): the impostors' camera-facing quad (shaders/impostor.vert).
+std::vector<float> quadTriangles() {
+    std::vector<float> out;
+    const float corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int k : {0, 1, 2, 0, 2, 3}) out.insert(out.end(), {corners[k][0], corners[k][1], 0.0f, 0.0f, 0.0f, 1.0f});
+    return out;
+}
+
 }  // namespace
 
 // A vertex array with a static mesh (optional) and a per-instance or per-vertex buffer.
@@ -60,13 +68,12 @@ struct Renderer::Mesh {
         gl.VertexAttribDivisor(location, divisor);
     }
 
-    // The cube mesh in locations 0 (position) and 1 (normal), ShapeInstance in 2..9 (one per instance).
-    void makeInstancedCube() {
-        const std::vector<float> cube = cubeTriangles();
-        meshVertices = static_cast<GLsizei>(cube.size() / 6);
+    // A mesh (position, normal) in locations 0 and 1, ShapeInstance in 2..9 (one per instance).
+    void makeInstanced(const std::vector<float>& mesh) {
+        meshVertices = static_cast<GLsizei>(mesh.size() / 6);
         gl.BindVertexArray(vertexArray);
         gl.BindBuffer(GL_ARRAY_BUFFER, meshBuffer);
-        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cube.size() * sizeof(float)), cube.data(), GL_STATIC_DRAW);
+        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(float)), mesh.data(), GL_STATIC_DRAW);
         attribute(0, 3, 6 * sizeof(float), 0, 0);
         attribute(1, 3, 6 * sizeof(float), 3 * sizeof(float), 0);
         gl.BindBuffer(GL_ARRAY_BUFFER, dataBuffer);
@@ -102,9 +109,9 @@ Renderer::Renderer(const GlFunctions& gl)
       box_(std::make_unique<ShaderProgram>(gl, "box.vert", "box.frag")),
       line_(std::make_unique<ShaderProgram>(gl, "line.vert", "line.frag")), rounded_(std::make_unique<Mesh>(gl)),
       boxes_(std::make_unique<Mesh>(gl)), markers_(std::make_unique<Mesh>(gl)), lines_(std::make_unique<Mesh>(gl)) {
-    rounded_->makeInstancedCube();
-    boxes_->makeInstancedCube();
-    markers_->makeInstancedCube();
+    rounded_->makeInstanced(quadTriangles());
+    boxes_->makeInstanced(cubeTriangles());
+    markers_->makeInstanced(quadTriangles());
     lines_->makeLines();
 }
 
@@ -119,12 +126,15 @@ void Renderer::setLines(const LineBatch& lines) { lines_->upload(lines.vertices(
 
 void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) { markers_->upload(markers); }
 
-void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const glm::mat4& viewProjection,
-                          const glm::vec3& eye, float opacity) {
+void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity) {
     if (mesh.count == 0) return;
     program.use();
-    gl_.UniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-    gl_.Uniform3fv(program.uniform("eye"), 1, glm::value_ptr(eye));
+    gl_.UniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(frame.viewProjection));
+    // Only the impostor program has these two; a location of -1 is ignored.
+    gl_.UniformMatrix4fv(program.uniform("inverseViewProjection"), 1, GL_FALSE,
+                         glm::value_ptr(frame.inverseViewProjection));
+    gl_.Uniform3fv(program.uniform("cameraUp"), 1, glm::value_ptr(frame.up));
+    gl_.Uniform3fv(program.uniform("eye"), 1, glm::value_ptr(frame.eye));
     gl_.Uniform1f(program.uniform("opacity"), opacity);
     gl_.BindVertexArray(mesh.vertexArray);
     gl_.DrawArraysInstanced(GL_TRIANGLES, 0, mesh.meshVertices, mesh.count);
@@ -137,7 +147,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     local.target -= origin;
     const double aspect = static_cast<double>(width) / static_cast<double>(height);
     const glm::mat4 viewProjection = local.projectionMatrix(aspect) * local.viewMatrix();
-    const glm::vec3 eye(local.eye);
+    const FrameUniforms frame{viewProjection, glm::inverse(viewProjection), glm::vec3(local.eye), glm::vec3(local.up)};
 
     gl_.Viewport(0, 0, width, height);
     gl_.ClearColor(options.background[0], options.background[1], options.background[2], options.background[3]);
@@ -147,10 +157,10 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     gl_.Disable(GL_BLEND);
     gl_.DepthMask(GL_TRUE);
 
-    drawShapes(*markers_, *impostor_, viewProjection, eye, 1.0f);
+    drawShapes(*markers_, *impostor_, frame, 1.0f);
     const bool boxesBlended = options.translucent || options.translucentBoxes;
-    if (options.shapes && !options.translucent) drawShapes(*rounded_, *impostor_, viewProjection, eye, 1.0f);
-    if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, viewProjection, eye, 1.0f);
+    if (options.shapes && !options.translucent) drawShapes(*rounded_, *impostor_, frame, 1.0f);
+    if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, frame, 1.0f);
     if (options.lines && lines_->count > 0) {
         line_->use();
         gl_.UniformMatrix4fv(line_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
@@ -161,8 +171,8 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
         gl_.Enable(GL_BLEND);
         gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         gl_.DepthMask(GL_FALSE);
-        drawShapes(*boxes_, *box_, viewProjection, eye, options.opacity);
-        if (options.translucent) drawShapes(*rounded_, *impostor_, viewProjection, eye, options.opacity);
+        drawShapes(*boxes_, *box_, frame, options.opacity);
+        if (options.translucent) drawShapes(*rounded_, *impostor_, frame, options.opacity);
         gl_.DepthMask(GL_TRUE);
         gl_.Disable(GL_BLEND);
     }

@@ -41,8 +41,13 @@ public:
 
 private:
     struct Mesh;
-    void drawShapes(const Mesh& mesh, const ShaderProgram& program, const glm::mat4& viewProjection,
-                    const glm::vec3& eye, float opacity);
+    struct FrameUniforms {
+        glm::mat4 viewProjection;
+        glm::mat4 inverseViewProjection;
+        glm::vec3 eye;
+        glm::vec3 up;
+    };
+    void drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity);
 
     const GlFunctions& gl_;
     Anchor anchor_;
