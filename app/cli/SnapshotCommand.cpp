@@ -18,6 +18,11 @@ namespace {
 
 constexpr int kMaxPixels = 8192;
 constexpr std::uint64_t kMaxDrawnPaths = 100000;
+constexpr std::uint64_t kMaxSnapshotPhotons = 100'000'000;  // a picture, not a study: seconds, not hours
+
+// CLI11 would read "-1" into an unsigned option as 2^64 - 1.
+const CLI::Validator notNegative(
+    [](std::string& text) { return text.starts_with('-') ? std::string("must not be negative") : std::string(); }, "");
 
 // "x,y,z": three finite numbers.
 Point parsePoint(const std::string& option, const std::string& text) {
@@ -120,7 +125,9 @@ CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options) {
     command->add_option("--paths", options.render.paths, "Draw the paths of the first K traced photons")
         ->capture_default_str()
         ->check(CLI::Range(std::uint64_t{0}, kMaxDrawnPaths));
-    command->add_option("--photons", options.render.photons, "Photons to trace (default and minimum: K)");
+    command->add_option("--photons", options.render.photons, "Photons to trace (default and minimum: K)")
+        ->check(notNegative)
+        ->check(CLI::Range(std::uint64_t{0}, kMaxSnapshotPhotons));
     command->add_option("--seed", options.render.seed, "Seed of the traced photons")->capture_default_str();
     addLayerOptions(*command, options);
     return command;
@@ -141,6 +148,8 @@ int runSnapshotCommand(SnapshotCommandOptions options, std::ostream& out, std::o
     snapshot::Image image;
     try {
         image = snapshot::renderSnapshot(scene, options.render);
+    } catch (const std::invalid_argument& error) {
+        throw BadInputError(error.what());
     } catch (const render::RenderError& error) {
         throw std::runtime_error(std::string("rendering failed: ") + error.what());
     }

@@ -7,6 +7,8 @@
 #include "transport/TraceRun.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
 namespace dropscope::snapshot {
 
@@ -22,6 +24,15 @@ render::Camera snapshotCamera(const Scene& scene, const SnapshotOptions& options
     if (options.eye) camera.eye = {options.eye->x(), options.eye->y(), options.eye->z()};
     if (options.eye && !options.target && !scene.view) {
         camera.target = {bounds.center().x(), bounds.center().y(), bounds.center().z()};
+    }
+    const glm::dvec3 view = camera.target - camera.eye;
+    if (!(glm::length(view) > 0.0) || !std::isfinite(glm::length(view))) {
+        throw std::invalid_argument("the camera's eye coincides with its target; give --target (or another --eye)");
+    }
+    // Looking along `up` leaves lookAt without a sideways axis: take the world axis least aligned instead.
+    if (glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up))) < 1e-6) {
+        const glm::dvec3 a = glm::abs(glm::normalize(view));
+        camera.up = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0) : a.y <= a.z ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
     }
     return camera;
 }

@@ -24,7 +24,8 @@ struct SnapshotOptions {
     render::LayerOptions layers;
 };
 
-// Renders the scene headless (OSMesa) into an image: the same pixels for the same arguments.
+// Renders the scene headless (OSMesa) into an image: the same pixels for the same arguments. Throws
+// std::invalid_argument when the camera has no direction (eye on the target).
 Image renderSnapshot(const Scene& scene, const SnapshotOptions& options);
 
 }  // namespace dropscope::snapshot

@@ -150,3 +150,40 @@ TEST_F(SnapshotCommand, ExistingOutputSurvivesAFailedRun) {
 
 }  // namespace
 }  // namespace dropscope
+
+namespace dropscope {
+namespace {
+
+class SnapshotCamera : public ::testing::Test {
+protected:
+    std::string out = (fs::temp_directory_path() / "dropscope-snapshot-camera.png").string();
+    void TearDown() override { fs::remove(out); }
+};
+
+TEST_F(SnapshotCamera, AnEyeOnTheImpliedTargetIsBadInput) {
+    // No view in the scene: the target is the scene's centre, (1, 2, 3) here.
+    const CliRun run = runDropscope({"snapshot", kOneSphere, "--out", out, "--eye", "1,2,3"});
+    expectOneLineFailure(run);
+    EXPECT_TRUE(run.err.starts_with("the camera's eye coincides with its target")) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(SnapshotCamera, LookingAlongUpStillGivesAPicture) {
+    // Straight down on the sphere along -y, the default up: another up is taken, the sphere is centred.
+    ASSERT_EQ(runDropscope({"snapshot", kOneSphere, "--out", out, "--eye", "1,12,3", "--width", "64", "--height", "48"})
+                  .status,
+              kExitSuccess);
+    const snapshot::Image image = snapshot::readPng(out);
+    const std::uint8_t* centre = image.pixel(32, 24);
+    const std::uint8_t* corner = image.pixel(1, 1);
+    EXPECT_GT(centre[2], corner[2] + 60);  // blue drop against the dark background
+}
+
+TEST_F(SnapshotCamera, PhotonCountsAreBounded) {
+    expectOneLineFailure(runDropscope({"snapshot", kOneSphere, "--out", out, "--paths", "1", "--photons", "-1"}));
+    expectOneLineFailure(runDropscope({"snapshot", kOneSphere, "--out", out, "--paths", "1", "--photons", "100000001"}));
+    EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace dropscope
