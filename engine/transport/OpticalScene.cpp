@@ -45,15 +45,22 @@ ShapeId OpticalScene::regionAt(const Point& p) const {
 }
 
 ShapeId OpticalScene::regionAt(const Point& p, const Direction& d) const {
-    ShapeId region = regionAt(p);
-    double regionVolume = region == kAmbient ? std::numeric_limits<double>::infinity() : octree_.shape(region)->volume();
+    // One walk down the cells holding p: the smallest shape that encloses p, or whose surface band p is
+    // on while d points into it (ties to the lower id, as Octree::locate).
+    ShapeId region = kAmbient;
+    double regionVolume = std::numeric_limits<double>::infinity();
     octree_.forEachShapeAlongPath(p, [&](ShapeId id) {
         const Shape& shape = *octree_.shape(id);
-        if (shape.volume() >= regionVolume || shape.locatePoint(p) != PointLocation::OnSurface) return;
-        const Direction normal = shape.normal(p);
-        if (!normal || d.dot(normal) >= 0.0) return;
+        const double volume = shape.volume();
+        if (volume > regionVolume || (volume == regionVolume && id > region)) return;
+        const PointLocation location = shape.locatePoint(p);
+        if (location == PointLocation::Outside) return;
+        if (location == PointLocation::OnSurface) {
+            const Direction normal = shape.normal(p);
+            if (!normal || d.dot(normal) >= 0.0) return;
+        }
         region = id;
-        regionVolume = shape.volume();
+        regionVolume = volume;
     });
     return region;
 }

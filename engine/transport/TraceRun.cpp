@@ -65,11 +65,11 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
 
     TraceResult result;
     result.requested = settings.photons;
-    result.threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
+    const int requestedThreads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
     result.tally = TraceTally(settings.bins);
     const std::uint64_t recorded = std::min(settings.paths, settings.photons);
+    // A traced photon's path starts with its emission, so an empty one was never traced (stopped run).
     std::vector<PhotonPath> paths(recorded);
-    std::vector<char> pathDone(recorded, 0);
 
     const auto start = Clock::now();
     std::atomic<std::uint64_t> nextChunk{0};
@@ -81,7 +81,7 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     };
 
     int threadsUsed = 1;
-#pragma omp parallel num_threads(result.threads)
+#pragma omp parallel num_threads(requestedThreads)
     {
 #pragma omp single nowait
         threadsUsed = omp_get_num_threads();  // OMP_THREAD_LIMIT and the like may give fewer
@@ -104,10 +104,7 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                     }
                     const PhotonOutcome outcome = tracePhoton(scene, emitted, random, settings.transport, events);
                     local.add(outcome, emitted.direction);
-                    if (photon < recorded) {
-                        paths[photon].fate = outcome.fate;
-                        pathDone[photon] = 1;
-                    }
+                    if (photon < recorded) paths[photon].fate = outcome.fate;
                 }
                 done.fetch_add(last - first, std::memory_order_relaxed);
                 if (omp_get_thread_num() == 0 && control.onProgress) {
@@ -132,7 +129,7 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     result.seconds = secondsSince(start);
     result.partial = result.tally.photons < settings.photons;
     for (std::uint64_t photon = 0; photon < recorded; ++photon) {
-        if (pathDone[photon]) result.paths.push_back(std::move(paths[photon]));
+        if (!paths[photon].events.empty()) result.paths.push_back(std::move(paths[photon]));
     }
     return result;
 }
