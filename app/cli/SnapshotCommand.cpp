@@ -3,6 +3,7 @@
 #include "cli/AtomicFile.hpp"
 #include "cli/BadInput.hpp"
 #include "cli/Cli.hpp"
+#include "cli/WholeNumberOption.hpp"
 #include "render/RenderError.hpp"
 #include "scene/SceneLoader.hpp"
 
@@ -20,9 +21,6 @@ constexpr int kMaxPixels = 8192;
 constexpr std::uint64_t kMaxDrawnPaths = 100000;
 constexpr std::uint64_t kMaxSnapshotPhotons = 100'000'000;  // a picture, not a study: seconds, not hours
 
-// CLI11 would read "-1" into an unsigned option as 2^64 - 1.
-const CLI::Validator notNegative(
-    [](std::string& text) { return text.starts_with('-') ? std::string("must not be negative") : std::string(); }, "");
 
 // "x,y,z": three finite numbers.
 Point parsePoint(const std::string& option, const std::string& text) {
@@ -124,11 +122,12 @@ CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options) {
         ->check(CLI::Range(0, 30));
     command->add_option("--paths", options.render.paths, "Draw the paths of the first K traced photons")
         ->capture_default_str()
-        ->check(CLI::Range(std::uint64_t{0}, kMaxDrawnPaths));
+        ->transform(wholeNumberIn(0, kMaxDrawnPaths));
     command->add_option("--photons", options.render.photons, "Photons to trace (default and minimum: K)")
-        ->check(notNegative)
-        ->check(CLI::Range(std::uint64_t{0}, kMaxSnapshotPhotons));
-    command->add_option("--seed", options.render.seed, "Seed of the traced photons")->capture_default_str();
+        ->transform(wholeNumberIn(0, kMaxSnapshotPhotons));
+    command->add_option("--seed", options.render.seed, "Seed of the traced photons")
+        ->capture_default_str()
+        ->transform(wholeNumberIn(0, kNoUpperBound));
     addLayerOptions(*command, options);
     return command;
 }

@@ -5,7 +5,7 @@
 #include "cli/InterruptGuard.hpp"
 #include "cli/ProgressLine.hpp"
 #include "cli/TraceFiles.hpp"
-#include "cli/WholeNumber.hpp"
+#include "cli/WholeNumberOption.hpp"
 #include "scene/SceneLoader.hpp"
 #include "transport/TraceRun.hpp"
 
@@ -24,28 +24,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
 constexpr std::uint64_t kMaxBins = 100'000;    // 0.0018 degrees; a tally per thread: 0.8 MB each at most
 constexpr std::uint64_t kMaxThreads = 1024;    // beyond any machine we run on; a typo otherwise
 constexpr std::uint64_t kMaxPaths = 1'000'000; // every event kept in memory: ~1 KB per photon
-
-// A whole number in [minimum, maximum] ("1e6" style accepted, see parseWholeNumber), handed on to
-// CLI11 as plain digits.
-CLI::Validator wholeNumberIn(std::uint64_t minimum, std::uint64_t maximum) {
-    const std::string range = maximum == kUnlimited
-                                  ? ">= " + std::to_string(minimum)
-                                  : "from " + std::to_string(minimum) + " to " + std::to_string(maximum);
-    return CLI::Validator(
-        [=](std::string& text) -> std::string {
-            const std::optional<std::uint64_t> value = parseWholeNumber(text);
-            if (!value || *value < minimum || *value > maximum) {
-                return "must be a whole number " + range + ", got \"" + text + "\"";
-            }
-            text = std::to_string(*value);
-            return {};
-        },
-        "");
-}
 
 // Refuses an --out that names something other than a folder, or holds an output name that is not a
 // regular file, before any work is done.
@@ -112,10 +93,10 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
     command->add_option("scene", options.scenePath, "Scene file (docs/scene-format.md)")->required();
     command->add_option("--photons", options.photons, "Photons to trace (1e6 style accepted)")
         ->required()
-        ->transform(wholeNumberIn(1, kUnlimited));
+        ->transform(wholeNumberIn(1, kNoUpperBound));
     command->add_option("--seed", options.seed, "Seed: photon i uses the random stream (seed, i)")
         ->capture_default_str()
-        ->transform(wholeNumberIn(0, kUnlimited));
+        ->transform(wholeNumberIn(0, kNoUpperBound));
     command->add_option("--bins", options.bins, "Angular bins over 0-180 degrees in angular.csv")
         ->capture_default_str()
         ->transform(wholeNumberIn(1, kMaxBins));
