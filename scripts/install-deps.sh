@@ -8,6 +8,8 @@ packages=(
   libeigen3-dev libboost-math-dev nlohmann-json3-dev libcli11-dev librandom123-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libglm-dev libstb-dev
+  libglfw3-dev libimgui-dev
+  xvfb xauth xdotool imagemagick
   libembree-dev libtbb-dev
 )
 

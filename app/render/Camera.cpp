@@ -87,4 +87,15 @@ glm::dvec3 Camera::project(const glm::dvec3& world, int width, int height) const
     return {(ndc.x + 1.0) * 0.5 * width, (1.0 - ndc.y) * 0.5 * height, (ndc.z + 1.0) * 0.5};
 }
 
+glm::dvec3 Camera::rayThrough(double x, double y, int width, int height) const {
+    const glm::dvec3 forward = glm::normalize(target - eye);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, up));
+    const glm::dvec3 trueUp = glm::cross(right, forward);
+    const double tanY = std::tan(glm::radians(fovDeg) / 2.0);
+    const double tanX = tanY * static_cast<double>(width) / static_cast<double>(height);
+    const double ndcX = 2.0 * x / static_cast<double>(width) - 1.0;
+    const double ndcY = 1.0 - 2.0 * y / static_cast<double>(height);
+    return glm::normalize(forward + right * (ndcX * tanX) + trueUp * (ndcY * tanY));
+}
+
 }  // namespace dropscope::render

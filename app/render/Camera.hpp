@@ -39,6 +39,9 @@ public:
     // Pixel coordinates (x right, y down, origin at the top-left corner) of a world point in an image
     // of width x height, and its depth in [0, 1]; for tests and picking.
     glm::dvec3 project(const glm::dvec3& world, int width, int height) const;
+    // The unit direction from the eye through pixel coordinates (x, y) (same convention as project; pixel
+    // centres are at half-integers) of a width x height image: the inverse of project, for picking.
+    glm::dvec3 rayThrough(double x, double y, int width, int height) const;
 };
 
 }  // namespace dropscope::render

@@ -57,7 +57,31 @@ namespace dropscope::render {
     X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                                \
     X(PFNGLDRAWELEMENTSPROC, DrawElements)                                                            \
     X(PFNGLDRAWARRAYSINSTANCEDPROC, DrawArraysInstanced)                                              \
-    X(PFNGLDRAWELEMENTSINSTANCEDPROC, DrawElementsInstanced)
+    X(PFNGLDRAWELEMENTSINSTANCEDPROC, DrawElementsInstanced)                                          \
+    X(PFNGLDRAWELEMENTSBASEVERTEXPROC, DrawElementsBaseVertex)                                        \
+    X(PFNGLISENABLEDPROC, IsEnabled)                                                                  \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                              \
+    X(PFNGLSCISSORPROC, Scissor)                                                                      \
+    X(PFNGLBLENDEQUATIONPROC, BlendEquation)                                                          \
+    X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate)                                          \
+    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                                                  \
+    X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                                          \
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                                          \
+    X(PFNGLGENTEXTURESPROC, GenTextures)                                                              \
+    X(PFNGLBINDTEXTUREPROC, BindTexture)                                                              \
+    X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                                                \
+    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                                          \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                                        \
+    X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                                      \
+    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                                      \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)                                            \
+    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                                      \
+    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                        \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                                \
+    X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                                                    \
+    X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                                    \
+    X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)                                              \
+    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)
 
 // A function that returns the address of an OpenGL function by name, for the current context.
 using GlProcLoader = void* (*)(const char* name);

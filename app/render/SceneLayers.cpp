@@ -15,17 +15,40 @@ Eigen::AlignedBox3d sceneBounds(const std::vector<std::unique_ptr<Shape>>& shape
     return bounds;
 }
 
+namespace {
+
+// Adds one layer's lines through `add(batch)`: straight into `lines`, or, with a slice plane, cut to its
+// kept side on the way.
+template <class AddLayer>
+void addSliced(LineBatch& lines, const std::optional<SlicePlane>& slice, const Anchor& anchor, AddLayer add) {
+    if (!slice) {
+        add(lines);
+        return;
+    }
+    LineBatch layer(anchor);
+    add(layer);
+    appendKeptSegments(lines, layer, *slice, anchor);
+}
+
+}  // namespace
+
 SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& options, const Anchor& anchor) {
     SceneLayers layers{LineBatch(anchor), {}};
     LineBatch& lines = layers.lines;
+    const std::optional<SlicePlane>& slice = options.slice;
     const double size = inputs.bounds.diagonal().norm();
-    if (options.traversal && inputs.traversal) addTraversal(lines, *inputs.traversal);
+    if (options.traversal && inputs.traversal) {
+        addSliced(lines, slice, anchor, [&](LineBatch& batch) { addTraversal(batch, *inputs.traversal); });
+    }
     if (options.rayTree && inputs.rayTree) {
-        addRayTree(lines, *inputs.rayTree, kEscapeLength * size);
+        addSliced(lines, slice, anchor,
+                  [&](LineBatch& batch) { addRayTree(batch, *inputs.rayTree, kEscapeLength * size); });
         if (options.markers) addEventMarkers(layers.markers, *inputs.rayTree, kMarkerRadius * size, anchor);
     }
     if (options.paths && inputs.paths) {
-        addPhotonPaths(lines, *inputs.paths, kEscapeLength * size, options.pathColouring);
+        addSliced(lines, slice, anchor, [&](LineBatch& batch) {
+            addPhotonPaths(batch, *inputs.paths, kEscapeLength * size, options.pathColouring);
+        });
         if (options.markers) addEventMarkers(layers.markers, *inputs.paths, kMarkerRadius * size, anchor);
     }
     if (options.sources) addSourceGlyphs(lines, inputs.sources, kSourceGlyph * size);
@@ -34,14 +57,22 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
         const Point origin = inputs.bounds.contains(Point::Zero()) ? Point(Point::Zero()) : anchor.origin;
         addAxes(lines, origin, kAxisLength * size);
     }
-    if (options.octree) addOctreeCells(lines, inputs.octree, options.octreeFilter);
-    if (options.grid) addGroundGrid(lines, inputs.bounds, inputs.up);
+    if (options.octree) {
+        addSliced(lines, slice, anchor,
+                  [&](LineBatch& batch) { addOctreeCells(batch, inputs.octree, options.octreeFilter); });
+    }
+    if (options.grid) {
+        addSliced(lines, slice, anchor, [&](LineBatch& batch) { addGroundGrid(batch, inputs.bounds, inputs.up); });
+    }
+    if (slice) layers.markers = keptInstances(layers.markers, *slice, anchor);
     return layers;
 }
 
 void uploadScene(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& shapes, const SceneLayers& layers,
                  const LayerOptions& options) {
-    renderer.setShapes(buildShapeInstances(shapes, renderer.anchor(), options.selected));
+    ShapeInstances instances = buildShapeInstances(shapes, renderer.anchor(), options.selected);
+    if (options.slice) instances = keptShapes(instances, shapes, *options.slice);
+    renderer.setShapes(instances);
     renderer.setLines(layers.lines);
     renderer.setMarkers(layers.markers);
 }

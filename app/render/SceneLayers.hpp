@@ -4,6 +4,7 @@
 #include "render/OctreeLayer.hpp"
 #include "render/PathLayer.hpp"
 #include "render/Renderer.hpp"
+#include "render/SlicePlane.hpp"
 #include "scene/Source.hpp"
 #include "transport/RayTree.hpp"
 #include "transport/TraceRun.hpp"
@@ -27,6 +28,10 @@ struct LayerOptions {
     bool sources = false;
     bool axes = false;
     bool grid = false;
+    // Hides what lies beyond the plane (SlicePlane.hpp): shapes and markers by their centre; the octree
+    // cells, traversal, paths, ray tree and grid cut at the plane. Source glyphs and axes, the guides
+    // that say where the light comes from and which way is which, stay whole.
+    std::optional<SlicePlane> slice;
 };
 
 // What the layers are drawn from. Paths, the ray tree and the traversal are computed by the caller
@@ -57,10 +62,11 @@ Eigen::AlignedBox3d sceneBounds(const std::vector<std::unique_ptr<Shape>>& shape
 
 // The line batch and the markers of every layer switched on. Where lines coincide the first one added
 // wins the depth test (GL_LESS), so they go in order of importance: traversal, ray tree, paths,
-// sources, axes, octree cells, grid.
+// sources, axes, octree cells, grid. With a slice plane, the hidden side is left out.
 SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& options, const Anchor& anchor);
 
-// Hands the shapes (the selected one highlighted) and the layers to the renderer.
+// Hands the shapes (the selected one highlighted; with a slice plane only those on its kept side) and the
+// layers to the renderer.
 void uploadScene(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& shapes, const SceneLayers& layers,
                  const LayerOptions& options);
 

@@ -195,18 +195,33 @@ void Octree::split(std::uint32_t node, const CellBounds& bounds) {
 ShapeId Octree::insert(std::unique_ptr<Shape> shape) {
     if (!shape) throw std::invalid_argument("Octree::insert: null shape");
     const auto id = static_cast<ShapeId>(shapes_.size());
+    shapes_.emplace_back();
+    fillSlot(id, std::move(shape));
+    return id;
+}
+
+void Octree::insertAt(ShapeId id, std::unique_ptr<Shape> shape) {
+    if (!shape) throw std::invalid_argument("Octree::insertAt: null shape");
+    if (id >= shapes_.size()) {
+        throw std::invalid_argument("Octree::insertAt: no slot " + std::to_string(id) + " (" +
+                                    std::to_string(shapes_.size()) + " slots)");
+    }
+    if (shapes_[id]) throw std::invalid_argument("Octree::insertAt: slot " + std::to_string(id) + " is occupied");
+    fillSlot(id, std::move(shape));
+}
+
+void Octree::fillSlot(ShapeId id, std::unique_ptr<Shape> shape) {
     const CellBounds extent = shape->bounds();
     const double band = shape->surfaceBand();
-    shapes_.push_back(std::move(shape));
+    shapes_[id] = std::move(shape);
     if (!rootBounds_.contains(extent) || 4.0 * band > margin_) {
         rebuild(cubeAround(shapes_, rootBounds_));  // outside the root: grow it
-        return id;
+        return;
     }
     ++liveShapes_;
     thaw();
     place(0, rootBounds_, id, extent);
     freeze();
-    return id;
 }
 
 void Octree::unstore(std::uint32_t node, const CellBounds& bounds, ShapeId id) {

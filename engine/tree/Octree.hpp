@@ -56,7 +56,12 @@ public:
     // Ids of the stored shapes that overlap `shape` (Shape::overlaps), ascending.
     std::vector<ShapeId> overlapping(const Shape& shape) const;
 
+    // Adds a shape in a new slot (id slotCount()), growing the root when it reaches outside.
     ShapeId insert(std::unique_ptr<Shape> shape);
+    // Puts a shape back into the empty slot `id` left by remove(), exactly as insert places it (so undoing
+    // a removal restores the same id). Throws std::invalid_argument when `shape` is null, id >= slotCount()
+    // or the slot is occupied.
+    void insertAt(ShapeId id, std::unique_ptr<Shape> shape);
     std::unique_ptr<Shape> remove(ShapeId id);
 
     std::vector<LevelStatistics> statistics() const;
@@ -101,6 +106,8 @@ private:
     struct Traversal;
 
     void rebuild(const CellBounds& bounds);
+    // insert and insertAt: stores `shape` in the empty slot `id` and places it.
+    void fillSlot(ShapeId id, std::unique_ptr<Shape> shape);
     void freeze();
     void thaw();
     void place(std::uint32_t node, const CellBounds& bounds, ShapeId id, const CellBounds& extent);

@@ -1,0 +1,103 @@
+#include "gui/App.hpp"
+
+#include "gui/Actions.hpp"
+#include "gui/Panels.hpp"
+#include "gui/Screenshot.hpp"
+#include "gui/Shortcuts.hpp"
+#include "gui/platform/ImGuiInput.hpp"
+#include "gui/platform/ImGuiRenderer.hpp"
+
+#include <imgui.h>
+
+#include <chrono>
+#include <exception>
+
+namespace dropscope::gui {
+
+App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
+    : gl_(gl), options_(options), iniFile_(options.iniFile.string()) {
+    context_ = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = iniFile_.empty() ? nullptr : iniFile_.c_str();
+    configureImGuiIo(io);
+    ImGui::StyleColorsDark();
+    imguiRenderer_ = std::make_unique<ImGuiRenderer>(gl);
+    scene_ = std::make_unique<ViewportScene>(gl);
+
+    const std::optional<SceneView> view = scene.view;
+    state_.document = std::make_unique<SceneDocument>(std::move(scene));
+    state_.scenePath = options.scenePath;
+    state_.screenshotDirectory = options.screenshotDirectory;
+    if (view) {
+        state_.camera = render::Camera::fromView(*view);
+        state_.fitRequested = false;
+    }
+    const auto& media = state_.document->media();
+    for (MediumId m = 0; m < media.size(); ++m) {
+        if (m != state_.document->ambient()) {
+            state_.placementMedium = m;  // a droplet of the first medium that is not the ambient
+            break;
+        }
+    }
+    state_.say(options.scenePath.empty() ? "new scene" : "opened " + options.scenePath.string() + " - F1 for help");
+}
+
+App::~App() {
+    state_.job.cancel();
+    imguiRenderer_.reset();
+    scene_.reset();
+    ImGui::DestroyContext(context_);
+}
+
+void App::buildUi() {
+    handleShortcuts(state_);
+    drawMainMenu(state_);
+    drawScenePanel(state_);
+    drawMediaPanel(state_);
+    drawPlacementPanel(state_);
+    drawFirePanel(state_);
+    drawOctreePanel(state_);
+    drawPathPanel(state_);
+    drawResultsPanel(state_);
+    drawFilePrompts(state_);
+    drawHelpWindow(state_);
+    drawStatusBar(state_);
+    controls_.handle(state_);
+}
+
+void App::frame(const InputFrame& input) {
+    ImGui::SetCurrentContext(context_);
+    applyInput(ImGui::GetIO(), input);
+    ImGui::NewFrame();
+    updateTraces(state_);
+    buildUi();
+    ImGui::Render();
+
+    const int width = std::max(input.framebufferWidth, 1);
+    const int height = std::max(input.framebufferHeight, 1);
+    scene_->draw(state_, width, height);
+    imguiRenderer_->render(ImGui::GetDrawData());
+    if (state_.screenshot) takeScreenshot(width, height);
+}
+
+void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {
+    const ScreenshotRequest request = *state_.screenshot;
+    state_.screenshot.reset();
+    try {
+        snapshot::Image image;
+        if (request.panels) {
+            image = readFramebuffer(gl_, framebufferWidth, framebufferHeight);
+        } else {
+            const int width = request.width > 0 ? request.width : framebufferWidth;
+            const int height = request.height > 0 ? request.height : framebufferHeight;
+            image = renderViewport(gl_, *scene_, state_, width, height);
+        }
+        writePng(image, request.file);
+        state_.lastScreenshot = request.file;
+        state_.say("screenshot saved: " + std::filesystem::absolute(request.file).string());
+    } catch (const std::exception& error) {
+        state_.refuse(std::string("screenshot not saved: ") + error.what());
+    }
+}
+
+}  // namespace dropscope::gui

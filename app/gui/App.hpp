@@ -1,0 +1,57 @@
+#pragma once
+
+#include "gui/AppState.hpp"
+#include "gui/FrameClient.hpp"
+#include "gui/ViewportControls.hpp"
+#include "gui/ViewportScene.hpp"
+#include "render/GlFunctions.hpp"
+#include "scene/Scene.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+struct ImGuiContext;
+
+namespace dropscope::gui {
+
+class ImGuiRenderer;
+
+struct AppOptions {
+    std::filesystem::path scenePath;  // where the scene came from (Save writes there); may be empty
+    std::filesystem::path iniFile;    // ImGui's panel layout, remembered between runs; empty: not kept
+    std::filesystem::path screenshotDirectory = ".";  // where F12 puts its timestamped PNGs
+};
+
+// The interactive app: the 3D view with its mouse controls, the panels, the shortcuts, screenshots.
+// Everything but the window: the GLFW window drives it in dropscope, an OSMesa buffer in the UI tests,
+// with the same InputFrame either way. Owns the ImGui context; one App at a time.
+class App : public FrameClient {
+public:
+    App(const render::GlFunctions& gl, Scene scene, const AppOptions& options);
+    ~App() override;
+    App(const App&) = delete;
+    App& operator=(const App&) = delete;
+
+    void frame(const InputFrame& input) override;
+    bool quitRequested() const override { return state_.quit; }
+
+    AppState& state() { return state_; }
+    const AppState& state() const { return state_; }
+    const ViewportScene& viewport() const { return *scene_; }
+
+private:
+    void buildUi();
+    void takeScreenshot(int framebufferWidth, int framebufferHeight);
+
+    const render::GlFunctions& gl_;
+    AppOptions options_;
+    std::string iniFile_;  // ImGui keeps a pointer to this
+    ImGuiContext* context_ = nullptr;
+    std::unique_ptr<ImGuiRenderer> imguiRenderer_;
+    std::unique_ptr<ViewportScene> scene_;
+    ViewportControls controls_;
+    AppState state_;
+};
+
+}  // namespace dropscope::gui

@@ -1,0 +1,113 @@
+#pragma once
+
+#include "edit/SceneDocument.hpp"
+#include "gui/TraceJob.hpp"
+#include "render/Camera.hpp"
+#include "render/OctreeLayer.hpp"
+#include "render/SceneLayers.hpp"
+#include "transport/RayTree.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dropscope::gui {
+
+// The line at the bottom of the window: what the last action did, or why it was refused.
+struct StatusMessage {
+    std::string text;
+    bool error = false;
+};
+
+// Where a click in placement mode drops a droplet when no surface is under the cursor: the plane
+// normal to `axis` at `offset` along it (default: the horizontal plane through the scene's centre).
+struct PlacementPlane {
+    int axis = 1;  // 0 x, 1 y, 2 z
+    double offset = 0.0;
+};
+
+// The slice plane: everything on the far side of the plane normal to `axis` at `offset` is hidden
+// (render::SlicePlane); `flip` keeps the other side.
+struct SliceSettings {
+    bool enabled = false;
+    int axis = 2;
+    double offset = 0.0;
+    bool flip = false;
+};
+
+// What the fire controls start: N Monte Carlo photons, of which the first `paths` are recorded.
+struct FireSettings {
+    std::uint64_t photons = 1000;
+    std::uint64_t paths = 50;
+    std::uint64_t seed = 1;
+    bool live = true;  // trace again when the scene changes, so paths follow moved droplets
+};
+
+// A finished trace and how its compact shape ids map back to the document's slots.
+struct TraceShown {
+    TraceOutcome outcome;
+    std::vector<ShapeId> slotOfShape;
+};
+
+// The screenshot the next frame writes, after everything is drawn.
+struct ScreenshotRequest {
+    std::filesystem::path file;
+    bool panels = false;
+    int width = 0;  // 0: the window's size (panels or not)
+    int height = 0;
+};
+
+// The file-name prompt open, if any (File menu, Ctrl+O).
+enum class FilePrompt { None, Open, SaveAs, ExportPaths, Screenshot };
+
+// Everything the panels read and change. The App owns one; panels get it by reference.
+struct AppState {
+    std::unique_ptr<SceneDocument> document;
+    std::filesystem::path scenePath;  // where Save writes; empty for a new scene
+
+    render::Camera camera;
+    bool fitRequested = true;
+    render::LayerOptions layers;
+    SliceSettings slice;
+    ShapeId selected = RayHit::kNone;
+    ShapeId hovered = RayHit::kNone;
+
+    bool placementMode = false;
+    double placementRadius = 0.25;
+    MediumId placementMedium = 0;
+    PlacementPlane placementPlane;
+
+    std::size_t selectedSource = 0;
+    FireSettings fire;
+    TraceJob job;
+    bool retraceWanted = false;             // the scene changed under a shown trace
+    std::vector<ShapeId> pendingSlots;      // slotOfShape of the run in progress
+    std::uint64_t firedRevision = 0;        // the document revision the last run traced
+    std::optional<TraceShown> trace;        // the last finished Monte Carlo run
+    std::optional<RayTree> rayTree;         // the last ray fired as a tree
+    std::optional<Ray> rayTreeRay;
+    std::uint64_t rayTreeRevision = 0;
+
+    int selectedPath = -1;   // index into trace->outcome.result.paths
+    int selectedEvent = 0;   // within that path; the segment from it to the next is "selected"
+    std::optional<render::RayTraversal> traversal;  // of the selected segment
+
+    StatusMessage status;
+    bool showHelp = false;
+    FilePrompt prompt = FilePrompt::None;
+    bool quit = false;
+    std::optional<ScreenshotRequest> screenshot;
+    std::filesystem::path screenshotDirectory = ".";  // F12's timestamped PNGs
+    std::filesystem::path lastScreenshot;
+
+    std::uint64_t drawnRevision = ~std::uint64_t{0};  // the document revision the view was built from
+    bool viewDirty = true;                           // something drawn changed: rebuild the layers
+
+    void say(std::string text) { status = {std::move(text), false}; }
+    void refuse(std::string text) { status = {std::move(text), true}; }
+};
+
+}  // namespace dropscope::gui

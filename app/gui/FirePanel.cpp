@@ -1,0 +1,119 @@
+#include "gui/Actions.hpp"
+#include "gui/PanelLayout.hpp"
+#include "gui/Panels.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <exception>
+
+namespace dropscope::gui {
+
+namespace {
+
+constexpr const char* kSourceTypes[] = {"beam", "pencil (ray)", "point"};
+// Photons per click: the UI stays responsive at any count (the trace runs on its own thread), but a
+// recorded path costs memory and drawing, so those are capped.
+constexpr std::uint64_t kMaxPhotons = 1'000'000'000;
+constexpr std::uint64_t kMaxPaths = 100'000;
+
+bool inputPoint(const char* label, Point& p) {
+    std::array<double, 3> v{p.x(), p.y(), p.z()};
+    if (!ImGui::InputScalarN(label, ImGuiDataType_Double, v.data(), 3, nullptr, nullptr, "%.5g")) return false;
+    p = Point(v[0], v[1], v[2]);
+    return true;
+}
+
+void sourceEditor(AppState& state) {
+    std::vector<Source> sources = state.document->sources();
+    if (!sources.empty()) state.selectedSource = std::min(state.selectedSource, sources.size() - 1);
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+        const std::string label = "source " + std::to_string(k) + ": " + std::string(sourceTypeName(sources[k].type));
+        if (ImGui::Selectable(label.c_str(), k == state.selectedSource)) state.selectedSource = k;
+    }
+    bool changed = false;
+    if (!sources.empty()) {
+        Source& source = sources[state.selectedSource];
+        int type = static_cast<int>(source.type);
+        if (ImGui::Combo("type", &type, kSourceTypes, 3)) {
+            source.type = static_cast<SourceType>(type);
+            if (source.type == SourceType::Beam && !(source.radius > 0.0)) source.radius = 0.5;
+            changed = true;
+        }
+        changed |= inputPoint("origin (G)", source.origin);
+        Point direction = source.direction.vector();
+        if (inputPoint("direction (A)", direction)) {
+            if (Direction(direction)) {
+                source.direction = Direction(direction);
+                changed = true;
+            } else {
+                state.refuse("a direction must be a non-zero vector");
+            }
+        }
+        if (source.type == SourceType::Beam) {
+            changed |= ImGui::InputDouble("beam radius", &source.radius, 0.05, 0.5, "%.4g");
+            source.radius = std::max(source.radius, 1e-9);
+        }
+    }
+    if (ImGui::Button("Add source")) {
+        Source source;
+        source.origin = Point(state.camera.eye.x, state.camera.eye.y, state.camera.eye.z);
+        source.direction = Direction(Point(state.camera.target.x, state.camera.target.y, state.camera.target.z) - source.origin);
+        sources.push_back(source);
+        state.selectedSource = sources.size() - 1;
+        changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Remove source") && !sources.empty()) {
+        sources.erase(sources.begin() + static_cast<std::ptrdiff_t>(state.selectedSource));
+        state.selectedSource = 0;
+        changed = true;
+    }
+    if (changed) {
+        try {
+            state.document->setSources(std::move(sources));
+            state.viewDirty = true;
+        } catch (const std::exception& error) {
+            state.refuse(std::string("source not changed: ") + error.what());
+        }
+    }
+}
+
+void fireControls(AppState& state) {
+    const std::uint64_t one = 1;
+    ImGui::InputScalar("photons", ImGuiDataType_U64, &state.fire.photons, &one);
+    ImGui::InputScalar("paths kept", ImGuiDataType_U64, &state.fire.paths, &one);
+    ImGui::InputScalar("seed", ImGuiDataType_U64, &state.fire.seed, &one);
+    state.fire.photons = std::clamp<std::uint64_t>(state.fire.photons, 1, kMaxPhotons);
+    state.fire.paths = std::min(state.fire.paths, kMaxPaths);
+    ImGui::Checkbox("live: trace again when the scene changes", &state.fire.live);
+    if (ImGui::Button("Fire photons (Space)")) fireTrace(state);
+    ImGui::SameLine();
+    if (ImGui::Button("Fire ray tree (R)")) fireRayTree(state);
+    if (state.job.running()) {
+        const TraceJobProgress progress = state.job.progress();
+        const float fraction =
+            progress.total > 0 ? static_cast<float>(progress.done) / static_cast<float>(progress.total) : 0.0f;
+        ImGui::ProgressBar(fraction, ImVec2(-70.0f, 0.0f));
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) cancelTrace(state);
+    }
+}
+
+}  // namespace
+
+void drawFirePanel(AppState& state) {
+    placeNextPanel(PanelSide::Right, 0.0f, 0.30f);
+    if (!ImGui::Begin("Fire")) {
+        ImGui::End();
+        return;
+    }
+    sourceEditor(state);
+    ImGui::Separator();
+    fireControls(state);
+    ImGui::End();
+}
+
+}  // namespace dropscope::gui

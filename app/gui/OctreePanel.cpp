@@ -1,0 +1,91 @@
+#include "gui/PanelLayout.hpp"
+#include "gui/Panels.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace dropscope::gui {
+
+namespace {
+
+void statisticsTable(const Octree& octree) {
+    if (!ImGui::BeginTable("levels", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY,
+                           ImVec2(0.0f, 130.0f))) {
+        return;
+    }
+    ImGui::TableSetupColumn("level");
+    ImGui::TableSetupColumn("cells");
+    ImGui::TableSetupColumn("leaves");
+    ImGui::TableSetupColumn("shapes stored");
+    ImGui::TableHeadersRow();
+    for (const LevelStatistics& level : octree.statistics()) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%d", level.level);
+        ImGui::TableNextColumn();
+        ImGui::Text("%zu", level.cells);
+        ImGui::TableNextColumn();
+        ImGui::Text("%zu", level.leaves);
+        ImGui::TableNextColumn();
+        ImGui::Text("%zu", level.shapesStored);
+    }
+    ImGui::EndTable();
+}
+
+void traversalList(AppState& state) {
+    if (!state.traversal) {
+        ImGui::TextDisabled("select a path event (Paths panel) to see its segment's traversal");
+        return;
+    }
+    const TraversalRecord& record = state.traversal->record;
+    if (ImGui::Checkbox("draw the traversal", &state.layers.traversal)) state.viewDirty = true;
+    ImGui::Text("%zu cells visited, %zu shape tests, hit %s", record.cells.size(), record.shapesTested.size(),
+                record.hit ? std::to_string(record.hit.shape).c_str() : "nothing");
+    ImGui::BeginChild("visits", ImVec2(0.0f, 110.0f), true);
+    for (std::size_t k = 0; k < record.cells.size(); ++k) {
+        const CellVisit& visit = record.cells[k];
+        ImGui::Text("%zu: level %d  [%.3g %.3g %.3g] - [%.3g %.3g %.3g]", k, visit.level, visit.bounds.min().x(),
+                    visit.bounds.min().y(), visit.bounds.min().z(), visit.bounds.max().x(), visit.bounds.max().y(),
+                    visit.bounds.max().z());
+    }
+    std::string tested;
+    for (ShapeId id : record.shapesTested) tested += std::to_string(id) + " ";
+    ImGui::TextWrapped("shapes tested (traced scene's ids): %s", tested.c_str());
+    ImGui::EndChild();
+}
+
+}  // namespace
+
+void drawOctreePanel(AppState& state) {
+    placeNextPanel(PanelSide::Right, 0.30f, 0.28f);
+    if (!ImGui::Begin("Octree")) {
+        ImGui::End();
+        return;
+    }
+    const Octree& octree = state.document->octree();
+    const int deepest = std::max(0, static_cast<int>(octree.statistics().size()) - 1);
+    render::OctreeFilter& filter = state.layers.octreeFilter;
+    const bool toggled = ImGui::Checkbox("show cells (C)", &state.layers.octree);
+    bool changed = ImGui::SliderInt("depth ([ ])", &filter.level, 0, deepest);
+    int mode = filter.mode == render::OctreeFilter::Mode::UpToLevel    ? 1
+               : filter.mode == render::OctreeFilter::Mode::LeavesOnly ? 2
+                                                                       : 0;
+    changed |= ImGui::RadioButton("only level", &mode, 0);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("up to level", &mode, 1);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("leaves", &mode, 2);
+    filter.mode = mode == 1   ? render::OctreeFilter::Mode::UpToLevel
+                  : mode == 2 ? render::OctreeFilter::Mode::LeavesOnly
+                              : render::OctreeFilter::Mode::OnlyLevel;
+    changed |= ImGui::Checkbox("occupancy colour", &filter.occupancyColour);
+    if (changed) state.layers.octree = true;  // moving a filter means: show me
+    state.viewDirty |= toggled || changed;
+    statisticsTable(octree);
+    ImGui::Separator();
+    traversalList(state);
+    ImGui::End();
+}
+
+}  // namespace dropscope::gui

@@ -1,0 +1,120 @@
+#include "gui/Actions.hpp"
+#include "gui/PanelLayout.hpp"
+#include "gui/Panels.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <string>
+
+namespace dropscope::gui {
+
+namespace {
+
+std::string fateName(PhotonFate fate) {
+    switch (fate) {
+    case PhotonFate::Escaped: return "escaped";
+    case PhotonFate::Absorbed: return "absorbed";
+    case PhotonFate::Lost: return "lost";
+    }
+    return "?";
+}
+
+void photonList(AppState& state) {
+    const auto& paths = state.trace->outcome.result.paths;
+    ImGui::BeginChild("photons", ImVec2(0.0f, 110.0f), true);
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(paths.size()));
+    while (clipper.Step()) {
+        for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
+            const PhotonPath& path = paths[static_cast<std::size_t>(row)];
+            const std::string label = "photon " + std::to_string(path.photon) + ": " + fateName(path.fate) + ", " +
+                                      std::to_string(path.events.size()) + " events";
+            if (ImGui::Selectable(label.c_str(), row == state.selectedPath)) selectEvent(state, row, 0);
+        }
+    }
+    ImGui::EndChild();
+}
+
+std::string shapeText(const AppState& state, ShapeId shape) {
+    if (shape == RayHit::kNone) return "-";
+    const auto& slots = state.trace->slotOfShape;
+    return std::to_string(shape < slots.size() ? slots[shape] : shape);
+}
+
+void eventTable(AppState& state) {
+    const PhotonPath& path = state.trace->outcome.result.paths[static_cast<std::size_t>(state.selectedPath)];
+    const auto& media = state.trace->outcome.scene.media;
+    if (ImGui::ArrowButton("previous", ImGuiDir_Left)) stepEvent(state, -1);
+    ImGui::SameLine();
+    if (ImGui::ArrowButton("next", ImGuiDir_Right)) stepEvent(state, +1);
+    ImGui::SameLine();
+    ImGui::Text("event %d of %zu (Left/Right keys)", state.selectedEvent + 1, path.events.size());
+    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                                  ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("events", 8, flags, ImVec2(0.0f, 200.0f))) return;
+    for (const char* header : {"#", "type", "position", "direction", "shape", "n1 -> n2", "R", "weight"}) {
+        ImGui::TableSetupColumn(header);
+    }
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableHeadersRow();
+    for (std::size_t k = 0; k < path.events.size(); ++k) {
+        const Event& event = path.events[k];
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        const std::string index = std::to_string(k);
+        if (ImGui::Selectable(index.c_str(), static_cast<int>(k) == state.selectedEvent,
+                              ImGuiSelectableFlags_SpanAllColumns)) {
+            selectEvent(state, state.selectedPath, static_cast<int>(k));
+        }
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(std::string(eventTypeName(event.type)).c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%.4g %.4g %.4g", event.position.x(), event.position.y(), event.position.z());
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3f %.3f %.3f", event.direction.x(), event.direction.y(), event.direction.z());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(shapeText(state, event.shape).c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%.4g -> %.4g", media.at(event.from).n, media.at(event.to).n);
+        ImGui::TableNextColumn();
+        if (std::isnan(event.reflectance)) {
+            ImGui::TextUnformatted("-");
+        } else {
+            ImGui::Text("%.4f", event.reflectance);
+        }
+        ImGui::TableNextColumn();
+        ImGui::Text("%.4g", event.weight);
+    }
+    ImGui::EndTable();
+}
+
+}  // namespace
+
+void drawPathPanel(AppState& state) {
+    placeNextPanel(PanelSide::Right, 0.58f, 0.24f);
+    if (!ImGui::Begin("Paths")) {
+        ImGui::End();
+        return;
+    }
+    bool changed = ImGui::Checkbox("paths", &state.layers.paths);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("markers", &state.layers.markers);
+    ImGui::SameLine();
+    bool byEvent = state.layers.pathColouring == render::PathColouring::Event;
+    if (ImGui::Checkbox("colour by event", &byEvent)) {
+        state.layers.pathColouring = byEvent ? render::PathColouring::Event : render::PathColouring::Weight;
+        changed = true;
+    }
+    state.viewDirty |= changed;
+    if (!state.trace || state.trace->outcome.result.paths.empty()) {
+        ImGui::TextDisabled("fire photons (Space) with 'paths kept' > 0 to inspect them here");
+        ImGui::End();
+        return;
+    }
+    photonList(state);
+    if (state.selectedPath >= 0) eventTable(state);
+    ImGui::End();
+}
+
+}  // namespace dropscope::gui

@@ -1,0 +1,44 @@
+#include "gui/PanelLayout.hpp"
+#include "gui/Panels.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace dropscope::gui {
+
+namespace {
+
+constexpr const char* kAxes[] = {"x", "y", "z"};
+
+}  // namespace
+
+void drawPlacementPanel(AppState& state) {
+    placeNextPanel(PanelSide::Left, 0.80f, 0.20f);
+    if (!ImGui::Begin("Place")) {
+        ImGui::End();
+        return;
+    }
+    ImGui::Checkbox("placement mode (P)", &state.placementMode);
+    ImGui::InputDouble("radius", &state.placementRadius, 0.01, 0.1, "%.4g");
+    state.placementRadius = std::max(state.placementRadius, 1e-9);
+    const auto& media = state.document->media();
+    state.placementMedium = std::min<MediumId>(state.placementMedium, static_cast<MediumId>(media.size() - 1));
+    if (ImGui::BeginCombo("medium", media[state.placementMedium].name.c_str())) {
+        for (MediumId m = 0; m < media.size(); ++m) {
+            if (ImGui::Selectable(media[m].name.c_str(), m == state.placementMedium)) state.placementMedium = m;
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::Combo("plane normal", &state.placementPlane.axis, kAxes, 3);
+    ImGui::InputDouble("plane at", &state.placementPlane.offset, 0.1, 1.0, "%.4g");
+    ImGui::Separator();
+    bool changed = ImGui::Checkbox("slice plane (L)", &state.slice.enabled);
+    changed |= ImGui::Combo("slice normal", &state.slice.axis, kAxes, 3);
+    changed |= ImGui::DragScalar("slice at", ImGuiDataType_Double, &state.slice.offset, 0.01f);
+    changed |= ImGui::Checkbox("keep the other side", &state.slice.flip);
+    state.viewDirty |= changed;
+    ImGui::End();
+}
+
+}  // namespace dropscope::gui

@@ -1,0 +1,200 @@
+#include "edit/ShapeSpec.hpp"
+#include "gui/Actions.hpp"
+#include "gui/PanelLayout.hpp"
+#include "gui/Panels.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <exception>
+
+namespace dropscope::gui {
+
+namespace {
+
+// What the shape list's filter box matches: "12 sphere d1 water".
+std::string listLabel(const SceneDocument& document, ShapeId id, const Shape& shape) {
+    std::string label = std::to_string(id) + " " + std::string(shape.typeName());
+    if (!document.nameOf(id).empty()) label += " " + document.nameOf(id);
+    return label + " " + document.media().at(shape.mediumId()).name;
+}
+
+bool mediumCombo(const char* label, const SceneDocument& document, MediumId& medium) {
+    bool changed = false;
+    const auto& media = document.media();
+    if (ImGui::BeginCombo(label, media.at(std::min<std::size_t>(medium, media.size() - 1)).name.c_str())) {
+        for (std::size_t m = 0; m < media.size(); ++m) {
+            if (ImGui::Selectable(media[m].name.c_str(), m == medium)) {
+                medium = static_cast<MediumId>(m);
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+bool inputVector(const char* label, Eigen::Vector3d& v) {
+    std::array<double, 3> values{v.x(), v.y(), v.z()};
+    if (!ImGui::InputScalarN(label, ImGuiDataType_Double, values.data(), 3, nullptr, nullptr, "%.6g")) return false;
+    v = Eigen::Vector3d(values[0], values[1], values[2]);
+    return true;
+}
+
+void shapeList(AppState& state) {
+    static ImGuiTextFilter filter;
+    filter.Draw("filter", 180.0f);
+    const SceneDocument& document = *state.document;
+    const Octree& octree = document.octree();
+    std::vector<ShapeId> shown;
+    for (ShapeId id = 0; id < octree.slotCount(); ++id) {
+        const Shape* shape = octree.shape(id);
+        if (shape && (!filter.IsActive() || filter.PassFilter(listLabel(document, id, *shape).c_str()))) shown.push_back(id);
+    }
+    ImGui::BeginChild("shapes", ImVec2(0.0f, 150.0f), true);
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(shown.size()));
+    while (clipper.Step()) {
+        for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
+            const ShapeId id = shown[static_cast<std::size_t>(row)];
+            const std::string label = listLabel(document, id, *octree.shape(id));
+            if (ImGui::Selectable(label.c_str(), id == state.selected)) {
+                state.selected = id;
+                state.viewDirty = true;
+            }
+        }
+    }
+    ImGui::EndChild();
+    ImGui::Text("%zu shown of %zu", shown.size(), document.shapeCount());
+}
+
+void selectedShapeEditor(AppState& state) {
+    const Shape* shape = state.document->octree().shape(state.selected);
+    if (!shape) {
+        ImGui::TextDisabled("click a shape (or a row above) to edit it");
+        return;
+    }
+    ShapeSpec spec = describeShape(*shape);
+    ImGui::Text("shape %u: %s", state.selected, std::string(shape->typeName()).c_str());
+    bool changed = false;
+    bool active = false;
+    auto track = [&](bool edited) {
+        changed |= edited;
+        active |= ImGui::IsItemActive() && !ImGui::IsItemActivated();
+    };
+    if (spec.kind == ShapeKind::Box) {
+        track(inputVector("min", spec.boxMin));
+        track(inputVector("max", spec.boxMax));
+    } else {
+        track(inputVector("centre", spec.center));
+        if (spec.kind == ShapeKind::Sphere) {
+            track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"));
+        } else {
+            track(inputVector("semi-axes", spec.semiAxes));
+            track(inputVector("rotation axis", spec.rotationAxis));
+            track(ImGui::InputDouble("angle (deg)", &spec.rotationAngleDeg, 1.0, 10.0, "%.4g"));
+        }
+    }
+    track(mediumCombo("medium", *state.document, spec.medium));
+    if (changed) {
+        try {
+            // Typing into one field is one undo step: later changes while it stays active merge.
+            state.document->modifyShape(state.selected, spec, active);
+        } catch (const std::exception& error) {
+            state.refuse(std::string("not changed: ") + error.what());
+        }
+    }
+    if (ImGui::Button("Delete")) deleteSelected(state);
+}
+
+void addButtons(AppState& state) {
+    const glm::dvec3 target = state.camera.target;
+    ShapeSpec spec;
+    spec.center = Point(target.x, target.y, target.z);
+    spec.radius = state.placementRadius;
+    spec.semiAxes = Eigen::Vector3d(1.5, 1.0, 0.7) * state.placementRadius;
+    spec.boxMin = spec.center - Eigen::Vector3d::Constant(2.0 * state.placementRadius);
+    spec.boxMax = spec.center + Eigen::Vector3d::Constant(2.0 * state.placementRadius);
+    spec.medium = state.placementMedium;
+    const std::array<std::pair<const char*, ShapeKind>, 3> kinds{
+        {{"Add sphere", ShapeKind::Sphere}, {"Add ellipsoid", ShapeKind::Ellipsoid}, {"Add box", ShapeKind::Box}}};
+    for (const auto& [label, kind] : kinds) {
+        if (ImGui::Button(label)) {
+            spec.kind = kind;
+            try {
+                state.selected = state.document->addShape(spec);
+                state.say("added shape " + std::to_string(state.selected) + " at the view's target");
+            } catch (const std::exception& error) {
+                state.refuse(std::string("not added: ") + error.what());
+            }
+        }
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+}
+
+void cloudGenerator(AppState& state) {
+    static Eigen::Vector3d lower(-1, -1, -1);
+    static Eigen::Vector3d upper(1, 1, 1);
+    static int count = 100;
+    static double radiusMin = 0.02;
+    static double radiusMax = 0.06;
+    static int seed = 1;
+    if (!ImGui::TreeNode("Generate droplet cloud")) return;
+    inputVector("region min", lower);
+    inputVector("region max", upper);
+    ImGui::InputInt("count", &count);
+    ImGui::InputDouble("radius min", &radiusMin, 0.0, 0.0, "%.4g");
+    ImGui::InputDouble("radius max", &radiusMax, 0.0, 0.0, "%.4g");
+    ImGui::InputInt("seed", &seed);
+    if (ImGui::Button("Region = scene bounds")) {
+        Eigen::AlignedBox3d box;
+        for (const auto& shape : state.document->octree().shapes()) {
+            if (shape) box.extend(shape->bounds());
+        }
+        if (!box.isEmpty()) {
+            lower = box.min();
+            upper = box.max();
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Generate")) {
+        try {
+            if (count < 0) throw std::invalid_argument("count must be >= 0");
+            if (!(radiusMin > 0.0) || !(radiusMax >= radiusMin)) throw std::invalid_argument("need 0 < radius min <= radius max");
+            if (!(lower.array() < upper.array()).all()) throw std::invalid_argument("region min must be below max on every axis");
+            DropletCloudSpec spec;
+            spec.region = Eigen::AlignedBox3d(lower, upper);
+            spec.count = static_cast<std::uint64_t>(count);
+            spec.radius = radiusMax > radiusMin ? RadiusDistribution::uniform(radiusMin, radiusMax)
+                                                : RadiusDistribution::fixed(radiusMin);
+            spec.seed = static_cast<std::uint64_t>(std::max(seed, 0));
+            const auto ids = state.document->generateCloud(spec, state.placementMedium);
+            state.say("generated " + std::to_string(ids.size()) + " droplets" +
+                      (ids.size() < static_cast<std::size_t>(count) ? " (the region filled up)" : ""));
+        } catch (const std::exception& error) {
+            state.refuse(std::string("no cloud: ") + error.what());
+        }
+    }
+    ImGui::TreePop();
+}
+
+}  // namespace
+
+void drawScenePanel(AppState& state) {
+    placeNextPanel(PanelSide::Left, 0.0f, 0.62f);
+    if (!ImGui::Begin("Scene")) {
+        ImGui::End();
+        return;
+    }
+    shapeList(state);
+    ImGui::Separator();
+    selectedShapeEditor(state);
+    ImGui::Separator();
+    addButtons(state);
+    cloudGenerator(state);
+    ImGui::End();
+}
+
+}  // namespace dropscope::gui

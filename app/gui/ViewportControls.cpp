@@ -1,0 +1,186 @@
+#include "gui/ViewportControls.hpp"
+
+#include "edit/ShapeSpec.hpp"
+#include "gui/Actions.hpp"
+#include "gui/PanelLayout.hpp"
+#include "gui/Picking.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace dropscope::gui {
+
+namespace {
+
+constexpr float kClickTolerance = 4.0f;   // pixels a press may wander and still be a click
+constexpr double kOrbitPerPixel = 0.008;  // radians
+constexpr double kZoomPerWheelLine = 0.88;
+
+std::string describe(const AppState& state, ShapeId id, const char* separator) {
+    const SceneDocument& document = *state.document;
+    const Shape& shape = *document.octree().shape(id);
+    std::ostringstream text;
+    text << "shape " << id;
+    if (!document.nameOf(id).empty()) text << " \"" << document.nameOf(id) << '"';
+    text << separator << shape.typeName() << ", " << document.media().at(shape.mediumId()).name;
+    return text.str();
+}
+
+// A point for the source keys: on the shape under the cursor, else on the placement plane.
+std::optional<Point> pointUnderCursor(const AppState& state, const Ray& ray) {
+    if (const auto pick = pickShape(state, ray)) return pick->point;
+    return rayPlaneAxis(ray, state.placementPlane.axis, state.placementPlane.offset);
+}
+
+}  // namespace
+
+void ViewportControls::handle(AppState& state) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const int width = static_cast<int>(io.DisplaySize.x);
+    const int height = static_cast<int>(io.DisplaySize.y);
+    const bool mouseValid = ImGui::IsMousePosValid(&io.MousePos) && width > 0 && height > 0;
+    if (!mouseValid) {
+        state.hovered = RayHit::kNone;
+        return;
+    }
+    const Ray ray = cameraRay(state.camera, io.MousePos.x, io.MousePos.y, width, height);
+    const bool mine = !io.WantCaptureMouse || drag_ != Drag::None;
+
+    if (drag_ == Drag::None && mine) {
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) press(state, ray);
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) {
+            drag_ = Drag::Pan;
+        }
+        if (io.MouseWheel != 0.0f) state.camera.zoom(std::pow(kZoomPerWheelLine, static_cast<double>(io.MouseWheel)));
+    }
+    if (drag_ != Drag::None) {
+        dragTo(state, ray, io.MouseDelta.x, io.MouseDelta.y);
+        const bool held = io.MouseDown[ImGuiMouseButton_Left] || io.MouseDown[ImGuiMouseButton_Right] ||
+                          io.MouseDown[ImGuiMouseButton_Middle];
+        if (!held) {
+            if (drag_ == Drag::Pending) click(state, ray);
+            drag_ = Drag::None;
+            moving_ = RayHit::kNone;
+        }
+    }
+    if (mine) {
+        hover(state, ray);
+        if (!io.WantTextInput) sourceKeys(state, ray);
+    } else {
+        state.hovered = RayHit::kNone;
+    }
+}
+
+void ViewportControls::press(AppState& state, const Ray& ray) {
+    drag_ = Drag::Pending;
+    travelled_ = 0.0f;
+    if (state.placementMode || state.selected == RayHit::kNone) return;
+    const auto pick = pickShape(state, ray);
+    const Shape* shape = state.document->octree().shape(state.selected);
+    if (!pick || pick->shape != state.selected || !shape || shape->kind() == ShapeKind::Box) return;
+    // Grabbed the selected droplet: it slides in the plane parallel to the placement plane through its centre.
+    const ShapeSpec spec = describeShape(*shape);
+    const int axis = state.placementPlane.axis;
+    if (const auto grabbed = rayPlaneAxis(ray, axis, spec.center[axis])) {
+        grabOffset_ = spec.center - *grabbed;
+        moving_ = state.selected;
+    }
+}
+
+void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float dy) {
+    travelled_ += std::abs(dx) + std::abs(dy);
+    if (drag_ == Drag::Pending && travelled_ > kClickTolerance) {
+        drag_ = moving_ != RayHit::kNone ? Drag::MoveShape : Drag::Orbit;
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    switch (drag_) {
+    case Drag::Orbit:
+        state.camera.orbit(-kOrbitPerPixel * dx, -kOrbitPerPixel * dy);
+        break;
+    case Drag::Pan:
+        state.camera.pan(-dx / io.DisplaySize.y, dy / io.DisplaySize.y);
+        break;
+    case Drag::MoveShape: {
+        const Shape* shape = state.document->octree().shape(moving_);
+        if (!shape) break;
+        ShapeSpec spec = describeShape(*shape);
+        const int axis = state.placementPlane.axis;
+        const auto on = rayPlaneAxis(ray, axis, spec.center[axis]);
+        if (!on) break;
+        spec.center = *on + grabOffset_;
+        try {
+            state.document->modifyShape(moving_, spec, true);
+            state.say("moving shape " + std::to_string(moving_));
+        } catch (const std::exception& error) {
+            state.refuse(std::string("not moved there: ") + error.what());
+        }
+        break;
+    }
+    default:
+        break;
+    }
+}
+
+void ViewportControls::click(AppState& state, const Ray& ray) {
+    if (state.placementMode) {
+        if (const auto centre = placementCentre(state, ray)) {
+            placeDroplet(state, *centre);
+        } else {
+            state.refuse("no surface or placement plane under the cursor");
+        }
+        return;
+    }
+    const auto pick = pickShape(state, ray);
+    state.selected = pick ? pick->shape : RayHit::kNone;
+    state.viewDirty = true;
+    if (pick) state.say("selected " + describe(state, pick->shape, ": "));
+}
+
+void ViewportControls::hover(AppState& state, const Ray& ray) {
+    if (drag_ == Drag::Orbit || drag_ == Drag::Pan) return;
+    const auto pick = pickShape(state, ray);
+    state.hovered = pick ? pick->shape : RayHit::kNone;
+    if (state.placementMode) {
+        const auto centre = placementCentre(state, ray);
+        ImGui::BeginTooltip();
+        if (!centre) {
+            ImGui::TextUnformatted("no surface or placement plane here");
+        } else {
+            ShapeSpec spec;
+            spec.center = *centre;
+            spec.radius = state.placementRadius;
+            spec.medium = state.placementMedium;
+            const auto refusal = state.document->checkPlacement(spec);
+            ImGui::Text("droplet r = %g at (%.3g, %.3g, %.3g)", state.placementRadius, centre->x(), centre->y(),
+                        centre->z());
+            if (refusal) ImGui::TextColored(kErrorColour, "refused: %s", refusal->c_str());
+        }
+        ImGui::EndTooltip();
+        return;
+    }
+    if (pick) ImGui::SetTooltip("%s", describe(state, pick->shape, "\n").c_str());
+}
+
+void ViewportControls::sourceKeys(AppState& state, const Ray& ray) {
+    const bool move = ImGui::IsKeyPressed('G', false);
+    const bool aim = ImGui::IsKeyPressed('A', false);
+    if (!move && !aim) return;
+    std::vector<Source> sources = state.document->sources();
+    if (sources.empty()) return state.refuse("no source to move or aim: add one in the Sources panel");
+    const auto point = pointUnderCursor(state, ray);
+    if (!point) return state.refuse("nothing under the cursor to move or aim the source to");
+    Source& source = sources[std::min(state.selectedSource, sources.size() - 1)];
+    if (move) {
+        source.origin = *point;
+    } else {
+        const Direction direction(*point - source.origin);
+        if (!direction) return state.refuse("the source is at that point already");
+        source.direction = direction;
+    }
+    state.document->setSources(std::move(sources));
+    state.say(move ? "source moved to the point under the cursor" : "source aimed at the point under the cursor");
+}
+
+}  // namespace dropscope::gui

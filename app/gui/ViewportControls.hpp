@@ -1,0 +1,30 @@
+#pragma once
+
+#include "gui/AppState.hpp"
+
+#include <optional>
+
+namespace dropscope::gui {
+
+// The mouse in the 3D view: orbit, pan, zoom, click to select or place, drag the selected droplet,
+// hover tooltip; and the keys that act on the point under the cursor (move or aim a source). Input
+// over a panel belongs to the panel (ImGui's WantCaptureMouse).
+class ViewportControls {
+public:
+    void handle(AppState& state);
+
+private:
+    enum class Drag { None, Pending, Orbit, Pan, MoveShape };
+    void press(AppState& state, const Ray& ray);
+    void dragTo(AppState& state, const Ray& ray, float dx, float dy);
+    void click(AppState& state, const Ray& ray);
+    void hover(AppState& state, const Ray& ray);
+    void sourceKeys(AppState& state, const Ray& ray);
+
+    Drag drag_ = Drag::None;
+    float travelled_ = 0.0f;       // pixels moved since the press
+    Point grabOffset_ = Point::Zero();  // droplet centre minus the grabbed point on the drag plane
+    ShapeId moving_ = RayHit::kNone;
+};
+
+}  // namespace dropscope::gui

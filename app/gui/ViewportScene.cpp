@@ -1,0 +1,69 @@
+#include "gui/ViewportScene.hpp"
+
+#include "gui/Picking.hpp"
+#include "render/Colour.hpp"
+
+namespace dropscope::gui {
+
+namespace {
+
+// The marker of the event the path inspector steps through, as a multiple of the ordinary markers.
+constexpr double kCurrentEventMarkerScale = 2.5;
+
+}  // namespace
+
+Eigen::AlignedBox3d viewBounds(const AppState& state, const Eigen::AlignedBox3d& shapes) {
+    Eigen::AlignedBox3d box = shapes;
+    for (const Source& source : state.document->sources()) box.extend(source.origin);
+    const double reach = render::kEscapeLength * shapes.diagonal().norm();
+    box.extend(box.min() - Eigen::Vector3d::Constant(reach));
+    box.extend(box.max() + Eigen::Vector3d::Constant(reach));
+    return box;
+}
+
+void ViewportScene::rebuild(AppState& state) {
+    const SceneDocument& document = *state.document;
+    const Octree& octree = document.octree();
+    bounds_ = render::sceneBounds(octree.shapes());
+    const render::Anchor anchor{bounds_.center()};
+    renderer_.setAnchor(anchor);
+
+    render::LayerOptions options = state.layers;
+    options.selected = state.selected;
+    options.slice = slicePlane(state.slice);
+    const render::RayTraversal* traversal = state.traversal ? &*state.traversal : nullptr;
+    options.traversal = options.traversal && traversal;
+    render::LayerInputs inputs{octree, document.sources(), bounds_,
+                               Eigen::Vector3d(state.camera.up.x, state.camera.up.y, state.camera.up.z)};
+    if (state.trace) inputs.paths = &state.trace->outcome.result.paths;
+    if (state.rayTree) inputs.rayTree = &*state.rayTree;
+    inputs.traversal = traversal;
+    layers_ = render::buildSceneLayers(inputs, options, anchor);
+
+    if (state.trace && state.selectedPath >= 0) {
+        const auto& events = state.trace->outcome.result.paths[static_cast<std::size_t>(state.selectedPath)].events;
+        if (!events.empty()) {
+            const double radius = kCurrentEventMarkerScale * render::kMarkerRadius * bounds_.diagonal().norm();
+            const Point at = events[static_cast<std::size_t>(state.selectedEvent)].position;
+            layers_.markers.push_back(render::sphereInstance(at, radius, anchor, render::kHighlight));
+        }
+    }
+    render::uploadScene(renderer_, octree.shapes(), layers_, options);
+    shapesDrawn_ = octree.shapeCount();
+    ++rebuilds_;
+    state.drawnRevision = document.revision();
+    state.viewDirty = false;
+}
+
+void ViewportScene::draw(AppState& state, int width, int height) {
+    if (state.viewDirty || state.drawnRevision != state.document->revision()) rebuild(state);
+    const double aspect = static_cast<double>(width) / static_cast<double>(std::max(height, 1));
+    if (state.fitRequested) {
+        state.camera.fitTo(bounds_, aspect);
+        state.fitRequested = false;
+    }
+    state.camera.clipTo(viewBounds(state, bounds_));
+    renderer_.draw(state.camera, state.layers.render, width, height);
+}
+
+}  // namespace dropscope::gui

@@ -1,0 +1,156 @@
+// Frame time of the interactive app (issue 6): the real App, headless through OSMesa (llvmpipe) at
+// 1280x800, on a cloud of 1e4 water droplets with 1e3 recorded photon paths, every panel open and the
+// cursor over the 3D view (so each frame also picks the shape under it through the octree for the
+// tooltip). A frame is App::frame followed by glFinish. Measured, interleaved so that load drift reaches
+// all alike:
+//   steady   nothing changes: ImGui's panels, the pick, and the renderer's draw of uploaded data;
+//   rebuild  every frame rebuilds the layers (what a change of a view option costs);
+//   reference ViewportScene::draw alone on the same state: the 3D view without ImGui and picking.
+// docs/performance.md ("The app") has the figures.
+//
+// Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--png FILE]
+#include "gui/App.hpp"
+#include "gui/Screenshot.hpp"
+#include "gui/ViewportScene.hpp"
+#include "octree/CountArgument.hpp"
+#include "octree/Measure.hpp"
+#include "scene/SceneLoader.hpp"
+#include "snapshot/OsmesaContext.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace dropscope::bench {
+
+namespace {
+
+constexpr int kWidth = 1280;
+constexpr int kHeight = 800;
+
+struct Options {
+    int frames = 40;
+    std::uint64_t droplets = 10'000;
+    std::uint64_t paths = 1'000;
+    std::string png;
+};
+
+Options parse(int argc, char** argv) {
+    Options options;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string flag = argv[i];
+        if (flag == "--frames") options.frames = static_cast<int>(parseCount(flag, argv[i + 1]));
+        else if (flag == "--droplets") options.droplets = parseCount(flag, argv[i + 1]);
+        else if (flag == "--paths") options.paths = parseCount(flag, argv[i + 1]);
+        else if (flag == "--png") options.png = argv[i + 1];
+        else throw std::invalid_argument("unknown option " + flag);
+    }
+    return options;
+}
+
+// Droplets of radius 0.01-0.03 at volume fraction about 1e-3 of a 2-unit cube, lit by a beam along +z.
+std::string cloudScene(std::uint64_t droplets) {
+    return R"({"dropscope": 1, "ambient": "air", "media": {"air": {"n": 1.000278}, "water": {"n": 1.3337}},
+      "sources": [{"type": "beam", "origin": [0, 0, -3], "direction": [0, 0, 1], "radius": 0.8}],
+      "generators": [{"type": "droplet_cloud", "region": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "count": )" +
+           std::to_string(droplets) + R"(, "radius": {"distribution": "uniform", "min": 0.01, "max": 0.03},
+      "medium": "water", "seed": 5}]})";
+}
+
+struct Series {
+    std::vector<double> ms;
+    double median() {
+        std::sort(ms.begin(), ms.end());
+        return ms[ms.size() / 2];
+    }
+    double minimum() const { return *std::min_element(ms.begin(), ms.end()); }
+};
+
+int run(const Options& options) {
+    snapshot::OsmesaContext context(kWidth, kHeight);
+    std::cout << "context: " << context.gl().describe() << "\n";
+    Stopwatch loading;
+    gui::App app(context.gl(), parseScene(cloudScene(options.droplets), "cloud"), {});
+    std::printf("scene: %zu droplets, app ready in %.2f s\n", app.state().document->shapeCount(), loading.seconds());
+
+    gui::InputFrame input;
+    input.windowWidth = input.framebufferWidth = kWidth;
+    input.windowHeight = input.framebufferHeight = kHeight;
+    input.mouseInside = true;
+    input.mouseX = 700.0f;
+    input.mouseY = 380.0f;
+    for (int k = 0; k < 3; ++k) app.frame(input);
+
+    app.state().fire.photons = options.paths;
+    app.state().fire.paths = options.paths;
+    app.state().layers.octree = true;
+    app.state().layers.octreeFilter.level = 2;
+    input.keysDown.set(gui::kKeySpace);
+    app.frame(input);
+    input.keysDown.reset(gui::kKeySpace);
+    Stopwatch tracing;
+    while (app.state().job.running() || !app.state().trace) {
+        app.frame(input);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    std::printf("traced %zu paths (%zu line vertices drawn) in %.2f s of frames\n",
+                app.state().trace->outcome.result.paths.size(), app.viewport().layers().lines.vertices().size(),
+                tracing.seconds());
+
+    gui::ViewportScene reference(context.gl());
+    Series steady, rebuild, alone;
+    for (int k = 0; k < options.frames; ++k) {
+        {
+            Stopwatch watch;
+            app.frame(input);
+            context.gl().Finish();
+            steady.ms.push_back(1e3 * watch.seconds());
+        }
+        {
+            app.state().viewDirty = true;
+            Stopwatch watch;
+            app.frame(input);
+            context.gl().Finish();
+            rebuild.ms.push_back(1e3 * watch.seconds());
+        }
+        {
+            Stopwatch watch;
+            reference.draw(app.state(), kWidth, kHeight);
+            context.gl().Finish();
+            alone.ms.push_back(1e3 * watch.seconds());
+        }
+    }
+    const double reference3d = alone.median();
+    std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, steady (panels + pick + 3D view)", steady.median(),
+                steady.minimum(), steady.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, layers rebuilt every frame", rebuild.median(), rebuild.minimum(),
+                rebuild.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "reference: 3D view alone (ViewportScene)", reference3d, alone.minimum(),
+                1.0);
+    std::printf("steady: %.1f frames/s\n", 1e3 / steady.median());
+    if (!options.png.empty()) {
+        app.frame(input);
+        gui::writePng(gui::readFramebuffer(context.gl(), kWidth, kHeight), options.png);
+        std::printf("last frame written to %s\n", options.png.c_str());
+    }
+    return 0;
+}
+
+}  // namespace
+
+}  // namespace dropscope::bench
+
+int main(int argc, char** argv) {
+    try {
+        return dropscope::bench::run(dropscope::bench::parse(argc, argv));
+    } catch (const std::exception& error) {
+        std::cerr << "gui_frame_bench: " << error.what() << "\n";
+        return 2;
+    }
+}

@@ -1,0 +1,301 @@
+// The document's edits: each checks everything first (throwing EditRefused), then commits one step.
+#include "edit/SceneDocument.hpp"
+
+#include "geometry/Box.hpp"
+#include "geometry/Ellipsoid.hpp"
+#include "geometry/Sphere.hpp"
+#include "scene/GeneratorReader.hpp"
+#include "scene/JsonPath.hpp"
+#include "scene/SceneOverlaps.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+namespace dropscope {
+
+namespace {
+
+// A box moved by withCenter gets its corners back from centre +- half edge, which can change its edge
+// lengths by a few ulps; edges equal to this relative difference still make the edit a "move".
+constexpr double kSameEdgeRelative = 1e-12;
+// The smallest droplet radius, relative to the region's largest side or coordinate: the loader's
+// limit for droplet_cloud (GeneratorReader.cpp), below which a droplet's own coordinates' rounding
+// swamps it.
+constexpr double kMinDropletRadiusRelative = 1e-9;
+
+void refuse(const std::string& message) { throw EditRefused(message); }
+
+// `value` to two significant digits, for messages ("0.31").
+std::string roughly(double value) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 2);
+    return std::string(buffer, result.ptr);
+}
+
+// `text` followed by the quoted name, when there is one: `sphere "d1"`.
+std::string withName(std::string text, const std::string& name) {
+    if (!name.empty()) text.append(" ").append(jsonpath::quoted(name));
+    return text;
+}
+
+double sphereVolume(double radius) { return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius; }
+
+// Whether `after` is `before` moved: same kind, medium and form, whatever the position.
+bool isMove(const Shape& before, const Shape& after) {
+    if (before.kind() != after.kind() || before.mediumId() != after.mediumId()) return false;
+    switch (before.kind()) {
+        case ShapeKind::Sphere:
+            return static_cast<const Sphere&>(before).radius() == static_cast<const Sphere&>(after).radius();
+        case ShapeKind::Ellipsoid:
+            return static_cast<const Ellipsoid&>(before).matrix() == static_cast<const Ellipsoid&>(after).matrix();
+        case ShapeKind::Box: {
+            const Eigen::Vector3d a = static_cast<const Box&>(before).edgeLengths();
+            const Eigen::Vector3d b = static_cast<const Box&>(after).edgeLengths();
+            return (a - b).cwiseAbs().maxCoeff() <= kSameEdgeRelative * a.maxCoeff();
+        }
+    }
+    return false;
+}
+
+void checkCloudSpec(const DropletCloudSpec& spec) {
+    const Eigen::AlignedBox3d& region = spec.region;
+    if (!region.min().allFinite() || !region.max().allFinite()) refuse("the region's corners must be finite");
+    for (Eigen::Index axis = 0; axis < 3; ++axis) {
+        if (!(region.min()[axis] < region.max()[axis])) {
+            refuse("the region's max must be > min on every axis (" + std::string(1, "xyz"[axis]) + ": max " +
+                   jsonpath::number(region.max()[axis]) + " <= min " + jsonpath::number(region.min()[axis]) + ")");
+        }
+    }
+    if (spec.count.has_value() == spec.volumeFraction.has_value()) refuse("give either a count or a volume fraction");
+    if (spec.count && *spec.count > kMaxGeneratedDroplets) {
+        refuse("a cloud has at most " + std::to_string(kMaxGeneratedDroplets) + " droplets");
+    }
+    if (spec.volumeFraction && !(*spec.volumeFraction > 0.0 && *spec.volumeFraction <= kMaxDropletVolumeFraction)) {
+        refuse("the volume fraction must be > 0 and <= " + jsonpath::number(kMaxDropletVolumeFraction));
+    }
+}
+
+// The loader's checks of drawn radii: the largest must fit in the region, the smallest must not vanish.
+void checkRadii(const DropletCloudSpec& spec, const std::vector<double>& radii) {
+    if (radii.size() > kMaxGeneratedDroplets) {
+        refuse("the volume fraction needs more than " + std::to_string(kMaxGeneratedDroplets) +
+               " droplets of this size; use larger radii or a smaller region");
+    }
+    const Eigen::Vector3d sides = spec.region.sizes();
+    if (2.0 * radii.front() > sides.minCoeff()) {
+        refuse("a droplet of radius " + roughly(radii.front()) + " does not fit in the region (its smallest side is " +
+               jsonpath::number(sides.minCoeff()) + ")");
+    }
+    const double largestCoordinate =
+        std::max(spec.region.min().cwiseAbs().maxCoeff(), spec.region.max().cwiseAbs().maxCoeff());
+    if (radii.back() < kMinDropletRadiusRelative * std::max(sides.maxCoeff(), largestCoordinate)) {
+        refuse("a droplet of radius " + roughly(radii.back()) + " is too small for the region");
+    }
+}
+
+}  // namespace
+
+// ---- checks ----
+
+const Shape& SceneDocument::liveShape(ShapeId id) const {
+    const Shape* s = octree_.shape(id);
+    if (!s) refuse("there is no shape " + std::to_string(id));
+    return *s;
+}
+
+std::unique_ptr<Shape> SceneDocument::shapeFor(const ShapeSpec& spec) const {
+    checkMediumId(spec.medium);
+    try {
+        return makeShape(spec);
+    } catch (const std::invalid_argument& error) {
+        throw EditRefused(error.what());
+    }
+}
+
+void SceneDocument::checkName(const std::string& name, std::optional<ShapeId> owner) const {
+    if (name.empty()) return;
+    const std::optional<ShapeId> user = findShape(name);
+    if (user && user != owner) {
+        refuse("name " + jsonpath::quoted(name) + " is already used by shape " + std::to_string(*user));
+    }
+}
+
+void SceneDocument::checkMediumId(MediumId id) const {
+    if (id >= media().size()) {
+        refuse("medium " + std::to_string(id) + " is not defined (" + std::to_string(media().size()) + " media)");
+    }
+}
+
+Medium SceneDocument::checkedMedium(const Medium& medium, std::optional<MediumId> replacing) const {
+    if (medium.name.empty()) refuse("a medium name must not be empty");
+    for (MediumId id = 0; id < media().size(); ++id) {
+        if (id != replacing && media()[id].name == medium.name) {
+            refuse("medium name " + jsonpath::quoted(medium.name) + " is already used");
+        }
+    }
+    if (!(std::isfinite(medium.n) && medium.n > 0.0)) refuse("n must be finite and > 0");
+    if (medium.kappa && medium.sigma) refuse("give either kappa or sigma, not both");
+    const auto nonNegative = [](const std::optional<double>& value) {
+        return !value || (std::isfinite(*value) && *value >= 0.0);
+    };
+    if (!nonNegative(medium.kappa)) refuse("kappa must be finite and >= 0");
+    if (!nonNegative(medium.sigma)) refuse("sigma must be finite and >= 0");
+    Medium checked = medium;
+    checked.absorptionPerUnit = 0.0;
+    if (medium.sigma) checked.absorptionPerUnit = *medium.sigma;
+    if (medium.kappa) checked.absorptionPerUnit = absorptionFromExtinction(*medium.kappa, wavelengthInSceneUnits());
+    return checked;
+}
+
+// The scene's overlap rule against the candidates the octree finds.
+std::optional<std::string> SceneDocument::overlapOf(const Shape& shape, std::optional<ShapeId> ignore) const {
+    for (const ShapeId other : octree_.overlapping(shape)) {
+        if (other == ignore) continue;
+        const Shape& existing = *octree_.shape(other);
+        if (nestsInside(shape, existing) || nestsInside(existing, shape)) continue;
+        return std::string(shape.typeName()) + " would overlap shape " + std::to_string(other) + " (" +
+               withName(std::string(existing.typeName()), nameOf(other)) + ")";
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> SceneDocument::checkPlacement(const ShapeSpec& spec, std::optional<ShapeId> ignore) const {
+    try {
+        return overlapOf(*shapeFor(spec), ignore);
+    } catch (const EditRefused& refusal) {
+        return refusal.what();
+    }
+}
+
+// ---- shapes ----
+
+ShapeId SceneDocument::addShape(const ShapeSpec& spec, const std::string& name) {
+    std::unique_ptr<Shape> shape = shapeFor(spec);
+    checkName(name, std::nullopt);
+    if (const auto overlap = overlapOf(*shape, std::nullopt)) refuse(*overlap);
+    const auto id = static_cast<ShapeId>(octree_.slotCount());
+    Step step;
+    step.label = withName("add " + std::string(shape->typeName()), name);
+    step.shapes.push_back({id, nullptr, std::move(shape), {}, name});
+    commit(std::move(step));
+    return id;
+}
+
+void SceneDocument::removeShape(ShapeId id) {
+    const Shape& shape = liveShape(id);
+    Step step;
+    step.label = "delete " + shapeTitle(id);
+    step.shapes.push_back({id, shape.clone(), nullptr, nameOf(id), {}});
+    commit(std::move(step));
+}
+
+std::string SceneDocument::modifyLabel(ShapeId id, const Shape& before, const Shape& after) const {
+    return (isMove(before, after) ? "move " : "edit ") + shapeTitle(id);
+}
+
+void SceneDocument::modifyShape(ShapeId id, const ShapeSpec& spec, bool mergeWithPrevious) {
+    const Shape& current = liveShape(id);
+    std::unique_ptr<Shape> shape = shapeFor(spec);
+    if (const auto overlap = overlapOf(*shape, id)) refuse(*overlap);
+    const bool merge = mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Modify &&
+                       undo_.back().shapes.front().id == id;
+    if (merge) {
+        SlotChange& change = undo_.back().shapes.front();
+        setSlot(id, shape->clone(), change.nameAfter);
+        change.after = std::move(shape);
+        undo_.back().label = modifyLabel(id, *change.before, *change.after);
+        ++revision_;
+        return;
+    }
+    Step step;
+    step.kind = StepKind::Modify;
+    step.label = modifyLabel(id, current, *shape);
+    step.shapes.push_back({id, current.clone(), std::move(shape), nameOf(id), nameOf(id)});
+    commit(std::move(step));
+}
+
+void SceneDocument::renameShape(ShapeId id, const std::string& name) {
+    liveShape(id);
+    checkName(name, id);
+    Step step;
+    step.label = "rename " + shapeTitle(id);
+    step.renames.push_back({id, nameOf(id), name});
+    commit(std::move(step));
+}
+
+std::vector<ShapeId> SceneDocument::generateCloud(const DropletCloudSpec& spec, MediumId medium) {
+    checkMediumId(medium);
+    checkCloudSpec(spec);
+    const std::vector<double> radii = drawDropletRadii(spec, kMaxGeneratedDroplets);
+    if (radii.empty()) return {};
+    checkRadii(spec, radii);
+    // Every current shape near the region is an obstacle, with the scene's nesting rule (the loader's
+    // "explicit" shapes): droplets may lie inside a box or a sphere.
+    std::vector<std::unique_ptr<Shape>> obstacles;
+    for (const auto& shape : octree_.shapes()) {
+        if (shape && shape->bounds().intersects(spec.region)) obstacles.push_back(shape->clone());
+    }
+    const std::vector<Droplet> droplets = placeDroplets(spec, radii, {obstacles, obstacles.size()});
+    if (droplets.size() < radii.size()) {
+        double volume = 0.0;
+        for (const Droplet& d : droplets) volume += sphereVolume(d.radius);
+        refuse("placed " + std::to_string(droplets.size()) + " of " + std::to_string(radii.size()) +
+               " droplets before the region filled (volume fraction reached " + roughly(volume / spec.region.volume()) +
+               "); lower the count or the volume fraction");
+    }
+    Step step;
+    step.label = "generate " + std::to_string(droplets.size()) + " droplets";
+    std::vector<ShapeId> ids;
+    ids.reserve(droplets.size());
+    for (const Droplet& droplet : droplets) {
+        ids.push_back(static_cast<ShapeId>(octree_.slotCount() + ids.size()));
+        auto sphere = std::make_unique<Sphere>(droplet.center, droplet.radius);
+        sphere->setMediumId(medium);
+        step.shapes.push_back({ids.back(), nullptr, std::move(sphere), {}, {}});
+    }
+    commit(std::move(step));
+    return ids;
+}
+
+// ---- media, ambient, sources ----
+
+MediumId SceneDocument::addMedium(const Medium& medium) {
+    Properties after = properties();
+    after.media.push_back(checkedMedium(medium, std::nullopt));
+    commitProperties("add medium " + jsonpath::quoted(medium.name), std::move(after));
+    return static_cast<MediumId>(media().size() - 1);
+}
+
+void SceneDocument::setMedium(MediumId id, const Medium& medium) {
+    checkMediumId(id);
+    Properties after = properties();
+    after.media[id] = checkedMedium(medium, id);
+    commitProperties("edit medium " + jsonpath::quoted(media()[id].name), std::move(after));
+}
+
+void SceneDocument::setAmbient(MediumId id) {
+    checkMediumId(id);
+    Properties after = properties();
+    after.ambient = id;
+    commitProperties("set the ambient medium to " + jsonpath::quoted(media()[id].name), std::move(after));
+}
+
+void SceneDocument::setSources(std::vector<Source> sources) {
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+        const Source& source = sources[i];
+        const std::string which = "source " + std::to_string(i) + ": ";
+        if (!source.origin.allFinite()) refuse(which + "origin must be finite");
+        if (source.type != SourceType::PointSource && !source.direction) {
+            refuse(which + "direction must be a finite, non-zero vector");
+        }
+        if (source.type == SourceType::Beam && !(std::isfinite(source.radius) && source.radius > 0.0)) {
+            refuse(which + "beam radius must be finite and > 0");
+        }
+    }
+    Properties after = properties();
+    after.sources = std::move(sources);
+    commitProperties("edit sources", std::move(after));
+}
+
+}  // namespace dropscope

@@ -1,0 +1,194 @@
+#include "scene/SceneWriter.hpp"
+
+#include "edit/ShapeSpec.hpp"
+#include "scene/JsonPath.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_set>
+#include <utility>
+
+namespace dropscope {
+
+namespace {
+
+// Members keep their insertion order: "dropscope" first, media in id order.
+using Json = nlohmann::ordered_json;
+
+constexpr int kFormatVersion = 1;
+constexpr std::string_view kIndent = "  ";
+
+Json vector3(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
+
+void refuse(const std::string& message) { throw std::invalid_argument("writeScene: " + message); }
+
+Json mediumJson(const Medium& medium) {
+    Json json = Json::object();
+    json["n"] = medium.n;
+    if (medium.kappa) json["kappa"] = *medium.kappa;
+    if (medium.sigma) json["sigma"] = *medium.sigma;
+    return json;
+}
+
+Json shapeJson(const Shape& shape, const std::string& name, const std::vector<Medium>& media) {
+    const ShapeSpec spec = describeShape(shape);
+    Json json = Json::object();
+    json["type"] = std::string(shape.typeName());
+    if (!name.empty()) json["name"] = name;
+    switch (spec.kind) {
+        case ShapeKind::Sphere:
+            json["center"] = vector3(spec.center);
+            json["radius"] = spec.radius;
+            break;
+        case ShapeKind::Ellipsoid:
+            json["center"] = vector3(spec.center);
+            json["semi_axes"] = vector3(spec.semiAxes);
+            if (spec.rotationAngleDeg != 0.0) {
+                json["rotation"] = {{"axis", vector3(spec.rotationAxis)}, {"angle_deg", spec.rotationAngleDeg}};
+            }
+            break;
+        case ShapeKind::Box:
+            json["min"] = vector3(spec.boxMin);
+            json["max"] = vector3(spec.boxMax);
+            break;
+    }
+    json["medium"] = media[shape.mediumId()].name;
+    return json;
+}
+
+Json sourceJson(const Source& source) {
+    Json json = Json::object();
+    json["type"] = std::string(sourceTypeName(source.type));
+    json["origin"] = vector3(source.origin);
+    if (source.type != SourceType::PointSource) json["direction"] = vector3(source.direction.vector());
+    if (source.type == SourceType::Beam) json["radius"] = source.radius;
+    return json;
+}
+
+Json viewJson(const SceneView& view) {
+    return {{"eye", vector3(view.eye)}, {"target", vector3(view.target)}, {"up", vector3(view.up.vector())},
+            {"fov_deg", view.fovDeg}};
+}
+
+// Names that would make the file unreadable, or change what it means, are refused here rather than
+// by the loader later.
+void checkWritable(const Scene& scene) {
+    std::unordered_set<std::string> names;
+    for (const Medium& medium : scene.media) {
+        if (medium.name.empty()) refuse("a medium has an empty name");
+        if (!names.insert(medium.name).second) refuse("medium name " + jsonpath::quoted(medium.name) + " is repeated");
+    }
+    if (scene.ambient >= scene.media.size()) {
+        refuse("ambient medium " + std::to_string(scene.ambient) + " is not defined");
+    }
+    names.clear();
+    for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
+        if (!scene.shapes[id]) refuse("shape " + std::to_string(id) + " is null");
+        if (scene.shapes[id]->mediumId() >= scene.media.size()) {
+            refuse("shape " + std::to_string(id) + " has medium " + std::to_string(scene.shapes[id]->mediumId()) +
+                   ", which is not defined");
+        }
+        const std::string& name = id < scene.shapeNames.size() ? scene.shapeNames[id] : std::string();
+        if (!name.empty() && !names.insert(name).second) {
+            refuse("shape name " + jsonpath::quoted(name) + " is repeated");
+        }
+    }
+}
+
+// `value` on one line, with a space after each comma and colon.
+void writeInline(std::ostream& out, const Json& value) {
+    if (value.is_object()) {
+        out << '{';
+        const char* separator = "";
+        for (const auto& [key, member] : value.items()) {
+            out << separator << Json(key).dump() << ": ";
+            writeInline(out, member);
+            separator = ", ";
+        }
+        out << '}';
+    } else if (value.is_array()) {
+        out << '[';
+        const char* separator = "";
+        for (const Json& element : value) {
+            out << separator;
+            writeInline(out, element);
+            separator = ", ";
+        }
+        out << ']';
+    } else {
+        out << value.dump();
+    }
+}
+
+// A top-level member. A block (media, shapes, sources) puts each of its members or elements on a line
+// of its own; anything else stays on the member's line.
+struct Member {
+    std::string key;
+    Json value;
+    bool block = false;
+};
+
+void writeMember(std::ostream& out, const Member& member) {
+    out << kIndent << Json(member.key).dump() << ": ";
+    if (!member.block || member.value.empty()) {
+        writeInline(out, member.value);
+        return;
+    }
+    const bool object = member.value.is_object();
+    out << (object ? "{" : "[");
+    const char* separator = "\n";
+    for (const auto& [key, element] : member.value.items()) {
+        out << separator << kIndent << kIndent;
+        if (object) out << Json(key).dump() << ": ";
+        writeInline(out, element);
+        separator = ",\n";
+    }
+    out << '\n' << kIndent << (object ? "}" : "]");
+}
+
+}  // namespace
+
+void writeScene(const Scene& scene, std::ostream& out) {
+    checkWritable(scene);
+    Json media = Json::object();
+    for (const Medium& medium : scene.media) media[medium.name] = mediumJson(medium);
+    Json shapes = Json::array();
+    for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
+        const std::string& name = id < scene.shapeNames.size() ? scene.shapeNames[id] : std::string();
+        shapes.push_back(shapeJson(*scene.shapes[id], name, scene.media));
+    }
+    Json sources = Json::array();
+    for (const Source& source : scene.sources) sources.push_back(sourceJson(source));
+
+    std::vector<Member> members{
+        {"dropscope", kFormatVersion},
+        {"unit", scene.unit},
+        {"wavelength_nm", scene.wavelengthNm},
+        {"ambient", scene.media[scene.ambient].name},
+        {"media", std::move(media), true},
+        {"shapes", std::move(shapes), true},
+        {"sources", std::move(sources), true},
+        {"octree", {{"max_depth", scene.octree.maxDepth}, {"max_shapes_per_leaf", scene.octree.maxShapesPerLeaf}}},
+    };
+    if (scene.view) members.push_back({"view", viewJson(*scene.view)});
+
+    out << "{\n";
+    const char* separator = "";
+    for (const Member& member : members) {
+        out << separator;
+        writeMember(out, member);
+        separator = ",\n";
+    }
+    out << "\n}\n";
+}
+
+std::string sceneToJson(const Scene& scene) {
+    std::ostringstream out;
+    writeScene(scene, out);
+    return out.str();
+}
+
+}  // namespace dropscope

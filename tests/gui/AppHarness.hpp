@@ -1,0 +1,91 @@
+#pragma once
+
+#include "gui/App.hpp"
+#include "scene/SceneLoader.hpp"
+#include "snapshot/OsmesaContext.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <string_view>
+#include <thread>
+
+namespace dropscope::gui::testing {
+
+// The real app, headless: an OSMesa buffer instead of a window, driven by the same InputFrame the GLFW
+// window fills, one frame per call.
+class AppHarness {
+public:
+    AppHarness(std::string_view sceneJson, int width = 1280, int height = 800, AppOptions options = {})
+        : context_(width, height) {
+        input_.windowWidth = input_.framebufferWidth = width;
+        input_.windowHeight = input_.framebufferHeight = height;
+        app_ = std::make_unique<App>(context_.gl(), parseScene(sceneJson, "test.json"), options);
+        frames(2);  // ImGui lays windows out on their first frame and shows them on the second
+    }
+
+    App& app() { return *app_; }
+    AppState& state() { return app_->state(); }
+    InputFrame& input() { return input_; }
+
+    void frame() {
+        app_->frame(input_);
+        input_.wheelY = 0.0f;
+        input_.characters.clear();
+    }
+    void frames(int count) {
+        for (int k = 0; k < count; ++k) frame();
+    }
+    void moveMouse(float x, float y) {
+        input_.mouseInside = true;
+        input_.mouseX = x;
+        input_.mouseY = y;
+        frame();
+    }
+    void click(float x, float y, int button = 0) {
+        moveMouse(x, y);
+        input_.mouseDown[static_cast<std::size_t>(button)] = true;
+        frame();
+        input_.mouseDown[static_cast<std::size_t>(button)] = false;
+        frame();
+    }
+    // Press at `from`, move in `steps` frames to `to`, release there.
+    void drag(float fromX, float fromY, float toX, float toY, int steps = 8, int button = 0) {
+        moveMouse(fromX, fromY);
+        input_.mouseDown[static_cast<std::size_t>(button)] = true;
+        frame();
+        for (int k = 1; k <= steps; ++k) {
+            const float t = static_cast<float>(k) / static_cast<float>(steps);
+            moveMouse(fromX + t * (toX - fromX), fromY + t * (toY - fromY));
+        }
+        input_.mouseDown[static_cast<std::size_t>(button)] = false;
+        frame();
+    }
+    void press(int key, bool ctrl = false, bool shift = false) {
+        input_.ctrl = ctrl;
+        input_.shift = shift;
+        input_.keysDown.set(static_cast<std::size_t>(key));
+        frame();
+        input_.keysDown.reset(static_cast<std::size_t>(key));
+        input_.ctrl = input_.shift = false;
+        frame();
+    }
+    // Frames until the background trace has delivered (a generous bound: a hang check, not a timing).
+    bool waitForTrace(std::chrono::seconds limit = std::chrono::seconds(60)) {
+        const auto end = std::chrono::steady_clock::now() + limit;
+        do {
+            frame();
+            if (!state().job.running() && state().trace) return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        } while (std::chrono::steady_clock::now() < end);
+        return false;
+    }
+    snapshot::Image image() const { return context_.read(); }
+
+private:
+    snapshot::OsmesaContext context_;  // first: the app's GL objects live in this context
+    InputFrame input_;
+    std::unique_ptr<App> app_;
+};
+
+}  // namespace dropscope::gui::testing

@@ -1,0 +1,344 @@
+#include "AppHarness.hpp"
+
+#include "edit/ShapeSpec.hpp"
+#include "geometry/Sphere.hpp"
+#include "snapshot/Image.hpp"
+#include "transport/OpticalScene.hpp"
+#include "transport/TraceRun.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <numbers>
+
+namespace dropscope::gui::testing {
+namespace {
+
+// Positions computed twice in double precision (the app's picking and the closed form here).
+constexpr double kPositionRounding = 1e-9;
+// A drawn droplet differs from the background by far more than this, summed over R, G and B (the
+// background is (20, 23, 28); the darkest lit water is above 60 in blue alone).
+constexpr int kBackgroundDifference = 60;
+
+// Looking straight down -y from 10 above the origin, +x to the right and -z up the screen, so a point
+// (x, 0, z) is at pixel (640 + 640 x / (10 tanX), 400 + 400 z / (10 tanY)).
+constexpr const char* kTopDownScene = R"({
+  "dropscope": 1, "ambient": "air",
+  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
+  "shapes": [{"type": "sphere", "name": "d1", "center": [2, 0, 2], "radius": 0.5, "medium": "water"}],
+  "sources": [{"type": "ray", "origin": [0, 0, -5], "direction": [0, 0, 1]}],
+  "view": {"eye": [0, 10, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40}
+})";
+
+const double kTanY = std::tan(20.0 * std::numbers::pi / 180.0);
+const double kTanX = kTanY * 1280.0 / 800.0;
+
+// The world point on y = 0 under pixel (px, py) of the top-down view, in closed form.
+Point topDownPoint(double px, double py) {
+    return Point(10.0 * kTanX * (2.0 * px / 1280.0 - 1.0), 0.0, -10.0 * kTanY * (1.0 - 2.0 * py / 800.0));
+}
+std::pair<float, float> topDownPixel(const Point& p) {
+    return {static_cast<float>(640.0 * (1.0 + p.x() / (10.0 * kTanX))),
+            static_cast<float>(400.0 * (1.0 + p.z() / (10.0 * kTanY)))};
+}
+
+bool differsFromBackground(const snapshot::Image& image, float x, float y) {
+    const std::uint8_t* p = image.pixel(static_cast<int>(x), static_cast<int>(y));
+    return std::abs(p[0] - 20) + std::abs(p[1] - 23) + std::abs(p[2] - 28) > kBackgroundDifference;
+}
+
+const Sphere& sphereAt(AppHarness& harness, ShapeId id) {
+    const Shape* shape = harness.state().document->octree().shape(id);
+    EXPECT_NE(shape, nullptr);
+    EXPECT_EQ(shape->kind(), ShapeKind::Sphere);
+    return static_cast<const Sphere&>(*shape);
+}
+
+TEST(AppUi, AClickInPlacementModeDropsADropletOnThePlacementPlaneUnderTheCursor) {
+    AppHarness harness(kTopDownScene);
+    harness.state().placementRadius = 0.3;
+    harness.press('P');
+    ASSERT_TRUE(harness.state().placementMode);
+    harness.click(740.0f, 480.0f);
+
+    ASSERT_EQ(harness.state().document->shapeCount(), 2u);
+    const Sphere& droplet = sphereAt(harness, 1);
+    const Point expected = topDownPoint(740.0, 480.0);
+    EXPECT_NEAR(droplet.center().x(), expected.x(), kPositionRounding);
+    EXPECT_EQ(droplet.center().y(), 0.0);  // exactly on the plane
+    EXPECT_NEAR(droplet.center().z(), expected.z(), kPositionRounding);
+    EXPECT_EQ(droplet.radius(), 0.3);
+    EXPECT_EQ(harness.state().document->media()[droplet.mediumId()].name, "water");
+    EXPECT_FALSE(harness.state().status.error) << harness.state().status.text;
+    harness.frame();
+    EXPECT_TRUE(differsFromBackground(harness.image(), 740.0f, 480.0f));
+}
+
+TEST(AppUi, APlacementThatWouldOverlapIsRefusedWithAVisibleMessage) {
+    AppHarness harness(kTopDownScene);
+    harness.state().placementRadius = 0.3;
+    harness.press('P');
+    harness.click(740.0f, 480.0f);
+    ASSERT_EQ(harness.state().document->shapeCount(), 2u);
+    const std::uint64_t revision = harness.state().document->revision();
+    const auto [x, y] = topDownPixel(topDownPoint(740.0, 480.0) + Point(0.4, 0.0, 0.0));  // 0.4 < 0.3 + 0.3
+    harness.click(x, y);
+    EXPECT_EQ(harness.state().document->shapeCount(), 2u);
+    EXPECT_EQ(harness.state().document->revision(), revision);
+    EXPECT_TRUE(harness.state().status.error);
+    EXPECT_NE(harness.state().status.text.find("overlap"), std::string::npos) << harness.state().status.text;
+}
+
+TEST(AppUi, AClickOnADropletInPlacementModeDropsTheNewOneTouchingIt) {
+    AppHarness harness(kTopDownScene);
+    harness.state().placementRadius = 0.2;
+    harness.press('P');
+    const auto [x, y] = topDownPixel(Point(2.0, 0.0, 2.0));  // the centre of d1, seen from above
+    harness.click(x, y);
+    ASSERT_EQ(harness.state().document->shapeCount(), 2u);
+    const Sphere& droplet = sphereAt(harness, 1);
+    const Sphere& below = sphereAt(harness, 0);
+    EXPECT_NEAR((droplet.center() - below.center()).norm(), 0.5 + 0.2, kPositionRounding);  // touching
+    EXPECT_GT(droplet.center().y(), 0.6);  // on top, towards the camera
+}
+
+TEST(AppUi, UndoAndRedoFromTheKeyboard) {
+    AppHarness harness(kTopDownScene);
+    harness.press('P');
+    harness.click(740.0f, 480.0f);
+    ASSERT_EQ(harness.state().document->shapeCount(), 2u);
+    harness.press('Z', true);
+    EXPECT_EQ(harness.state().document->shapeCount(), 1u);
+    harness.press('Y', true);
+    EXPECT_EQ(harness.state().document->shapeCount(), 2u);
+}
+
+TEST(AppUi, ClickingSelectsAndDraggingMovesTheSelectedDropletInOneUndoStep) {
+    AppHarness harness(kTopDownScene);
+    const auto [x, y] = topDownPixel(Point(2.0, 0.0, 2.0));
+    harness.click(x, y);
+    ASSERT_EQ(harness.state().selected, 0u);
+    // The drag plane is horizontal through the centre (y = 0), so 64 pixels right is 64/640 of 10 tanX.
+    harness.drag(x, y, x + 64.0f, y);
+    const Sphere& moved = sphereAt(harness, 0);
+    EXPECT_NEAR(moved.center().x(), 2.0 + 0.1 * 10.0 * kTanX, 1e-6);
+    EXPECT_NEAR(moved.center().z(), 2.0, 1e-6);
+    harness.press('Z', true);
+    EXPECT_EQ(sphereAt(harness, 0).center(), Point(2.0, 0.0, 2.0));
+}
+
+// A water sphere on the source's axis: the first interface is at (0, 0, -1), head on, where Fresnel
+// gives R = ((n - 1) / (n + 1))^2.
+constexpr const char* kAxisScene = R"({
+  "dropscope": 1, "ambient": "air",
+  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
+  "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"}],
+  "sources": [{"type": "ray", "origin": [0, 0, -5], "direction": [0, 0, 1]}],
+  "view": {"eye": [6, 3, -4], "target": [0, 0, 0]}
+})";
+const double kHeadOnReflectance = std::pow(0.3337 / 2.3337, 2);
+constexpr double kFresnelRounding = 1e-12;
+
+TEST(AppUi, FiringTracesThePhotonsOffTheUiThreadAndShowsTheExpectedPaths) {
+    AppHarness harness(kAxisScene);
+    harness.state().fire.photons = 500;
+    harness.state().fire.paths = 50;
+    harness.press(kKeySpace);
+    ASSERT_TRUE(harness.waitForTrace());
+    const TraceResult& shown = harness.state().trace->outcome.result;
+    ASSERT_EQ(shown.paths.size(), 50u);
+
+    // Every recorded photon runs along the axis: emitted at z = -5, meeting surfaces at z = -1 and z = 1.
+    for (const PhotonPath& path : shown.paths) {
+        ASSERT_GE(path.events.size(), 3u);
+        EXPECT_EQ(path.events[0].position, Point(0.0, 0.0, -5.0));
+        EXPECT_NEAR(path.events[1].position.z(), -1.0, kPositionRounding);
+        EXPECT_NEAR(path.events[1].reflectance, kHeadOnReflectance, kFresnelRounding);
+        for (const Event& event : path.events) {
+            EXPECT_NEAR(event.position.x(), 0.0, kPositionRounding);
+            EXPECT_NEAR(event.position.y(), 0.0, kPositionRounding);
+        }
+    }
+    // The same photons as the engine traces directly with the same settings.
+    TraceSettings settings;
+    settings.photons = 500;
+    settings.paths = 50;
+    settings.seed = harness.state().fire.seed;
+    const Scene scene = harness.state().document->toScene();
+    const TraceResult direct = runTrace(OpticalScene(scene), scene.sources, settings);
+    EXPECT_EQ(shown.tally.escaped, direct.tally.escaped);
+    EXPECT_EQ(shown.tally.absorbed, direct.tally.absorbed);
+    ASSERT_EQ(shown.paths.size(), direct.paths.size());
+    for (std::size_t k = 0; k < shown.paths.size(); ++k) {
+        ASSERT_EQ(shown.paths[k].events.size(), direct.paths[k].events.size());
+        for (std::size_t e = 0; e < shown.paths[k].events.size(); ++e) {
+            EXPECT_EQ(shown.paths[k].events[e].position, direct.paths[k].events[e].position);
+        }
+    }
+    // Paths are drawn: the line layer holds their segments.
+    EXPECT_FALSE(harness.app().viewport().layers().lines.empty());
+}
+
+TEST(AppUi, TheRayTreeKeySplitsTheRayAtTheFirstSurfaceByFresnel) {
+    AppHarness harness(kAxisScene);
+    harness.press('R');
+    ASSERT_TRUE(harness.state().rayTree.has_value());
+    std::vector<double> weights;
+    for (const RayTreeNode& node : harness.state().rayTree->nodes) {
+        if (node.parent == 0) {
+            EXPECT_NEAR(node.event.position.z(), -1.0, kPositionRounding);
+            weights.push_back(node.event.weight);
+        }
+    }
+    ASSERT_EQ(weights.size(), 2u);
+    std::sort(weights.begin(), weights.end());
+    EXPECT_NEAR(weights[0], kHeadOnReflectance, kFresnelRounding);
+    EXPECT_NEAR(weights[1], 1.0 - kHeadOnReflectance, kFresnelRounding);
+}
+
+TEST(AppUi, StepsThroughTheEventsOfASelectedPathWithItsOctreeTraversal) {
+    AppHarness harness(kAxisScene);
+    harness.state().fire.paths = 5;
+    harness.press(kKeySpace);
+    ASSERT_TRUE(harness.waitForTrace());
+    harness.press(kKeyRight);  // selects the first photon's first event
+    EXPECT_EQ(harness.state().selectedPath, 0);
+    EXPECT_EQ(harness.state().selectedEvent, 0);
+    ASSERT_TRUE(harness.state().traversal.has_value());
+    // From the emission the segment's traversal finds the sphere 4 ahead.
+    EXPECT_EQ(harness.state().traversal->record.hit.shape, 0u);
+    EXPECT_NEAR(harness.state().traversal->record.hit.distance, 4.0, kPositionRounding);
+    harness.press(kKeyRight);
+    EXPECT_EQ(harness.state().selectedEvent, 1);
+}
+
+// A cloud of droplets: enough for an octree of several levels.
+constexpr const char* kCloudScene = R"({
+  "dropscope": 1, "ambient": "air",
+  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
+  "octree": {"max_shapes_per_leaf": 4},
+  "generators": [{"type": "droplet_cloud", "region": {"min": [-2, -2, -2], "max": [2, 2, 2]}, "count": 300,
+                  "radius": {"distribution": "fixed", "value": 0.05}, "medium": "water", "seed": 3}],
+  "view": {"eye": [6, 4, 7], "target": [0, 0, 0]}
+})";
+
+std::size_t differingPixels(const snapshot::Image& a, const snapshot::Image& b) {
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < a.rgba.size(); k += 4) count += a.rgba[k] != b.rgba[k] || a.rgba[k + 1] != b.rgba[k + 1];
+    return count;
+}
+
+TEST(AppUi, TheOctreeLevelControlChangesWhichCellsAreDrawn) {
+    AppHarness harness(kCloudScene);
+    const auto statistics = harness.state().document->octree().statistics();
+    ASSERT_GE(statistics.size(), 3u);
+    harness.press('C');  // cells on: only level 0
+    ASSERT_TRUE(harness.state().layers.octree);
+    constexpr std::size_t kVerticesPerCell = 24;  // 12 edges
+    EXPECT_EQ(harness.app().viewport().layers().lines.vertices().size(), kVerticesPerCell * statistics[0].cells);
+    harness.press(']');
+    EXPECT_EQ(harness.state().layers.octreeFilter.level, 1);
+    EXPECT_EQ(harness.app().viewport().layers().lines.vertices().size(), kVerticesPerCell * statistics[1].cells);
+    const snapshot::Image level1 = harness.image();
+    harness.press(']');
+    EXPECT_EQ(harness.app().viewport().layers().lines.vertices().size(), kVerticesPerCell * statistics[2].cells);
+    const snapshot::Image level2 = harness.image();
+    EXPECT_GT(differingPixels(level1, level2), 1000u);
+}
+
+TEST(AppUi, TheSlicePlaneHidesTheDropletsOnItsFarSide) {
+    constexpr const char* twoDroplets = R"({
+      "dropscope": 1, "media": {"water": {"n": 1.3337}},
+      "shapes": [{"type": "sphere", "center": [-1.5, 0, 0], "radius": 0.5, "medium": "water"},
+                 {"type": "sphere", "center": [1.5, 0, 0], "radius": 0.5, "medium": "water"}],
+      "view": {"eye": [0, 10, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40}
+    })";
+    AppHarness harness(twoDroplets);
+    const auto [leftX, leftY] = topDownPixel(Point(-1.5, 0.0, 0.0));
+    const auto [rightX, rightY] = topDownPixel(Point(1.5, 0.0, 0.0));
+    EXPECT_TRUE(differsFromBackground(harness.image(), leftX, leftY));
+    EXPECT_TRUE(differsFromBackground(harness.image(), rightX, rightY));
+    harness.state().slice.axis = 0;
+    harness.state().slice.offset = 0.0;
+    harness.press('L');
+    ASSERT_TRUE(harness.state().slice.enabled);
+    EXPECT_TRUE(differsFromBackground(harness.image(), leftX, leftY));
+    EXPECT_FALSE(differsFromBackground(harness.image(), rightX, rightY));
+}
+
+class AppScreenshot : public ::testing::Test {
+protected:
+    void SetUp() override {
+        directory_ = std::filesystem::temp_directory_path() /
+                     ("dropscope-gui-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(directory_);
+        std::filesystem::create_directories(directory_);
+    }
+    void TearDown() override { std::filesystem::remove_all(directory_); }
+    std::filesystem::path directory_;
+};
+
+TEST_F(AppScreenshot, F12WritesATimestampedPngOfTheViewAndSaysWhere) {
+    AppOptions options;
+    options.screenshotDirectory = directory_;
+    AppHarness harness(kTopDownScene, 1280, 800, options);
+    harness.press(kKeyF12);
+    const std::filesystem::path file = harness.state().lastScreenshot;
+    ASSERT_FALSE(file.empty()) << harness.state().status.text;
+    EXPECT_EQ(file.parent_path(), directory_);
+    EXPECT_TRUE(file.filename().string().starts_with("dropscope-"));
+    EXPECT_NE(harness.state().status.text.find(file.filename().string()), std::string::npos);
+    const snapshot::Image image = snapshot::readPng(file);
+    EXPECT_EQ(image.width, 1280);
+    EXPECT_EQ(image.height, 800);
+    const auto [x, y] = topDownPixel(Point(2.0, 0.0, 2.0));
+    EXPECT_TRUE(differsFromBackground(image, x, y));
+    // Without the panels: the top-left corner, where the Scene panel is, shows the background.
+    EXPECT_FALSE(differsFromBackground(image, 40.0f, 200.0f));
+}
+
+TEST_F(AppScreenshot, WithPanelsOrAtAChosenSize) {
+    AppHarness harness(kTopDownScene);
+    harness.state().screenshot = ScreenshotRequest{directory_ / "panels.png", true, 0, 0};
+    harness.frame();
+    harness.state().screenshot = ScreenshotRequest{directory_ / "large.png", false, 1600, 900};
+    harness.frame();
+    const snapshot::Image panels = snapshot::readPng(directory_ / "panels.png");
+    const snapshot::Image large = snapshot::readPng(directory_ / "large.png");
+    EXPECT_EQ(panels.width, 1280);
+    EXPECT_EQ(large.width, 1600);
+    EXPECT_EQ(large.height, 900);
+    EXPECT_GT(differingPixels(panels, harness.image()), 0u + 0u);  // sanity: both are real frames
+    // The Scene panel covers the top-left corner in the one with panels.
+    const std::uint8_t* panel = panels.pixel(40, 200);
+    EXPECT_TRUE(std::abs(panel[0] - 20) + std::abs(panel[1] - 23) + std::abs(panel[2] - 28) > 4);
+}
+
+TEST_F(AppScreenshot, AnUnwritableFileIsReportedAndNothingIsLeftBehind) {
+    AppHarness harness(kTopDownScene);
+    harness.state().screenshot = ScreenshotRequest{directory_ / "missing" / "shot.png", false, 0, 0};
+    harness.frame();
+    EXPECT_TRUE(harness.state().status.error);
+    EXPECT_FALSE(std::filesystem::exists(directory_ / "missing"));
+}
+
+TEST_F(AppScreenshot, SavedScenesReloadWithTheEditsAndTheCamera) {
+    AppHarness harness(kTopDownScene);
+    harness.press('P');
+    harness.click(740.0f, 480.0f);
+    const std::filesystem::path file = directory_ / "saved.json";
+    harness.state().scenePath = file;
+    harness.press('S', true);
+    ASSERT_FALSE(harness.state().status.error) << harness.state().status.text;
+    const Scene reloaded = loadScene(file);
+    ASSERT_EQ(reloaded.shapes.size(), 2u);
+    EXPECT_EQ(static_cast<const Sphere&>(*reloaded.shapes[1]).center(), sphereAt(harness, 1).center());
+    ASSERT_TRUE(reloaded.view.has_value());
+    EXPECT_EQ(reloaded.view->eye, Point(0.0, 10.0, 0.0));
+}
+
+}  // namespace
+}  // namespace dropscope::gui::testing
