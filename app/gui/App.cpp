@@ -94,7 +94,7 @@ void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {
         }
         writePng(image, request.file);
         state_.lastScreenshot = request.file;
-        state_.say("screenshot saved: " + std::filesystem::absolute(request.file).string());
+        state_.say("screenshot saved: " + std::filesystem::absolute(request.file).lexically_normal().string());
     } catch (const std::exception& error) {
         state_.refuse(std::string("screenshot not saved: ") + error.what());
     }

@@ -45,8 +45,10 @@ void drawResultsPanel(AppState& state) {
     const double n = tally.photons > 0 ? static_cast<double>(tally.photons) : 1.0;
     ImGui::Text("%llu photons%s, %.2f s", static_cast<unsigned long long>(tally.photons),
                 result.partial ? " (stopped early)" : "", result.seconds);
-    ImGui::Text("escaped %.5f   absorbed %.5f   lost %.5f", static_cast<double>(tally.escaped) / n,
-                static_cast<double>(tally.absorbed) / n, static_cast<double>(tally.lost) / n);
+    ImGui::Text("escaped %.5f  absorbed %.5f", static_cast<double>(tally.escaped) / n,
+                static_cast<double>(tally.absorbed) / n);
+    ImGui::Text("lost %.5f  unscattered %.5f", static_cast<double>(tally.lost) / n,
+                static_cast<double>(tally.unscattered) / n);
     static bool logScale = true;
     ImGui::Checkbox("log scale", &logScale);
     std::vector<float> values = perSteradian(tally);

@@ -86,6 +86,7 @@ void ViewportControls::press(AppState& state, const Ray& ray) {
     if (const auto grabbed = rayPlaneAxis(ray, axis, spec.center[axis])) {
         grabOffset_ = spec.center - *grabbed;
         moving_ = state.selected;
+        movedThisDrag_ = false;
     }
 }
 
@@ -111,7 +112,9 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
         if (!on) break;
         spec.center = *on + grabOffset_;
         try {
-            state.document->modifyShape(moving_, spec, true);
+            // The first move of a drag opens an undo step; the rest of the drag folds into it.
+            state.document->modifyShape(moving_, spec, movedThisDrag_);
+            movedThisDrag_ = true;
             state.say("moving shape " + std::to_string(moving_));
         } catch (const std::exception& error) {
             state.refuse(std::string("not moved there: ") + error.what());

@@ -25,6 +25,7 @@ private:
     float travelled_ = 0.0f;       // pixels moved since the press
     Point grabOffset_ = Point::Zero();  // droplet centre minus the grabbed point on the drag plane
     ShapeId moving_ = RayHit::kNone;
+    bool movedThisDrag_ = false;
 };
 
 }  // namespace dropscope::gui

@@ -24,7 +24,7 @@ constexpr double kSameEdgeRelative = 1e-12;
 // swamps it.
 constexpr double kMinDropletRadiusRelative = 1e-9;
 
-void refuse(const std::string& message) { throw EditRefused(message); }
+[[noreturn]] void refuse(const std::string& message) { throw EditRefused(message); }
 
 // `value` to two significant digits, for messages ("0.31").
 std::string roughly(double value) {

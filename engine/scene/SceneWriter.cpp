@@ -23,7 +23,7 @@ constexpr std::string_view kIndent = "  ";
 
 Json vector3(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
-void refuse(const std::string& message) { throw std::invalid_argument("writeScene: " + message); }
+[[noreturn]] void refuse(const std::string& message) { throw std::invalid_argument("writeScene: " + message); }
 
 Json mediumJson(const Medium& medium) {
     Json json = Json::object();

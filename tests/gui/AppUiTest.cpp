@@ -18,6 +18,8 @@ namespace {
 
 // Positions computed twice in double precision (the app's picking and the closed form here).
 constexpr double kPositionRounding = 1e-9;
+// Drags go through float mouse coordinates (ImGui's): a few float roundings of ~1000-pixel values.
+constexpr double kMouseRounding = 1e-6;
 // A drawn droplet differs from the background by far more than this, summed over R, G and B (the
 // background is (20, 23, 28); the darkest lit water is above 60 in blue alone).
 constexpr int kBackgroundDifference = 60;
@@ -123,8 +125,14 @@ TEST(AppUi, ClickingSelectsAndDraggingMovesTheSelectedDropletInOneUndoStep) {
     // The drag plane is horizontal through the centre (y = 0), so 64 pixels right is 64/640 of 10 tanX.
     harness.drag(x, y, x + 64.0f, y);
     const Sphere& moved = sphereAt(harness, 0);
-    EXPECT_NEAR(moved.center().x(), 2.0 + 0.1 * 10.0 * kTanX, 1e-6);
-    EXPECT_NEAR(moved.center().z(), 2.0, 1e-6);
+    EXPECT_NEAR(moved.center().x(), 2.0 + 0.1 * 10.0 * kTanX, kMouseRounding);
+    EXPECT_NEAR(moved.center().z(), 2.0, kMouseRounding);
+    // A second drag is a second undo step.
+    harness.drag(x + 64.0f, y, x + 64.0f, y + 64.0f);
+    EXPECT_NEAR(sphereAt(harness, 0).center().z(), 2.0 + 0.16 * 10.0 * kTanY, kMouseRounding);
+    harness.press('Z', true);
+    EXPECT_NEAR(sphereAt(harness, 0).center().x(), 2.0 + 0.1 * 10.0 * kTanX, kMouseRounding);
+    EXPECT_NEAR(sphereAt(harness, 0).center().z(), 2.0, kMouseRounding);
     harness.press('Z', true);
     EXPECT_EQ(sphereAt(harness, 0).center(), Point(2.0, 0.0, 2.0));
 }

@@ -34,18 +34,18 @@ sleep 1.5   # a few frames: panels laid out
 import -window root before.png
 xdotool mousemove --window "$window" 740 480
 sleep 0.3
-xdotool key --window "$window" p
+xdotool key p
 sleep 0.3
-xdotool click --window "$window" 1
+xdotool click 1
 sleep 0.5
-xdotool key --window "$window" space
+xdotool key space
 sleep 2
-xdotool key --window "$window" F12
+xdotool key F12
 sleep 1
 xdotool mousemove --window "$window" 640 60
 sleep 0.3
 import -window root after.png
-xdotool key --window "$window" ctrl+q
+xdotool key ctrl+q
 for _ in $(seq 100); do
     kill -0 "$pid" 2>/dev/null || break
     sleep 0.1

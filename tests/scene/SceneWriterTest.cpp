@@ -237,26 +237,28 @@ std::string overlapErrorOf(const Scene& scene) {
 }
 
 TEST(SceneWriter, OverlapCheckOfManyShapesAgreesWithThePairwiseDefinition) {
-    // Mixed sizes (five size classes) and kinds, sparse enough that some scenes have no overlap at all,
-    // and a few large boxes for nesting.
+    // Mixed kinds and sizes (several size classes, every 20th shape 8 times larger: a host for nesting or
+    // a large overlapper), dense enough that most scenes overlap somewhere and some do not.
     int withOverlap = 0;
-    for (int i = 0; i < 60; ++i) {
+    constexpr int kCases = 40;
+    for (int i = 0; i < kCases; ++i) {
         SCOPED_TRACE("case " + std::to_string(i));
         testing::Rng rng(static_cast<std::uint64_t>(1000 + i));
         Scene scene;
         scene.origin = "scene.json";
-        const int count = 50 + static_cast<int>(rng() % 300);
+        const int count = 30 + static_cast<int>(rng() % 120);
+        const double halfWidth = 4.0 + 0.25 * i;
         for (int k = 0; k < count; ++k) {
-            const double size = std::pow(8.0, testing::uniform(rng, -2.0, 0.5)) * (k % 40 == 0 ? 8.0 : 1.0);
-            scene.shapes.push_back(testing::randomShape(rng, k, testing::randomPoint(rng, 30.0 + i), size));
+            const double size = std::pow(8.0, testing::uniform(rng, -2.0, 0.0)) * (k % 20 == 0 ? 8.0 : 1.0);
+            scene.shapes.push_back(testing::randomShape(rng, k, testing::randomPoint(rng, halfWidth), size));
             scene.shapeNames.emplace_back();
         }
         const std::string expected = bruteForceOverlapError(scene);
         withOverlap += expected != "no error" ? 1 : 0;
         EXPECT_EQ(overlapErrorOf(scene), expected);
     }
-    EXPECT_GT(withOverlap, 10);
-    EXPECT_LT(withOverlap, 60);
+    EXPECT_GT(withOverlap, kCases / 4);
+    EXPECT_LT(withOverlap, kCases);
 }
 
 TEST(SceneWriter, ASavedCloudOf20000SpheresLoadsAsExplicitShapes) {

@@ -41,11 +41,11 @@ void expectSameAnswers(const Octree& edited, Rng& rng, int rays) {
 }
 
 TEST(OctreeInsertAt, RemoveThenInsertAtAnswersLikeAFreshOctree) {
-    for (int c = 0; c < 12; ++c) {
+    for (int c = 0; c < 6; ++c) {
         SCOPED_TRACE("case " + std::to_string(c));
         Rng rng(static_cast<std::uint64_t>(c));
         std::vector<std::unique_ptr<Shape>> shapes;
-        for (int i = 0; i < 400; ++i) {
+        for (int i = 0; i < 300; ++i) {
             const double size = testing::uniform(rng, 0.05, 0.6);
             shapes.push_back(testing::randomShape(rng, i, testing::randomPoint(rng, 10.0), size));
         }
@@ -58,7 +58,7 @@ TEST(OctreeInsertAt, RemoveThenInsertAtAnswersLikeAFreshOctree) {
             taken.push_back(tree.remove(id));
             removed.push_back(id);
         }
-        expectSameAnswers(tree, rng, 300);
+        expectSameAnswers(tree, rng, 200);
         for (std::size_t k = 0; k < removed.size(); ++k) {
             if (k % 4 == 3) continue;  // stays empty
             std::unique_ptr<Shape> shape = std::move(taken[k]);
@@ -69,8 +69,8 @@ TEST(OctreeInsertAt, RemoveThenInsertAtAnswersLikeAFreshOctree) {
             tree.insertAt(removed[k], std::move(shape));
             ASSERT_NE(tree.shape(removed[k]), nullptr);
         }
-        EXPECT_EQ(tree.slotCount(), 400u);
-        expectSameAnswers(tree, rng, 600);
+        EXPECT_EQ(tree.slotCount(), 300u);
+        expectSameAnswers(tree, rng, 400);
     }
 }
 

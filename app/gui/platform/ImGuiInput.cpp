@@ -16,14 +16,16 @@ constexpr double kMinimumDeltaSeconds = 1e-5;
 
 static_assert(sizeof(ImGuiIO::KeysDown) / sizeof(ImGuiIO::KeysDown[0]) == kKeyCount,
               "our Key indices must cover exactly ImGui 1.86's io.KeysDown");
-static_assert(sizeof(ImGuiIO::MouseDown) / sizeof(ImGuiIO::MouseDown[0]) >= std::tuple_size_v<decltype(InputFrame::mouseDown)>,
+static_assert(sizeof(ImGuiIO::MouseDown) / sizeof(ImGuiIO::MouseDown[0]) >=
+                  std::tuple_size_v<decltype(InputFrame::mouseDown)>,
               "ImGui has a slot for every mouse button the frame reports");
 
 }  // namespace
 
 void configureImGuiIo(ImGuiIO& io) {
     io.BackendPlatformName = kBackendName;
-    io.BackendFlags &= ~(ImGuiBackendFlags_HasGamepad | ImGuiBackendFlags_HasMouseCursors | ImGuiBackendFlags_HasSetMousePos);
+    io.BackendFlags &=
+        ~(ImGuiBackendFlags_HasGamepad | ImGuiBackendFlags_HasMouseCursors | ImGuiBackendFlags_HasSetMousePos);
 
     io.KeyMap[ImGuiKey_Tab] = kKeyTab;
     io.KeyMap[ImGuiKey_LeftArrow] = kKeyLeft;
@@ -58,10 +60,13 @@ void applyInput(ImGuiIO& io, const InputFrame& input) {
                      static_cast<float>(input.framebufferHeight) / static_cast<float>(input.windowHeight))
             : ImVec2(1.0f, 1.0f);
     // Written so that NaN also takes the minimum.
-    io.DeltaTime = static_cast<float>(input.deltaSeconds > kMinimumDeltaSeconds ? input.deltaSeconds : kMinimumDeltaSeconds);
+    io.DeltaTime =
+        static_cast<float>(input.deltaSeconds > kMinimumDeltaSeconds ? input.deltaSeconds : kMinimumDeltaSeconds);
 
     io.MousePos = input.mouseInside ? ImVec2(input.mouseX, input.mouseY) : ImVec2(-FLT_MAX, -FLT_MAX);
-    for (std::size_t button = 0; button < input.mouseDown.size(); ++button) io.MouseDown[button] = input.mouseDown[button];
+    for (std::size_t button = 0; button < input.mouseDown.size(); ++button) {
+        io.MouseDown[button] = input.mouseDown[button];
+    }
     io.MouseWheel = input.wheelY;
     io.MouseWheelH = input.wheelX;
 

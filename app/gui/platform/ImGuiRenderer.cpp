@@ -227,7 +227,8 @@ void ImGuiRenderer::drawCommands(const ImDrawData& data, int framebufferWidth, i
             const PixelRect clip = framebufferClip(data, command.ClipRect, framebufferWidth, framebufferHeight);
             if (clip.empty() || command.ElemCount == 0) continue;
             // GL's scissor box counts rows from the bottom.
-            gl_.Scissor(static_cast<GLint>(clip.minX), static_cast<GLint>(static_cast<float>(framebufferHeight) - clip.maxY),
+            const float bottom = static_cast<float>(framebufferHeight) - clip.maxY;
+            gl_.Scissor(static_cast<GLint>(clip.minX), static_cast<GLint>(bottom),
                         static_cast<GLsizei>(clip.maxX - clip.minX), static_cast<GLsizei>(clip.maxY - clip.minY));
             gl_.BindTexture(GL_TEXTURE_2D, toTextureName(command.GetTexID()));
             const std::size_t firstIndex = listIndex + command.IdxOffset;

@@ -42,7 +42,7 @@ std::optional<Key> keyFromGlfw(int glfwKey) {
 
 void GlfwInput::Latch::set(bool pressed) {
     down = pressed;
-    if (pressed) pressedSinceFrame = true;
+    if (pressed) downSinceFrame = true;
 }
 
 GlfwInput::GlfwInput(GLFWwindow* window) : window_(window) {
@@ -125,8 +125,8 @@ InputFrame GlfwInput::nextFrame(double deltaSeconds) {
     frame.super = seen(GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER);
     frame.characters = std::exchange(characters_, {});
 
-    for (Latch& key : keys_) key.pressedSinceFrame = false;
-    for (Latch& button : buttons_) button.pressedSinceFrame = false;
+    for (Latch& key : keys_) key.downSinceFrame = key.down;
+    for (Latch& button : buttons_) button.downSinceFrame = button.down;
     return frame;
 }
 

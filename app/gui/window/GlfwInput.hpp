@@ -32,11 +32,13 @@ public:
     InputFrame nextFrame(double deltaSeconds);
 
 private:
-    // Down now, or pressed at some time since the last frame.
+    // Down at some time since the last frame: a key pressed and released between two frames shows for
+    // one, and so does a modifier released just before the key of its chord (xdotool's ctrl+q can
+    // arrive as ctrl down in one frame, q down, q up, ctrl up before the next).
     struct Latch {
         bool down = false;
-        bool pressedSinceFrame = false;
-        bool seen() const { return down || pressedSinceFrame; }
+        bool downSinceFrame = false;
+        bool seen() const { return down || downSinceFrame; }
         void set(bool pressed);
     };
     static constexpr int kGlfwKeyCount = 349;  // GLFW_KEY_LAST + 1, checked in the .cpp

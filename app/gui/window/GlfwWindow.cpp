@@ -6,6 +6,7 @@
 #define GLFW_INCLUDE_NONE  // GLFW only; every GL function goes through render::GlFunctions
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <optional>
@@ -95,10 +96,17 @@ GLFWwindow* createWindow(const WindowOptions& options, WindowSize size) {
 
 void* glfwProcAddress(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
 
+// The remembered size (else the requested one), no larger than the primary monitor: a size remembered
+// on a bigger screen must not open a window past this one's edges.
 WindowSize initialSize(const WindowOptions& options) {
     const WindowSize requested = clampWindowSize({options.width, options.height});
-    if (options.settingsFile.empty()) return requested;
-    return readWindowSize(options.settingsFile).value_or(requested);
+    WindowSize size =
+        options.settingsFile.empty() ? requested : readWindowSize(options.settingsFile).value_or(requested);
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    if (const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr) {
+        size = clampWindowSize({std::min(size.width, mode->width), std::min(size.height, mode->height)});
+    }
+    return size;
 }
 
 void rememberSize(const std::filesystem::path& file, WindowSize size, std::ostream& err) {
@@ -143,7 +151,9 @@ int runWindow(const WindowOptions& options, const ClientFactory& makeClient, std
         const double now = glfwGetTime();
         const InputFrame frame = input.nextFrame(now - lastTime);
         lastTime = now;
-        if (frame.windowWidth > 0 && frame.windowHeight > 0) lastSize = WindowSize{frame.windowWidth, frame.windowHeight};
+        if (frame.windowWidth > 0 && frame.windowHeight > 0) {
+            lastSize = WindowSize{frame.windowWidth, frame.windowHeight};
+        }
         client->frame(frame);
         glfwSwapBuffers(window.get());
         if (client->quitRequested()) break;

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Takes the screenshots of docs/images/app-*.png: the real app in a window under Xvfb, driven with
+# xdotool as a user would, captured with ImageMagick's `import`. Usage: scripts/app-screenshots.sh
+# [BUILD_DIR] (default build/). Look at every image before committing it.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+program="$(realpath "${1:-$root/build}")/app/dropscope"
+out="$root/docs/images"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$out" "$work/home"
+
+# shot NAME SCENE ACTIONS...: start the app on SCENE, run the xdotool ACTIONS (each a quoted string of
+# xdotool arguments, or "sleep S"), capture the screen into docs/images/NAME.png, quit.
+shot() {
+    local name=$1 scene=$2
+    shift 2
+    cat >"$work/drive.sh" <<DRIVE
+set -euo pipefail
+cd "$work"
+HOME="$work/home" "$program" "$scene" >"$work/$name.log" 2>&1 &
+pid=\$!
+sleep 2.5
+$(for action in "$@"; do
+    if [[ $action == sleep* ]]; then echo "$action"; else echo "xdotool $action; sleep 0.4"; fi
+done)
+sleep 0.6
+import -window root "$out/$name.png"
+xdotool key ctrl+q
+for _ in \$(seq 100); do kill -0 \$pid 2>/dev/null || break; sleep 0.1; done
+if kill -0 \$pid 2>/dev/null; then echo "$name: no exit 10 s after Ctrl+Q" >&2; kill -9 \$pid; exit 1; fi
+wait \$pid
+DRIVE
+    rm -rf "$work/home/.config"
+    if ! xvfb-run -a -s "-screen 0 1280x800x24" bash "$work/drive.sh"; then
+        echo "FAILED: $name" >&2
+        sed 's/^/  /' "$work/$name.log" >&2 || true
+        return 1
+    fi
+    echo "docs/images/$name.png"
+    sleep 1  # the next xvfb-run -a picks a free display only once this one's lock is gone
+}
+
+default="$root/assets/scenes/default.json"
+cloud="$root/assets/scenes/cloud.json"
+topdown="$root/tests/data/scenes/gui_top_down.json"
+
+shot app-overview "$default" "mousemove 640 450" "key space" "sleep 2"
+shot app-select-edit "$default" "mousemove 560 430" "click 1" "mousemove 570 440"
+shot app-placement "$topdown" "key p" "mousemove 740 480" "click 1" "mousemove 770 470"
+shot app-octree "$cloud" "mousemove 640 60" "key c" "key bracketright" "key bracketright" "sleep 1"
+shot app-slice "$cloud" "mousemove 640 60" "key l" "key c" "key bracketright" "sleep 1"
+shot app-path-inspector "$default" "mousemove 640 60" "key space" "sleep 2" "key Right" "key Right" "key Right"
+shot app-ray-tree "$default" "mousemove 640 60" "key r" "sleep 1"
+shot app-help "$default" "mousemove 640 60" "key F1"
