@@ -25,7 +25,9 @@ bool argumentsOpenGui(int argc, const char* const* argv) {
     for (std::string_view command : kCommands) {
         if (argument == command) return false;
     }
-    return true;
+    // A scene file: named so, or an existing file. Any other word is a mistyped command, which the
+    // command line reports as such ("unknown command").
+    return argument.ends_with(".json") || std::filesystem::is_regular_file(std::filesystem::path(argument));
 }
 
 int runGui(const std::optional<std::string>& scenePath, std::ostream& err) {

@@ -11,8 +11,8 @@ namespace dropscope {
 // opens; no display is exit 3 with one line pointing to `dropscope snapshot`.
 int runGui(const std::optional<std::string>& scenePath, std::ostream& err);
 
-// Whether the arguments ask for the app rather than a subcommand: none, or one that is not a command
-// or an option (a scene file).
+// Whether the arguments ask for the app rather than a subcommand: none, or a single scene file (a name
+// ending in .json, or an existing file) that is not a command or an option.
 bool argumentsOpenGui(int argc, const char* const* argv);
 
 }  // namespace dropscope

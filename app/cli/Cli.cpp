@@ -47,7 +47,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         CLI::App app{"dropscope: light through droplets", "dropscope"};
         app.require_subcommand(0, 1);
         app.footer(
-            "Exit status: 0 success, 2 bad input (arguments, scene file, output path), 1 internal error,\n"
+            "Exit status: 0 success, 2 bad input (arguments, scene file, output path), 3 no display for the app\n"
+            "(dropscope [SCENE.json] opens it), 1 internal error,\n"
             "130 trace stopped by Ctrl-C (partial results written).");
         InspectOptions inspectOptions;
         const CLI::App* inspect = addInspectCommand(app, inspectOptions);
@@ -70,7 +71,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         if (query->parsed()) return runQuery(queryOptions, out, err);
         if (trace->parsed()) return runTraceCommand(traceOptions, out, err);
         if (snapshot->parsed()) return runSnapshotCommand(snapshotOptions, out, err);
-        // No subcommand: a later version opens the GUI here.
+        // No subcommand (main.cpp opens the app when there are no arguments at all).
         out << app.help();
         err << "dropscope: no command given (see the commands above)\n";
         return kExitBadInput;

@@ -26,6 +26,10 @@ App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
 
     const std::optional<SceneView> view = scene.view;
     state_.document = std::make_unique<SceneDocument>(std::move(scene));
+    // A debugger shows where the light comes from (with the source's handles) and, once a path segment is
+    // selected, the octree cells its search visited.
+    state_.layers.sources = true;
+    state_.layers.traversal = true;
     state_.scenePath = options.scenePath;
     state_.screenshotDirectory = options.screenshotDirectory;
     if (view) {

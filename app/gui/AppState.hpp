@@ -103,6 +103,7 @@ struct AppState {
     std::filesystem::path screenshotDirectory = ".";  // F12's timestamped PNGs
     std::filesystem::path lastScreenshot;
 
+    Eigen::AlignedBox3d sceneBounds;  // of the shapes, as last drawn (render::sceneBounds)
     std::uint64_t drawnRevision = ~std::uint64_t{0};  // the document revision the view was built from
     bool viewDirty = true;                           // something drawn changed: rebuild the layers
 

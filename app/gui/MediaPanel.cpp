@@ -51,7 +51,7 @@ void mediumRow(AppState& state, MediumId id) {
 }  // namespace
 
 void drawMediaPanel(AppState& state) {
-    placeNextPanel(PanelSide::Left, 0.62f, 0.18f);
+    placeNextPanel(PanelSide::Left, 0.36f, 0.15f);
     if (!ImGui::Begin("Media")) {
         ImGui::End();
         return;

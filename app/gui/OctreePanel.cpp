@@ -58,7 +58,7 @@ void traversalList(AppState& state) {
 }  // namespace
 
 void drawOctreePanel(AppState& state) {
-    placeNextPanel(PanelSide::Right, 0.30f, 0.28f);
+    placeNextPanel(PanelSide::Right, 0.36f, 0.27f);
     if (!ImGui::Begin("Octree")) {
         ImGui::End();
         return;

@@ -22,7 +22,7 @@ std::string fateName(PhotonFate fate) {
 
 void photonList(AppState& state) {
     const auto& paths = state.trace->outcome.result.paths;
-    ImGui::BeginChild("photons", ImVec2(0.0f, 110.0f), true);
+    ImGui::BeginChild("photons", ImVec2(0.0f, 80.0f), true);
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(paths.size()));
     while (clipper.Step()) {
@@ -52,7 +52,7 @@ void eventTable(AppState& state) {
     ImGui::Text("event %d of %zu (Left/Right keys)", state.selectedEvent + 1, path.events.size());
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("events", 8, flags, ImVec2(0.0f, 200.0f))) return;
+    if (!ImGui::BeginTable("events", 8, flags, ImVec2(0.0f, 150.0f))) return;
     for (const char* header : {"#", "type", "position", "direction", "shape", "n1 -> n2", "R", "weight"}) {
         ImGui::TableSetupColumn(header);
     }
@@ -92,7 +92,7 @@ void eventTable(AppState& state) {
 }  // namespace
 
 void drawPathPanel(AppState& state) {
-    placeNextPanel(PanelSide::Right, 0.58f, 0.24f);
+    placeNextPanel(PanelSide::Right, 0.63f, 0.37f);
     if (!ImGui::Begin("Paths")) {
         ImGui::End();
         return;

@@ -14,7 +14,7 @@ constexpr const char* kAxes[] = {"x", "y", "z"};
 }  // namespace
 
 void drawPlacementPanel(AppState& state) {
-    placeNextPanel(PanelSide::Left, 0.80f, 0.20f);
+    placeNextPanel(PanelSide::Left, 0.51f, 0.28f);
     if (!ImGui::Begin("Place")) {
         ImGui::End();
         return;

@@ -30,7 +30,7 @@ std::vector<float> perSteradian(const TraceTally& tally) {
 }  // namespace
 
 void drawResultsPanel(AppState& state) {
-    placeNextPanel(PanelSide::Right, 0.82f, 0.18f);
+    placeNextPanel(PanelSide::Left, 0.79f, 0.21f);
     if (!ImGui::Begin("Results")) {
         ImGui::End();
         return;
@@ -58,7 +58,7 @@ void drawResultsPanel(AppState& state) {
     const auto [low, high] = std::minmax_element(values.begin(), values.end());
     ImGui::PlotLines("##angular", values.data(), static_cast<int>(values.size()), 0,
                      logScale ? "log10 fraction/sr vs angle 0-180 deg" : "fraction/sr vs angle 0-180 deg",
-                     values.empty() ? 0.0f : *low, values.empty() ? 1.0f : *high, ImVec2(-1.0f, 90.0f));
+                     values.empty() ? 0.0f : *low, values.empty() ? 1.0f : *high, ImVec2(-1.0f, 60.0f));
     ImGui::End();
 }
 

@@ -52,7 +52,7 @@ void shapeList(AppState& state) {
         const Shape* shape = octree.shape(id);
         if (shape && (!filter.IsActive() || filter.PassFilter(listLabel(document, id, *shape).c_str()))) shown.push_back(id);
     }
-    ImGui::BeginChild("shapes", ImVec2(0.0f, 150.0f), true);
+    ImGui::BeginChild("shapes", ImVec2(0.0f, 110.0f), true);
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(shown.size()));
     while (clipper.Step()) {
@@ -183,7 +183,7 @@ void cloudGenerator(AppState& state) {
 }  // namespace
 
 void drawScenePanel(AppState& state) {
-    placeNextPanel(PanelSide::Left, 0.0f, 0.62f);
+    placeNextPanel(PanelSide::Left, 0.0f, 0.36f);
     if (!ImGui::Begin("Scene")) {
         ImGui::End();
         return;

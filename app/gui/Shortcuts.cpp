@@ -92,6 +92,8 @@ const std::vector<std::pair<std::string_view, std::string_view>>& mouseGestures(
         {"wheel", "zoom"},
         {"click", "select the shape under the cursor (through glass boxes)"},
         {"drag the selected droplet", "move it (refused where it would overlap)"},
+        {"drag the source's white handle", "move the selected source"},
+        {"drag the source's orange handle", "aim the selected source"},
         {"click in placement mode", "drop a droplet on the surface under the cursor, else on the placement plane"},
         {"hover", "tooltip: id, type, medium"},
     };

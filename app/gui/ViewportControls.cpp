@@ -63,6 +63,7 @@ void ViewportControls::handle(AppState& state) {
             if (drag_ == Drag::Pending) click(state, ray);
             drag_ = Drag::None;
             moving_ = RayHit::kNone;
+            handle_ = SourceHandle::None;
         }
     }
     if (mine) {
@@ -76,7 +77,21 @@ void ViewportControls::handle(AppState& state) {
 void ViewportControls::press(AppState& state, const Ray& ray) {
     drag_ = Drag::Pending;
     travelled_ = 0.0f;
-    if (state.placementMode || state.selected == RayHit::kNone) return;
+    handle_ = SourceHandle::None;
+    movedThisDrag_ = false;
+    if (state.placementMode) return;
+    if (const SourceHandle handle = handleUnder(state, ray); handle != SourceHandle::None) {
+        // Grabbed a source handle: it slides in the plane parallel to the placement plane through it.
+        const auto places = sourceHandles(state);
+        const Point at = handle == SourceHandle::Origin ? places->origin : places->aim;
+        handlePlane_ = at[state.placementPlane.axis];
+        if (const auto grabbed = rayPlaneAxis(ray, state.placementPlane.axis, handlePlane_)) {
+            grabOffset_ = at - *grabbed;
+            handle_ = handle;
+        }
+        return;
+    }
+    if (state.selected == RayHit::kNone) return;
     const auto pick = pickShape(state, ray);
     const Shape* shape = state.document->octree().shape(state.selected);
     if (!pick || pick->shape != state.selected || !shape || shape->kind() == ShapeKind::Box) return;
@@ -86,14 +101,15 @@ void ViewportControls::press(AppState& state, const Ray& ray) {
     if (const auto grabbed = rayPlaneAxis(ray, axis, spec.center[axis])) {
         grabOffset_ = spec.center - *grabbed;
         moving_ = state.selected;
-        movedThisDrag_ = false;
     }
 }
 
 void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float dy) {
     travelled_ += std::abs(dx) + std::abs(dy);
     if (drag_ == Drag::Pending && travelled_ > kClickTolerance) {
-        drag_ = moving_ != RayHit::kNone ? Drag::MoveShape : Drag::Orbit;
+        drag_ = handle_ != SourceHandle::None ? Drag::MoveHandle
+                : moving_ != RayHit::kNone    ? Drag::MoveShape
+                                              : Drag::Orbit;
     }
     const ImGuiIO& io = ImGui::GetIO();
     switch (drag_) {
@@ -121,8 +137,35 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
         }
         break;
     }
+    case Drag::MoveHandle:
+        moveHandle(state, ray);
+        break;
     default:
         break;
+    }
+}
+
+void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
+    std::vector<Source> sources = state.document->sources();
+    if (sources.empty()) return;
+    Source& source = sources[std::min(state.selectedSource, sources.size() - 1)];
+    const auto on = rayPlaneAxis(ray, state.placementPlane.axis, handlePlane_);
+    if (!on) return;
+    const Point target = *on + grabOffset_;
+    if (handle_ == SourceHandle::Origin) {
+        source.origin = target;
+    } else {
+        const Direction direction(target - source.origin);
+        if (!direction) return;
+        source.direction = direction;
+    }
+    try {
+        state.document->setSources(std::move(sources), movedThisDrag_);
+        movedThisDrag_ = true;
+        state.viewDirty = true;
+        state.say(handle_ == SourceHandle::Origin ? "moving the source" : "aiming the source");
+    } catch (const std::exception& error) {
+        state.refuse(std::string("source not changed: ") + error.what());
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "gui/AppState.hpp"
+#include "gui/SourceHandles.hpp"
 
 #include <optional>
 
@@ -14,18 +15,21 @@ public:
     void handle(AppState& state);
 
 private:
-    enum class Drag { None, Pending, Orbit, Pan, MoveShape };
+    enum class Drag { None, Pending, Orbit, Pan, MoveShape, MoveHandle };
     void press(AppState& state, const Ray& ray);
     void dragTo(AppState& state, const Ray& ray, float dx, float dy);
     void click(AppState& state, const Ray& ray);
     void hover(AppState& state, const Ray& ray);
     void sourceKeys(AppState& state, const Ray& ray);
+    void moveHandle(AppState& state, const Ray& ray);
 
     Drag drag_ = Drag::None;
     float travelled_ = 0.0f;       // pixels moved since the press
     Point grabOffset_ = Point::Zero();  // droplet centre minus the grabbed point on the drag plane
     ShapeId moving_ = RayHit::kNone;
     bool movedThisDrag_ = false;
+    SourceHandle handle_ = SourceHandle::None;  // the source handle being dragged
+    double handlePlane_ = 0.0;                  // its coordinate along the placement plane's axis
 };
 
 }  // namespace dropscope::gui

@@ -1,6 +1,7 @@
 #include "gui/ViewportScene.hpp"
 
 #include "gui/Picking.hpp"
+#include "gui/SourceHandles.hpp"
 #include "render/Colour.hpp"
 
 namespace dropscope::gui {
@@ -25,6 +26,7 @@ void ViewportScene::rebuild(AppState& state) {
     const SceneDocument& document = *state.document;
     const Octree& octree = document.octree();
     bounds_ = render::sceneBounds(octree.shapes());
+    state.sceneBounds = bounds_;
     const render::Anchor anchor{bounds_.center()};
     renderer_.setAnchor(anchor);
 
@@ -46,6 +48,13 @@ void ViewportScene::rebuild(AppState& state) {
             const double radius = kCurrentEventMarkerScale * render::kMarkerRadius * bounds_.diagonal().norm();
             const Point at = events[static_cast<std::size_t>(state.selectedEvent)].position;
             layers_.markers.push_back(render::sphereInstance(at, radius, anchor, render::kHighlight));
+        }
+    }
+    if (const auto handles = sourceHandles(state)) {
+        layers_.markers.push_back(render::sphereInstance(handles->origin, handles->radius, anchor, kOriginHandleColour));
+        const auto& sources = document.sources();
+        if (sources[std::min(state.selectedSource, sources.size() - 1)].type != SourceType::PointSource) {
+            layers_.markers.push_back(render::sphereInstance(handles->aim, handles->radius, anchor, kAimHandleColour));
         }
     }
     render::uploadScene(renderer_, octree.shapes(), layers_, options);

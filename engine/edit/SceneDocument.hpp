@@ -92,7 +92,9 @@ public:
     MediumId addMedium(const Medium& medium);
     void setMedium(MediumId id, const Medium& medium);
     void setAmbient(MediumId id);
-    void setSources(std::vector<Source> sources);
+    // With mergeWithPrevious, when the last undo step is a sources edit and nothing is to be redone, this
+    // folds into it: dragging a source's handle is one undo step.
+    void setSources(std::vector<Source> sources, bool mergeWithPrevious = false);
 
     // nullopt when the shape `spec` describes could be added (or, with `ignore`, replace that shape),
     // else the message the edit would be refused with.
@@ -133,7 +135,7 @@ private:
         MediumId ambient;
         std::vector<Source> sources;
     };
-    enum class StepKind { Modify, Other };
+    enum class StepKind { Modify, Sources, Other };
     struct Step {
         std::string label;
         StepKind kind = StepKind::Other;

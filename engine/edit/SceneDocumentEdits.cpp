@@ -281,7 +281,7 @@ void SceneDocument::setAmbient(MediumId id) {
     commitProperties("set the ambient medium to " + jsonpath::quoted(media()[id].name), std::move(after));
 }
 
-void SceneDocument::setSources(std::vector<Source> sources) {
+void SceneDocument::setSources(std::vector<Source> sources, bool mergeWithPrevious) {
     for (std::size_t i = 0; i < sources.size(); ++i) {
         const Source& source = sources[i];
         const std::string which = "source " + std::to_string(i) + ": ";
@@ -295,7 +295,14 @@ void SceneDocument::setSources(std::vector<Source> sources) {
     }
     Properties after = properties();
     after.sources = std::move(sources);
+    if (mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Sources) {
+        setProperties(after);
+        undo_.back().after = std::move(after);
+        ++revision_;
+        return;
+    }
     commitProperties("edit sources", std::move(after));
+    undo_.back().kind = StepKind::Sources;
 }
 
 }  // namespace dropscope

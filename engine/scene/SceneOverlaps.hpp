@@ -9,8 +9,9 @@ namespace dropscope {
 bool nestsInside(const Shape& inner, const Shape& outer);
 
 // Throws SceneError at the later of the first two shapes that partly overlap (positive volume of
-// intersection, neither nested in the other), naming both. O(N^2): meant for the explicit shapes of a
-// scene file.
+// intersection, neither nested in the other), naming both. Candidates come from spatial hash grids, one
+// per size class of shapes (widths within a factor 8), so a saved scene of 1e6 explicit droplets is
+// checked in about a second.
 void checkShapesDisjoint(const Scene& scene);
 
 }  // namespace dropscope

@@ -21,7 +21,14 @@ dropscope_add_cli_exit_test(cli_inspect_malformed_json 2 "malformed\\.json: line
                             inspect ${_scenes}/malformed.json)
 dropscope_add_cli_exit_test(cli_inspect_without_scene 2 "^dropscope: .*scene" inspect)
 dropscope_add_cli_exit_test(cli_unknown_command 2 "^dropscope: unknown command \"render\"" render)
-dropscope_add_cli_exit_test(cli_no_command 2 "^dropscope: no command given")
+# No command opens the app; without a display that is one line pointing to `dropscope snapshot`, exit 3.
+# A scene that does not load is bad input before any window opens.
+dropscope_add_cli_exit_test(cli_no_command_without_display 3
+                            "^dropscope: no display \\(DISPLAY is not set\\); .*dropscope snapshot SCENE --out")
+set_tests_properties(cli_no_command_without_display PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:;WAYLAND_DISPLAY=unset:")
+dropscope_add_cli_exit_test(cli_app_bad_scene 2 "overlapping\\.json: shapes\\[1\\]: .* overlaps shapes\\[0\\]"
+                            ${_scenes}/overlapping.json)
+dropscope_add_cli_exit_test(cli_app_missing_scene 2 "does_not_exist\\.json: no such file$" ${_scenes}/does_not_exist.json)
 
 # dropscope trace: a small run (it must print nothing on stderr when stderr is no terminal), bad input,
 # and Ctrl-C on a long run (trace_interrupt.sh: exit 130 and partial results).

@@ -136,3 +136,34 @@ TEST(SceneDocument, RandomEditsKeepTheOctreeExact) {
 
 }  // namespace
 }  // namespace dropscope
+
+namespace dropscope {
+namespace {
+
+TEST(SceneDocument, ADraggedSourceIsOneUndoStepAndAFreshEditIsAnother) {
+    SceneDocument document(test::smallScene());
+    const std::vector<Source> original = document.sources();
+    Source source;
+    source.origin = Point(0, 0, -9);
+    source.direction = Direction(0, 0, 1);
+    document.setSources({source});
+    const std::size_t depth = document.undoDepth();
+    for (int k = 1; k <= 5; ++k) {
+        source.origin = Point(0.1 * k, 0, -9);
+        document.setSources({source}, true);
+    }
+    EXPECT_EQ(document.undoDepth(), depth);
+    EXPECT_EQ(document.sources().front().origin, Point(0.5, 0, -9));
+    document.undo();
+    EXPECT_EQ(document.sources().size(), original.size());
+    document.redo();
+    EXPECT_EQ(document.sources().front().origin, Point(0.5, 0, -9));
+    // A merge never folds into another kind of step.
+    document.addShape(test::sphereAt(Point(-4, 0, 0), 0.5));
+    source.origin = Point(1, 0, -9);
+    document.setSources({source}, true);
+    EXPECT_EQ(document.undoDepth(), depth + 2);
+}
+
+}  // namespace
+}  // namespace dropscope

@@ -1,6 +1,7 @@
 #include "AppHarness.hpp"
 
 #include "edit/ShapeSpec.hpp"
+#include "gui/Actions.hpp"
 #include "geometry/Sphere.hpp"
 #include "snapshot/Image.hpp"
 #include "transport/OpticalScene.hpp"
@@ -11,6 +12,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 namespace dropscope::gui::testing {
@@ -135,6 +138,34 @@ TEST(AppUi, ClickingSelectsAndDraggingMovesTheSelectedDropletInOneUndoStep) {
     EXPECT_NEAR(sphereAt(harness, 0).center().z(), 2.0, kMouseRounding);
     harness.press('Z', true);
     EXPECT_EQ(sphereAt(harness, 0).center(), Point(2.0, 0.0, 2.0));
+}
+
+TEST(AppUi, DraggingTheSourceHandlesMovesAndAimsTheSource) {
+    AppHarness harness(kTopDownScene);
+    Source source;
+    source.type = SourceType::Ray;
+    source.origin = Point(-2.0, 0.0, -1.0);
+    source.direction = Direction(1.0, 0.0, 0.0);
+    harness.state().document->setSources({source});
+    harness.frames(2);
+    const double arrow = render::kSourceGlyph * harness.state().sceneBounds.diagonal().norm();
+
+    const auto [ox, oy] = topDownPixel(source.origin);
+    harness.drag(ox, oy, ox + 64.0f, oy);  // 64 pixels right: 0.1 of 10 tanX along +x
+    const Point moved = source.origin + Point(0.1 * 10.0 * kTanX, 0.0, 0.0);
+    EXPECT_NEAR((harness.state().document->sources()[0].origin - moved).norm(), 0.0, kMouseRounding);
+    EXPECT_EQ(harness.state().document->sources()[0].direction.vector(), Eigen::Vector3d::UnitX());
+    EXPECT_EQ(harness.state().selected, RayHit::kNone);  // a handle drag is not a click on a shape
+
+    const auto [ax, ay] = topDownPixel(moved + arrow * Eigen::Vector3d::UnitX());
+    harness.drag(ax, ay, ax, ay + 80.0f);  // the tip 80 pixels down: +z by 0.2 of 10 tanY
+    const Eigen::Vector3d aimed = Eigen::Vector3d(arrow, 0.0, 0.2 * 10.0 * kTanY).normalized();
+    EXPECT_NEAR((harness.state().document->sources()[0].direction.vector() - aimed).norm(), 0.0, kMouseRounding);
+
+    harness.press('Z', true);  // each drag is one undo step
+    EXPECT_EQ(harness.state().document->sources()[0].direction.vector(), Eigen::Vector3d::UnitX());
+    harness.press('Z', true);
+    EXPECT_EQ(harness.state().document->sources()[0].origin, source.origin);
 }
 
 // A water sphere on the source's axis: the first interface is at (0, 0, -1), head on, where Fresnel
@@ -346,6 +377,46 @@ TEST_F(AppScreenshot, SavedScenesReloadWithTheEditsAndTheCamera) {
     EXPECT_EQ(static_cast<const Sphere&>(*reloaded.shapes[1]).center(), sphereAt(harness, 1).center());
     ASSERT_TRUE(reloaded.view.has_value());
     EXPECT_EQ(reloaded.view->eye, Point(0.0, 10.0, 0.0));
+}
+
+TEST_F(AppScreenshot, ExportedPathsAreTheTraceFilesJsonLinesOnePerPhoton) {
+    AppHarness harness(kAxisScene);
+    harness.state().fire.paths = 7;
+    harness.press(kKeySpace);
+    ASSERT_TRUE(harness.waitForTrace());
+    ASSERT_TRUE(exportPaths(harness.state(), directory_ / "paths.jsonl")) << harness.state().status.text;
+    std::ifstream in(directory_ / "paths.jsonl");
+    std::string line;
+    int lines = 0;
+    while (std::getline(in, line)) {
+        EXPECT_NE(line.find("\"events\""), std::string::npos);
+        ++lines;
+    }
+    EXPECT_EQ(lines, 7);
+}
+
+TEST_F(AppScreenshot, ASceneThatDoesNotOpenLeavesTheCurrentOneAndSaysWhy) {
+    AppHarness harness(kTopDownScene);
+    std::ofstream(directory_ / "bad.json") << R"({"dropscope": 1, "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]})";
+    EXPECT_FALSE(openScene(harness.state(), directory_ / "bad.json"));
+    EXPECT_TRUE(harness.state().status.error);
+    EXPECT_NE(harness.state().status.text.find("shapes[0].radius"), std::string::npos) << harness.state().status.text;
+    EXPECT_EQ(harness.state().document->shapeCount(), 1u);
+    harness.frame();
+}
+
+TEST_F(AppScreenshot, ThePanelLayoutIsRememberedInTheIniFile) {
+    AppOptions options;
+    options.iniFile = directory_ / "imgui.ini";
+    {
+        AppHarness harness(kTopDownScene, 1280, 800, options);
+        harness.frames(2);
+    }
+    std::ifstream in(options.iniFile);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const char* panel : {"[Window][Scene]", "[Window][Fire]", "[Window][Octree]", "[Window][Paths]"}) {
+        EXPECT_NE(text.find(panel), std::string::npos) << panel;
+    }
 }
 
 }  // namespace

@@ -1,0 +1,48 @@
+#include "gui/SourceHandles.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace dropscope::gui {
+
+namespace {
+
+// A handle is this many event markers across: big enough to grab, small beside a droplet.
+constexpr double kHandleMarkerScale = 2.0;
+constexpr double kGrabScale = 1.5;
+
+// Distance from `point` to the ray, or infinity when the point is behind its origin.
+double distanceToRay(const Ray& ray, const Point& point) {
+    const Eigen::Vector3d offset = point - ray.origin;
+    const double along = offset.dot(ray.direction.vector());
+    if (along <= 0.0) return std::numeric_limits<double>::infinity();
+    return (offset - along * ray.direction.vector()).norm();
+}
+
+}  // namespace
+
+std::optional<SourceHandlePlaces> sourceHandles(const AppState& state) {
+    const auto& sources = state.document->sources();
+    if (!state.layers.sources || sources.empty() || state.sceneBounds.isEmpty()) return std::nullopt;
+    const Source& source = sources[std::min(state.selectedSource, sources.size() - 1)];
+    const double diagonal = state.sceneBounds.diagonal().norm();
+    const double arrow = render::kSourceGlyph * diagonal;
+    const Eigen::Vector3d direction = source.direction ? source.direction.vector() : Eigen::Vector3d::UnitZ();
+    return SourceHandlePlaces{source.origin, source.origin + arrow * direction,
+                              kHandleMarkerScale * render::kMarkerRadius * diagonal};
+}
+
+SourceHandle handleUnder(const AppState& state, const Ray& ray) {
+    const auto handles = sourceHandles(state);
+    if (!handles) return SourceHandle::None;
+    const double origin = distanceToRay(ray, handles->origin);
+    const double aim = state.document->sources()[std::min(state.selectedSource, state.document->sources().size() - 1)]
+                                   .type == SourceType::PointSource
+                           ? std::numeric_limits<double>::infinity()
+                           : distanceToRay(ray, handles->aim);
+    const double reach = kGrabScale * handles->radius;
+    if (std::min(origin, aim) > reach) return SourceHandle::None;
+    return origin <= aim ? SourceHandle::Origin : SourceHandle::Aim;
+}
+
+}  // namespace dropscope::gui
