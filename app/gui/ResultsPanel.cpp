@@ -58,7 +58,8 @@ void drawResultsPanel(AppState& state) {
     const auto [low, high] = std::minmax_element(values.begin(), values.end());
     ImGui::PlotLines("##angular", values.data(), static_cast<int>(values.size()), 0,
                      logScale ? "log10 fraction/sr vs angle 0-180 deg" : "fraction/sr vs angle 0-180 deg",
-                     values.empty() ? 0.0f : *low, values.empty() ? 1.0f : *high, ImVec2(-1.0f, 60.0f));
+                     values.empty() ? 0.0f : *low, values.empty() ? 1.0f : *high,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 60.0f));  // PlotLines takes no -1 "fill" width
     ImGui::End();
 }
 
