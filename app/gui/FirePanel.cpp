@@ -105,7 +105,7 @@ void fireControls(AppState& state) {
 }  // namespace
 
 void drawFirePanel(AppState& state) {
-    placeNextPanel(PanelSide::Right, 0.0f, 0.36f);
+    placeNextPanel(PanelSide::Right, 0.0f, 0.40f);
     if (!ImGui::Begin("Fire")) {
         ImGui::End();
         return;

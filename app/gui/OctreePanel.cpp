@@ -58,7 +58,7 @@ void traversalList(AppState& state) {
 }  // namespace
 
 void drawOctreePanel(AppState& state) {
-    placeNextPanel(PanelSide::Right, 0.36f, 0.27f);
+    placeNextPanel(PanelSide::Right, 0.40f, 0.25f);
     if (!ImGui::Begin("Octree")) {
         ImGui::End();
         return;

@@ -92,7 +92,7 @@ void eventTable(AppState& state) {
 }  // namespace
 
 void drawPathPanel(AppState& state) {
-    placeNextPanel(PanelSide::Right, 0.63f, 0.37f);
+    placeNextPanel(PanelSide::Right, 0.65f, 0.35f);
     if (!ImGui::Begin("Paths")) {
         ImGui::End();
         return;

@@ -53,7 +53,14 @@ void drawResultsPanel(AppState& state) {
     ImGui::Checkbox("log scale", &logScale);
     std::vector<float> values = perSteradian(tally);
     if (logScale) {
-        for (float& v : values) v = v > 0.0f ? std::log10(v) : -12.0f;
+        // Empty bins sit half a decade below the faintest non-empty one, not at a fixed floor that would
+        // stretch the plot.
+        float faintest = 0.0f;
+        for (float v : values) {
+            if (v > 0.0f) faintest = faintest > 0.0f ? std::min(faintest, v) : v;
+        }
+        const float floor = faintest > 0.0f ? std::log10(faintest) - 0.5f : 0.0f;
+        for (float& v : values) v = v > 0.0f ? std::log10(v) : floor;
     }
     const auto [low, high] = std::minmax_element(values.begin(), values.end());
     ImGui::PlotLines("##angular", values.data(), static_cast<int>(values.size()), 0,
