@@ -48,15 +48,6 @@ Json eventJson(const Event& event, const std::vector<Medium>& media) {
     return json;
 }
 
-std::string_view fateName(PhotonFate fate) {
-    switch (fate) {
-    case PhotonFate::Escaped: return "escaped";
-    case PhotonFate::Absorbed: return "absorbed";
-    case PhotonFate::Lost: return "lost";
-    }
-    return "?";
-}
-
 }  // namespace
 
 std::string_view fresnelModelName(FresnelModel model) { return model == FresnelModel::Schlick ? "schlick" : "exact"; }
@@ -119,7 +110,7 @@ void writePathsJsonl(const std::vector<PhotonPath>& paths, const std::vector<Med
         Json events = Json::array();
         for (const Event& event : path.events) events.push_back(eventJson(event, media));
         const Json line = {
-            {"photon", path.photon}, {"source", path.source}, {"fate", fateName(path.fate)}, {"events", events}};
+            {"photon", path.photon}, {"source", path.source}, {"fate", photonFateName(path.fate)}, {"events", events}};
         out << line.dump() << '\n';
     }
 }

@@ -11,15 +11,6 @@ namespace dropscope::gui {
 
 namespace {
 
-std::string fateName(PhotonFate fate) {
-    switch (fate) {
-    case PhotonFate::Escaped: return "escaped";
-    case PhotonFate::Absorbed: return "absorbed";
-    case PhotonFate::Lost: return "lost";
-    }
-    return "?";
-}
-
 void photonList(AppState& state) {
     const auto& paths = state.trace->outcome.result.paths;
     ImGui::BeginChild("photons", ImVec2(0.0f, 80.0f), true);
@@ -28,7 +19,7 @@ void photonList(AppState& state) {
     while (clipper.Step()) {
         for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
             const PhotonPath& path = paths[static_cast<std::size_t>(row)];
-            const std::string label = "photon " + std::to_string(path.photon) + ": " + fateName(path.fate) + ", " +
+            const std::string label = "photon " + std::to_string(path.photon) + ": " + std::string(photonFateName(path.fate)) + ", " +
                                       std::to_string(path.events.size()) + " events";
             if (ImGui::Selectable(label.c_str(), row == state.selectedPath)) selectEvent(state, row, 0);
         }

@@ -5,6 +5,15 @@
 
 namespace dropscope {
 
+std::string_view photonFateName(PhotonFate fate) {
+    switch (fate) {
+    case PhotonFate::Escaped: return "escaped";
+    case PhotonFate::Absorbed: return "absorbed";
+    case PhotonFate::Lost: return "lost";
+    }
+    return "?";
+}
+
 namespace {
 
 // Appends events to an optional path.

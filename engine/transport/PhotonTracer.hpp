@@ -7,6 +7,7 @@
 #include "transport/SurfaceCrossing.hpp"
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 namespace dropscope {
@@ -19,6 +20,9 @@ struct TransportSettings {
 };
 
 enum class PhotonFate { Escaped, Absorbed, Lost };
+
+// "escaped", "absorbed", "lost": as paths.jsonl and the app write it.
+std::string_view photonFateName(PhotonFate fate);
 
 struct PhotonOutcome {
     PhotonFate fate = PhotonFate::Lost;

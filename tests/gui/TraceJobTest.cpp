@@ -3,6 +3,7 @@
 #include "gui/TraceJob.hpp"
 #include "scene/SceneLoader.hpp"
 #include "transport/OpticalScene.hpp"
+#include "transport/TallyExpectations.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,8 @@
 
 namespace dropscope {
 namespace {
+
+using test::expectSameTally;
 
 using gui::TraceJob;
 using gui::TraceOutcome;
@@ -58,17 +61,6 @@ TraceSettings settings(std::uint64_t photons) {
     settings.paths = 40;
     settings.seed = 2024;
     return settings;
-}
-
-void expectSameTally(const TraceTally& a, const TraceTally& b) {
-    EXPECT_EQ(a.photons, b.photons);
-    EXPECT_EQ(a.escaped, b.escaped);
-    EXPECT_EQ(a.absorbed, b.absorbed);
-    EXPECT_EQ(a.lost, b.lost);
-    EXPECT_EQ(a.unscattered, b.unscattered);
-    EXPECT_EQ(a.events, b.events);
-    EXPECT_EQ(a.lostReasons, b.lostReasons);
-    EXPECT_EQ(a.angular, b.angular);
 }
 
 void expectSamePaths(const std::vector<PhotonPath>& a, const std::vector<PhotonPath>& b) {

@@ -1,4 +1,5 @@
 #include "TransportFixtures.hpp"
+#include "TallyExpectations.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,6 +7,8 @@
 
 namespace dropscope {
 namespace {
+
+using test::expectSameTally;
 
 Scene defaultScene() { return loadScene(DROPSCOPE_SOURCE_DIR "/assets/scenes/default.json"); }
 
@@ -16,17 +19,6 @@ TraceSettings settingsFor(std::uint64_t photons, int threads) {
     settings.paths = 50;
     settings.seed = 2024;
     return settings;
-}
-
-void expectSameTally(const TraceTally& a, const TraceTally& b) {
-    EXPECT_EQ(a.photons, b.photons);
-    EXPECT_EQ(a.escaped, b.escaped);
-    EXPECT_EQ(a.absorbed, b.absorbed);
-    EXPECT_EQ(a.lost, b.lost);
-    EXPECT_EQ(a.unscattered, b.unscattered);
-    EXPECT_EQ(a.events, b.events);
-    EXPECT_EQ(a.lostReasons, b.lostReasons);
-    EXPECT_EQ(a.angular, b.angular);
 }
 
 TEST(TraceRun, OneAndTwoThreadsGiveBitIdenticalResults) {
