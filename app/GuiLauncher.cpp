@@ -40,15 +40,19 @@ int runGui(const std::optional<std::string>& scenePath, std::ostream& err) {
         return kExitBadInput;
     }
     gui::WindowOptions window;
-    const std::filesystem::path settings = gui::defaultSettingsDirectory();
+    std::filesystem::path settings = gui::defaultSettingsDirectory();
+    if (std::error_code error; !settings.empty() && (std::filesystem::create_directories(settings, error), error)) {
+        err << "dropscope: cannot keep settings in " << settings.string() << " (" << error.message()
+            << "); window size and panel layout will not be remembered\n";
+        settings.clear();
+    }
     if (!settings.empty()) window.settingsFile = settings / "window.txt";
     gui::AppOptions options;
-    options.scenePath = file;
+    if (scenePath) options.scenePath = file;  // the bundled scene is never saved over: Save asks for a name
     if (!settings.empty()) options.iniFile = settings / "imgui.ini";
     return gui::runWindow(
         window,
         [&](const render::GlFunctions& gl) -> std::unique_ptr<gui::FrameClient> {
-            if (!settings.empty()) std::filesystem::create_directories(settings);
             return std::make_unique<gui::App>(gl, std::move(*scene), options);
         },
         err);

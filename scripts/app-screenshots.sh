@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Takes the screenshots of docs/images/app-*.png: the real app in a window under Xvfb, driven with
 # xdotool as a user would, captured with ImageMagick's `import`. Usage: scripts/app-screenshots.sh
-# [BUILD_DIR] (default build/). Look at every image before committing it.
+# [BUILD_DIR] (default build/); ONLY=app-ray-tree takes just that one. Look at every image before
+# committing it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 program="$(realpath "${1:-$root/build}")/app/dropscope"
@@ -15,6 +16,7 @@ mkdir -p "$out" "$work/home"
 shot() {
     local name=$1 scene=$2
     shift 2
+    [[ -n "${ONLY:-}" && "$ONLY" != "$name" ]] && return 0
     cat >"$work/drive.sh" <<DRIVE
 set -euo pipefail
 cd "$work"
@@ -51,5 +53,8 @@ shot app-placement "$topdown" "key p" "mousemove 740 480" "click 1" "mousemove 7
 shot app-octree "$cloud" "mousemove 640 60" "key c" "key bracketright" "key bracketright" "sleep 1"
 shot app-slice "$cloud" "mousemove 640 60" "key l" "key c" "key bracketright" "sleep 1"
 shot app-path-inspector "$default" "mousemove 640 60" "key space" "sleep 2" "key Right" "key Right" "key Right"
-shot app-ray-tree "$default" "mousemove 640 60" "key r" "sleep 1"
+# The beam's central ray meets drop-a head on, where every branch stays on the axis: aim it (A) at a
+# point off the droplet's centre first, then fire the tree (R) and zoom in.
+shot app-ray-tree "$default" "mousemove 612 396" "key a" "key r" "mousemove 560 420" "click --repeat 4 --delay 100 4" \
+    "mousemove 640 60" "sleep 1"
 shot app-help "$default" "mousemove 640 60" "key F1"

@@ -78,8 +78,12 @@ bool placeDroplet(AppState& state, const Point& centre) {
     }
 }
 
-void fireTrace(AppState& state) {
-    if (state.document->sources().empty()) return state.refuse("nothing to fire: add a source first (Sources panel)");
+namespace {
+
+void startTrace(AppState& state, bool automatic) {
+    state.firedRevision = state.document->revision();
+    state.retraceWanted = false;
+    if (state.document->sources().empty()) return state.refuse("nothing to fire: add a source first (Fire panel)");
     TraceSettings settings;
     settings.photons = std::max<std::uint64_t>(state.fire.photons, 1);
     settings.paths = std::min(state.fire.paths, settings.photons);
@@ -88,20 +92,14 @@ void fireTrace(AppState& state) {
     Scene scene = state.document->toScene(&slots);
     state.pendingSlots = std::move(slots);
     state.job.start(std::move(scene), settings);
-    state.firedRevision = state.document->revision();
-    state.retraceWanted = false;
-    state.say("tracing " + std::to_string(settings.photons) + " photons ...");
+    state.automaticTrace = automatic;
+    if (!automatic) state.say("tracing " + std::to_string(settings.photons) + " photons ...");
 }
 
-void cancelTrace(AppState& state) {
-    if (!state.job.running()) return;
-    state.job.cancel();
-    state.say("trace cancelled; the photons traced so far are shown");
-}
-
-void fireRayTree(AppState& state) {
+void traceRayTree(AppState& state, bool automatic) {
+    state.rayTreeRevision = state.document->revision();
     const auto& sources = state.document->sources();
-    if (sources.empty()) return state.refuse("nothing to fire: add a source first (Sources panel)");
+    if (sources.empty()) return state.refuse("nothing to fire: add a source first (Fire panel)");
     const Source& source = sources[std::min(state.selectedSource, sources.size() - 1)];
     try {
         const OpticalScene optical(state.document->toScene());
@@ -109,14 +107,28 @@ void fireRayTree(AppState& state) {
         state.rayTree = traceRayTree(optical, ray, 1.0, RayTreeSettings{});
         state.rayTreeRay = ray;
         state.layers.rayTree = true;
-        state.rayTreeRevision = state.document->revision();
         state.viewDirty = true;
-        state.say("ray tree: " + std::to_string(state.rayTree->nodes.size()) + " events, " +
-                  std::to_string(state.rayTree->absorbed) + " absorbed");
+        if (!automatic) {
+            state.say("ray tree: " + std::to_string(state.rayTree->nodes.size()) + " events, " +
+                      std::to_string(state.rayTree->absorbed) + " absorbed");
+        }
     } catch (const std::exception& error) {
         state.refuse(std::string("ray tree failed: ") + error.what());
     }
 }
+
+}  // namespace
+
+void fireTrace(AppState& state) { startTrace(state, false); }
+void fireTraceAutomatically(AppState& state) { startTrace(state, true); }
+
+void cancelTrace(AppState& state) {
+    if (!state.job.running()) return;
+    state.job.cancel();
+    state.say("trace cancelled; the photons traced so far are shown");
+}
+
+void fireRayTree(AppState& state) { traceRayTree(state, false); }
 
 void updateTraces(AppState& state) {
     if (auto outcome = state.job.takeResult()) {
@@ -127,18 +139,24 @@ void updateTraces(AppState& state) {
             std::ostringstream text;
             text << (outcome->result.partial ? "trace stopped: " : "traced ") << tally.photons << " photons in "
                  << std::fixed << std::setprecision(2) << outcome->result.seconds << " s";
-            state.trace = TraceShown{std::move(*outcome), std::move(state.pendingSlots)};
+            state.trace = TraceShown{std::move(*outcome), std::move(state.pendingSlots), nullptr};
             const auto paths = static_cast<int>(state.trace->outcome.result.paths.size());
-            if (state.selectedPath >= paths) state.selectedPath = -1;
-            if (state.selectedPath >= 0) selectEvent(state, state.selectedPath, state.selectedEvent);
+            selectEvent(state, state.selectedPath < paths ? state.selectedPath : -1, state.selectedEvent);
             state.viewDirty = true;
-            state.say(text.str());
+            if (!state.automaticTrace) state.say(text.str());
         }
     }
     const std::uint64_t revision = state.document->revision();
     if (!state.fire.live) return;
-    if (state.trace && !state.job.running() && state.firedRevision != revision) fireTrace(state);
-    if (state.rayTree && state.rayTreeRevision != revision) fireRayTree(state);
+    if (state.trace && !state.job.running() && state.firedRevision != revision) fireTraceAutomatically(state);
+    if (state.rayTree && state.rayTreeRevision != revision) traceRayTree(state, true);
+}
+
+MediumId firstDropletMedium(const SceneDocument& document) {
+    for (MediumId m = 0; m < document.media().size(); ++m) {
+        if (m != document.ambient()) return m;
+    }
+    return document.ambient();
 }
 
 void selectEvent(AppState& state, int path, int event) {
@@ -154,10 +172,15 @@ void selectEvent(AppState& state, int path, int event) {
     if (events.empty()) return;
     const Event& from = events[static_cast<std::size_t>(state.selectedEvent)];
     if (from.type == EventType::Escape || from.type == EventType::Absorb || from.type == EventType::Lost) return;
-    // The segment leaving this event, searched in the octree of the traced scene: the cells visited and
-    // the shapes tested, as the photon saw them.
-    const OpticalScene optical(state.trace->outcome.scene);
-    state.traversal = render::traceTraversal(optical.octree(), Ray{from.position, from.direction});
+    // The segment leaving this event, searched in the octree of the traced scene (built once per trace):
+    // the cells visited and the shapes tested, as the photon saw them.
+    if (!state.trace->octree) {
+        const Scene& scene = state.trace->outcome.scene;
+        std::vector<std::unique_ptr<Shape>> shapes;
+        for (const auto& shape : scene.shapes) shapes.push_back(shape->clone());
+        state.trace->octree = std::make_shared<const Octree>(std::move(shapes), scene.octree);
+    }
+    state.traversal = render::traceTraversal(*state.trace->octree, Ray{from.position, from.direction});
 }
 
 void stepEvent(AppState& state, int delta) {
@@ -171,12 +194,12 @@ void stepEvent(AppState& state, int delta) {
 bool openScene(AppState& state, const std::filesystem::path& file) {
     try {
         auto document = std::make_unique<SceneDocument>(loadScene(file));
-        state.job.cancel();
+        state.job.discard();  // a run of the old scene must not arrive as this one's
         state.document = std::move(document);
         state.scenePath = file;
         state.selected = RayHit::kNone;
         state.selectedSource = 0;
-        state.placementMedium = 0;
+        state.placementMedium = firstDropletMedium(*state.document);
         forgetTraces(state);
         state.fitRequested = !state.document->view();
         if (const auto& view = state.document->view()) state.camera = render::Camera::fromView(*view);

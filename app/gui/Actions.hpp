@@ -20,11 +20,16 @@ bool placeDroplet(AppState& state, const Point& centre);
 // Starts the Monte Carlo trace of the fire settings off the UI thread; the last result stays shown
 // until the new one arrives.
 void fireTrace(AppState& state);
+// The same, started by "live" after a change: nothing said in the status line unless it fails.
+void fireTraceAutomatically(AppState& state);
 void cancelTrace(AppState& state);
 // Traces the selected source's central ray as a ray tree (both branches at every interface).
 void fireRayTree(AppState& state);
 // Takes a finished trace from the job; traces again when the scene changed under a live trace.
 void updateTraces(AppState& state);
+
+// The medium new droplets get: the first that is not the ambient (else the ambient).
+MediumId firstDropletMedium(const SceneDocument& document);
 
 // Selects photon `path`'s event `event` (clamped), and the octree traversal of the segment from it.
 void selectEvent(AppState& state, int path, int event);

@@ -36,14 +36,9 @@ App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
         state_.camera = render::Camera::fromView(*view);
         state_.fitRequested = false;
     }
-    const auto& media = state_.document->media();
-    for (MediumId m = 0; m < media.size(); ++m) {
-        if (m != state_.document->ambient()) {
-            state_.placementMedium = m;  // a droplet of the first medium that is not the ambient
-            break;
-        }
-    }
-    state_.say(options.scenePath.empty() ? "new scene" : "opened " + options.scenePath.string() + " - F1 for help");
+    state_.placementMedium = firstDropletMedium(*state_.document);
+    state_.say(options.scenePath.empty() ? "the bundled default scene (File > Save as keeps your changes) - F1 for help"
+                                         : "opened " + options.scenePath.string() + " - F1 for help");
 }
 
 App::~App() {
@@ -81,7 +76,7 @@ void App::frame(const InputFrame& input) {
     const int height = std::max(input.framebufferHeight, 1);
     scene_->draw(state_, width, height);
     imguiRenderer_->render(ImGui::GetDrawData());
-    if (state_.screenshot) takeScreenshot(width, height);
+    if (state_.screenshot && state_.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
 }
 
 void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {

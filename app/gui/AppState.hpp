@@ -50,6 +50,7 @@ struct FireSettings {
 struct TraceShown {
     TraceOutcome outcome;
     std::vector<ShapeId> slotOfShape;
+    std::shared_ptr<const Octree> octree;  // over the traced shapes, built for the first traversal asked
 };
 
 // The screenshot the next frame writes, after everything is drawn.
@@ -58,6 +59,7 @@ struct ScreenshotRequest {
     bool panels = false;
     int width = 0;  // 0: the window's size (panels or not)
     int height = 0;
+    int delayFrames = 0;  // frames to wait first, e.g. until the dialog that asked for it has closed
 };
 
 // The file-name prompt open, if any (File menu, Ctrl+O).
@@ -90,6 +92,7 @@ struct AppState {
     std::optional<RayTree> rayTree;         // the last ray fired as a tree
     std::optional<Ray> rayTreeRay;
     std::uint64_t rayTreeRevision = 0;
+    bool automaticTrace = false;            // the run in progress was started by "live", not the user
 
     int selectedPath = -1;   // index into trace->outcome.result.paths
     int selectedEvent = 0;   // within that path; the segment from it to the next is "selected"
@@ -98,6 +101,7 @@ struct AppState {
     StatusMessage status;
     bool showHelp = false;
     FilePrompt prompt = FilePrompt::None;
+    std::uint32_t editingItem = 0;  // the ImGui item whose edits merge into one undo step (0: none)
     bool quit = false;
     std::optional<ScreenshotRequest> screenshot;
     std::filesystem::path screenshotDirectory = ".";  // F12's timestamped PNGs

@@ -81,8 +81,9 @@ void drawFilePrompts(AppState& state) {
         case FilePrompt::SaveAs: done = saveScene(state, path); break;
         case FilePrompt::ExportPaths: done = exportPaths(state, path); break;
         case FilePrompt::Screenshot:
+            // Two frames later: this dialog has closed and is not in the picture.
             state.screenshot = ScreenshotRequest{path, choice.panels, choice.windowSize ? 0 : std::max(choice.width, 1),
-                                                 choice.windowSize ? 0 : std::max(choice.height, 1)};
+                                                 choice.windowSize ? 0 : std::max(choice.height, 1), 2};
             done = true;
             break;
         case FilePrompt::None: break;

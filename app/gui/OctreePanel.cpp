@@ -9,7 +9,20 @@ namespace dropscope::gui {
 
 namespace {
 
-void statisticsTable(const Octree& octree) {
+// The octree's per-level statistics walk every cell: computed again only when the document changed.
+const std::vector<LevelStatistics>& levelStatistics(const SceneDocument& document) {
+    static const SceneDocument* cachedDocument = nullptr;
+    static std::uint64_t cachedRevision = 0;
+    static std::vector<LevelStatistics> cached;
+    if (cachedDocument != &document || cachedRevision != document.revision() || cached.empty()) {
+        cached = document.octree().statistics();
+        cachedDocument = &document;
+        cachedRevision = document.revision();
+    }
+    return cached;
+}
+
+void statisticsTable(const std::vector<LevelStatistics>& statistics) {
     if (!ImGui::BeginTable("levels", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY,
                            ImVec2(0.0f, 130.0f))) {
         return;
@@ -19,7 +32,7 @@ void statisticsTable(const Octree& octree) {
     ImGui::TableSetupColumn("leaves");
     ImGui::TableSetupColumn("shapes stored");
     ImGui::TableHeadersRow();
-    for (const LevelStatistics& level : octree.statistics()) {
+    for (const LevelStatistics& level : statistics) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::Text("%d", level.level);
@@ -34,14 +47,17 @@ void statisticsTable(const Octree& octree) {
 }
 
 void traversalList(AppState& state) {
-    if (!state.traversal) {
+    if (!state.traversal || !state.trace) {
         ImGui::TextDisabled("select a path event (Paths panel) to see its segment's traversal");
         return;
     }
     const TraversalRecord& record = state.traversal->record;
     if (ImGui::Checkbox("draw the traversal", &state.layers.traversal)) state.viewDirty = true;
+    // The traversal ran in the traced scene, whose ids are compact; the panel shows the document's.
+    const auto& slots = state.trace->slotOfShape;
+    const auto slot = [&](ShapeId id) { return id < slots.size() ? slots[id] : id; };
     ImGui::Text("%zu cells visited, %zu shape tests, hit %s", record.cells.size(), record.shapesTested.size(),
-                record.hit ? std::to_string(record.hit.shape).c_str() : "nothing");
+                record.hit ? ("shape " + std::to_string(slot(record.hit.shape))).c_str() : "nothing");
     ImGui::BeginChild("visits", ImVec2(0.0f, 110.0f), true);
     for (std::size_t k = 0; k < record.cells.size(); ++k) {
         const CellVisit& visit = record.cells[k];
@@ -50,8 +66,8 @@ void traversalList(AppState& state) {
                     visit.bounds.max().z());
     }
     std::string tested;
-    for (ShapeId id : record.shapesTested) tested += std::to_string(id) + " ";
-    ImGui::TextWrapped("shapes tested (traced scene's ids): %s", tested.c_str());
+    for (ShapeId id : record.shapesTested) tested += std::to_string(slot(id)) + " ";
+    ImGui::TextWrapped("shapes tested: %s", tested.c_str());
     ImGui::EndChild();
 }
 
@@ -63,8 +79,8 @@ void drawOctreePanel(AppState& state) {
         ImGui::End();
         return;
     }
-    const Octree& octree = state.document->octree();
-    const int deepest = std::max(0, static_cast<int>(octree.statistics().size()) - 1);
+    const std::vector<LevelStatistics>& statistics = levelStatistics(*state.document);
+    const int deepest = std::max(0, static_cast<int>(statistics.size()) - 1);
     render::OctreeFilter& filter = state.layers.octreeFilter;
     const bool toggled = ImGui::Checkbox("show cells (C)", &state.layers.octree);
     bool changed = ImGui::SliderInt("depth ([ ])", &filter.level, 0, deepest);
@@ -82,7 +98,7 @@ void drawOctreePanel(AppState& state) {
     changed |= ImGui::Checkbox("occupancy colour", &filter.occupancyColour);
     if (changed) state.layers.octree = true;  // moving a filter means: show me
     state.viewDirty |= toggled || changed;
-    statisticsTable(octree);
+    statisticsTable(statistics);
     ImGui::Separator();
     traversalList(state);
     ImGui::End();

@@ -78,33 +78,36 @@ void selectedShapeEditor(AppState& state) {
     ShapeSpec spec = describeShape(*shape);
     ImGui::Text("shape %u: %s", state.selected, std::string(shape->typeName()).c_str());
     bool changed = false;
-    bool active = false;
-    auto track = [&](bool edited) {
-        changed |= edited;
-        active |= ImGui::IsItemActive() && !ImGui::IsItemActivated();
+    ImGuiID editedItem = 0;
+    auto track = [&](bool edited, const char* label) {
+        if (!edited) return;
+        changed = true;
+        editedItem = ImGui::GetID(label);  // the id the widget of that label has in this window
     };
     if (spec.kind == ShapeKind::Box) {
-        track(inputVector("min", spec.boxMin));
-        track(inputVector("max", spec.boxMax));
+        track(inputVector("min", spec.boxMin), "min");
+        track(inputVector("max", spec.boxMax), "max");
     } else {
-        track(inputVector("centre", spec.center));
+        track(inputVector("centre", spec.center), "centre");
         if (spec.kind == ShapeKind::Sphere) {
-            track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"));
+            track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"), "radius");
         } else {
-            track(inputVector("semi-axes", spec.semiAxes));
-            track(inputVector("rotation axis", spec.rotationAxis));
-            track(ImGui::InputDouble("angle (deg)", &spec.rotationAngleDeg, 1.0, 10.0, "%.4g"));
+            track(inputVector("semi-axes", spec.semiAxes), "semi-axes");
+            track(inputVector("rotation axis", spec.rotationAxis), "rotation axis");
+            track(ImGui::InputDouble("angle (deg)", &spec.rotationAngleDeg, 1.0, 10.0, "%.4g"), "angle (deg)");
         }
     }
-    track(mediumCombo("medium", *state.document, spec.medium));
+    track(mediumCombo("medium", *state.document, spec.medium), "medium");
     if (changed) {
         try {
-            // Typing into one field is one undo step: later changes while it stays active merge.
-            state.document->modifyShape(state.selected, spec, active);
+            // One activation of one field (typing a number, dragging a value) is one undo step.
+            state.document->modifyShape(state.selected, spec, editedItem == state.editingItem);
+            state.editingItem = editedItem;
         } catch (const std::exception& error) {
             state.refuse(std::string("not changed: ") + error.what());
         }
     }
+    if (!ImGui::IsAnyItemActive()) state.editingItem = 0;
     if (ImGui::Button("Delete")) deleteSelected(state);
 }
 

@@ -46,7 +46,8 @@ void toggleOctree(AppState& state) {
 }
 void octreeLevel(AppState& state, int delta) {
     state.layers.octree = true;
-    state.layers.octreeFilter.level = std::max(0, state.layers.octreeFilter.level + delta);
+    const int deepest = std::max(0, static_cast<int>(state.document->octree().statistics().size()) - 1);
+    state.layers.octreeFilter.level = std::clamp(state.layers.octreeFilter.level + delta, 0, deepest);
     state.viewDirty = true;
 }
 void levelDown(AppState& state) { octreeLevel(state, -1); }
@@ -102,7 +103,7 @@ const std::vector<std::pair<std::string_view, std::string_view>>& mouseGestures(
 
 void handleShortcuts(AppState& state) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput) return;
+    if (io.WantTextInput || state.prompt != FilePrompt::None) return;  // keys belong to the field or dialog
     for (const Shortcut& shortcut : shortcuts()) {
         if (!shortcut.run || shortcut.ctrl != io.KeyCtrl || shortcut.shift != io.KeyShift) continue;
         if (ImGui::IsKeyPressed(shortcut.key, false)) shortcut.run(state);

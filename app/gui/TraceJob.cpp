@@ -35,6 +35,12 @@ void TraceJob::start(Scene scene, TraceSettings settings) {
 
 void TraceJob::cancel() { stop_.store(true, std::memory_order_relaxed); }
 
+void TraceJob::discard() {
+    cancel();
+    joinWorker();
+    outcome_.reset();
+}
+
 bool TraceJob::running() const { return worker_.joinable() && !finished_.load(std::memory_order_acquire); }
 
 TraceJobProgress TraceJob::progress() const {

@@ -56,6 +56,9 @@ public:
     // Whether a run has started and not yet finished.
     bool running() const;
     TraceJobProgress progress() const;
+    // Cancels a run still going, waits for it and drops its outcome: nothing from before is delivered
+    // (opening another scene).
+    void discard();
     // The outcome of the finished run, once; nothing while it is running or when already taken.
     std::optional<TraceOutcome> takeResult();
 

@@ -68,7 +68,7 @@ void ViewportControls::handle(AppState& state) {
     }
     if (mine) {
         hover(state, ray);
-        if (!io.WantTextInput) sourceKeys(state, ray);
+        if (!io.WantTextInput && state.prompt == FilePrompt::None) sourceKeys(state, ray);
     } else {
         state.hovered = RayHit::kNone;
     }

@@ -30,18 +30,18 @@ for _ in $(seq 150); do
     sleep 0.1
 done
 [[ -n "$window" ]] || { echo "FAIL: no dropscope window after 15 s"; kill "$pid"; exit 1; }
-sleep 1.5   # a few frames: panels laid out
+sleep 3     # a few frames: shaders compiled, panels laid out (slower when CTest runs other tests too)
 import -window root before.png
 xdotool mousemove --window "$window" 740 480
-sleep 0.3
-xdotool key p
-sleep 0.3
-xdotool click 1
 sleep 0.5
+xdotool key p
+sleep 0.6
+xdotool click 1
+sleep 1
 xdotool key space
 sleep 2
 xdotool key F12
-sleep 1
+sleep 1.5
 xdotool mousemove --window "$window" 640 60
 sleep 0.3
 import -window root after.png
@@ -57,6 +57,7 @@ DRIVE
 fail() {
     echo "FAIL: $*" >&2
     for log in app.stdout app.stderr; do [[ -s "$log" ]] && sed "s/^/  $log: /" "$log" >&2; done
+    echo "  the screen before and after: $PWD/before.png, $PWD/after.png" >&2
     exit 1
 }
 
