@@ -405,6 +405,33 @@ TEST_F(AppScreenshot, ASceneThatDoesNotOpenLeavesTheCurrentOneAndSaysWhy) {
     harness.frame();
 }
 
+TEST_F(AppScreenshot, OpeningAnotherSceneDropsTheTraceStillRunningOnTheOldOne) {
+    AppHarness harness(kCloudScene);
+    std::ofstream(directory_ / "other.json") << kTopDownScene;
+    harness.state().document->setSources({Source{SourceType::Beam, Point(0, 0, -5), Direction(0, 0, 1), 2.0}});
+    harness.state().fire.photons = 50'000'000;  // far longer than this test
+    harness.press(kKeySpace);
+    ASSERT_TRUE(harness.state().job.running());
+    ASSERT_TRUE(openScene(harness.state(), directory_ / "other.json"));
+    EXPECT_FALSE(harness.state().job.running());
+    harness.frames(3);
+    EXPECT_FALSE(harness.state().trace.has_value());
+    EXPECT_EQ(harness.state().document->shapeCount(), 1u);
+}
+
+TEST(AppUi, ShortcutsDoNothingWhileAFileDialogIsOpen) {
+    AppHarness harness(kTopDownScene);
+    const auto [x, y] = topDownPixel(Point(2.0, 0.0, 2.0));
+    harness.click(x, y);
+    ASSERT_EQ(harness.state().selected, 0u);
+    harness.state().prompt = FilePrompt::Screenshot;
+    harness.frame();
+    harness.press(kKeyDelete);
+    EXPECT_EQ(harness.state().document->shapeCount(), 1u);
+    harness.press('P');
+    EXPECT_FALSE(harness.state().placementMode);
+}
+
 TEST_F(AppScreenshot, ThePanelLayoutIsRememberedInTheIniFile) {
     AppOptions options;
     options.iniFile = directory_ / "imgui.ini";
