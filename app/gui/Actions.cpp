@@ -100,7 +100,7 @@ void traceRayTree(AppState& state, bool automatic) {
     state.rayTreeRevision = state.document->revision();
     const auto& sources = state.document->sources();
     if (sources.empty()) return state.refuse("nothing to fire: add a source first (Fire panel)");
-    const Source& source = sources[std::min(state.selectedSource, sources.size() - 1)];
+    const Source& source = sources[selectedSourceIndex(state, sources)];
     try {
         const OpticalScene optical(state.document->toScene());
         const Ray ray{source.origin, source.direction};

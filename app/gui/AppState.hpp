@@ -7,6 +7,7 @@
 #include "render/SceneLayers.hpp"
 #include "transport/RayTree.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -114,5 +115,11 @@ struct AppState {
     void say(std::string text) { status = {std::move(text), false}; }
     void refuse(std::string text) { status = {std::move(text), true}; }
 };
+
+// The selected source's index among `sources` (non-empty): the selection clamped to the list, which
+// may have shrunk since it was made.
+inline std::size_t selectedSourceIndex(const AppState& state, const std::vector<Source>& sources) {
+    return std::min(state.selectedSource, sources.size() - 1);
+}
 
 }  // namespace dropscope::gui

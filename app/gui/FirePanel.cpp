@@ -1,5 +1,6 @@
 #include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
+#include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
 
 #include <imgui.h>
@@ -19,16 +20,9 @@ constexpr const char* kSourceTypes[] = {"beam", "pencil (ray)", "point"};
 constexpr std::uint64_t kMaxPhotons = 1'000'000'000;
 constexpr std::uint64_t kMaxPaths = 100'000;
 
-bool inputPoint(const char* label, Point& p) {
-    std::array<double, 3> v{p.x(), p.y(), p.z()};
-    if (!ImGui::InputScalarN(label, ImGuiDataType_Double, v.data(), 3, nullptr, nullptr, "%.5g")) return false;
-    p = Point(v[0], v[1], v[2]);
-    return true;
-}
-
 void sourceEditor(AppState& state) {
     std::vector<Source> sources = state.document->sources();
-    if (!sources.empty()) state.selectedSource = std::min(state.selectedSource, sources.size() - 1);
+    if (!sources.empty()) state.selectedSource = selectedSourceIndex(state, sources);
     for (std::size_t k = 0; k < sources.size(); ++k) {
         const std::string label = "source " + std::to_string(k) + ": " + std::string(sourceTypeName(sources[k].type));
         if (ImGui::Selectable(label.c_str(), k == state.selectedSource)) state.selectedSource = k;
@@ -42,9 +36,9 @@ void sourceEditor(AppState& state) {
             if (source.type == SourceType::Beam && !(source.radius > 0.0)) source.radius = 0.5;
             changed = true;
         }
-        changed |= inputPoint("origin (G)", source.origin);
+        changed |= inputVector3("origin (G)", source.origin, "%.5g");
         Point direction = source.direction.vector();
-        if (inputPoint("direction (A)", direction)) {
+        if (inputVector3("direction (A)", direction, "%.5g")) {
             if (Direction(direction)) {
                 source.direction = Direction(direction);
                 changed = true;
@@ -92,14 +86,7 @@ void fireControls(AppState& state) {
     if (ImGui::Button("Fire photons (Space)")) fireTrace(state);
     ImGui::SameLine();
     if (ImGui::Button("Fire ray tree (R)")) fireRayTree(state);
-    if (state.job.running()) {
-        const TraceJobProgress progress = state.job.progress();
-        const float fraction =
-            progress.total > 0 ? static_cast<float>(progress.done) / static_cast<float>(progress.total) : 0.0f;
-        ImGui::ProgressBar(fraction, ImVec2(-70.0f, 0.0f));
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) cancelTrace(state);
-    }
+    if (state.job.running()) drawTraceProgress(state, ImGui::GetContentRegionAvail().x - 60.0f);
 }
 
 }  // namespace

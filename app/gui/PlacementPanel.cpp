@@ -1,4 +1,5 @@
 #include "gui/PanelLayout.hpp"
+#include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
 
 #include <imgui.h>
@@ -22,14 +23,7 @@ void drawPlacementPanel(AppState& state) {
     ImGui::Checkbox("placement mode (P)", &state.placementMode);
     ImGui::InputDouble("radius", &state.placementRadius, 0.01, 0.1, "%.4g");
     state.placementRadius = std::max(state.placementRadius, 1e-9);
-    const auto& media = state.document->media();
-    state.placementMedium = std::min<MediumId>(state.placementMedium, static_cast<MediumId>(media.size() - 1));
-    if (ImGui::BeginCombo("medium", media[state.placementMedium].name.c_str())) {
-        for (MediumId m = 0; m < media.size(); ++m) {
-            if (ImGui::Selectable(media[m].name.c_str(), m == state.placementMedium)) state.placementMedium = m;
-        }
-        ImGui::EndCombo();
-    }
+    mediumCombo("medium", *state.document, state.placementMedium);
     ImGui::Combo("plane normal", &state.placementPlane.axis, kAxes, 3);
     ImGui::InputDouble("plane at", &state.placementPlane.offset, 0.1, 1.0, "%.4g");
     ImGui::Separator();

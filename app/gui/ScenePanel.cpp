@@ -1,6 +1,7 @@
 #include "edit/ShapeSpec.hpp"
 #include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
+#include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
 
 #include <imgui.h>
@@ -18,28 +19,6 @@ std::string listLabel(const SceneDocument& document, ShapeId id, const Shape& sh
     std::string label = std::to_string(id) + " " + std::string(shape.typeName());
     if (!document.nameOf(id).empty()) label += " " + document.nameOf(id);
     return label + " " + document.media().at(shape.mediumId()).name;
-}
-
-bool mediumCombo(const char* label, const SceneDocument& document, MediumId& medium) {
-    bool changed = false;
-    const auto& media = document.media();
-    if (ImGui::BeginCombo(label, media.at(std::min<std::size_t>(medium, media.size() - 1)).name.c_str())) {
-        for (std::size_t m = 0; m < media.size(); ++m) {
-            if (ImGui::Selectable(media[m].name.c_str(), m == medium)) {
-                medium = static_cast<MediumId>(m);
-                changed = true;
-            }
-        }
-        ImGui::EndCombo();
-    }
-    return changed;
-}
-
-bool inputVector(const char* label, Eigen::Vector3d& v) {
-    std::array<double, 3> values{v.x(), v.y(), v.z()};
-    if (!ImGui::InputScalarN(label, ImGuiDataType_Double, values.data(), 3, nullptr, nullptr, "%.6g")) return false;
-    v = Eigen::Vector3d(values[0], values[1], values[2]);
-    return true;
 }
 
 void shapeList(AppState& state) {
@@ -85,15 +64,15 @@ void selectedShapeEditor(AppState& state) {
         editedItem = ImGui::GetID(label);  // the id the widget of that label has in this window
     };
     if (spec.kind == ShapeKind::Box) {
-        track(inputVector("min", spec.boxMin), "min");
-        track(inputVector("max", spec.boxMax), "max");
+        track(inputVector3("min", spec.boxMin), "min");
+        track(inputVector3("max", spec.boxMax), "max");
     } else {
-        track(inputVector("centre", spec.center), "centre");
+        track(inputVector3("centre", spec.center), "centre");
         if (spec.kind == ShapeKind::Sphere) {
             track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"), "radius");
         } else {
-            track(inputVector("semi-axes", spec.semiAxes), "semi-axes");
-            track(inputVector("rotation axis", spec.rotationAxis), "rotation axis");
+            track(inputVector3("semi-axes", spec.semiAxes), "semi-axes");
+            track(inputVector3("rotation axis", spec.rotationAxis), "rotation axis");
             track(ImGui::InputDouble("angle (deg)", &spec.rotationAngleDeg, 1.0, 10.0, "%.4g"), "angle (deg)");
         }
     }
@@ -145,8 +124,8 @@ void cloudGenerator(AppState& state) {
     static double radiusMax = 0.06;
     static int seed = 1;
     if (!ImGui::TreeNode("Generate droplet cloud")) return;
-    inputVector("region min", lower);
-    inputVector("region max", upper);
+    inputVector3("region min", lower);
+    inputVector3("region max", upper);
     ImGui::InputInt("count", &count);
     ImGui::InputDouble("radius min", &radiusMin, 0.0, 0.0, "%.4g");
     ImGui::InputDouble("radius max", &radiusMax, 0.0, 0.0, "%.4g");

@@ -24,7 +24,7 @@ double distanceToRay(const Ray& ray, const Point& point) {
 std::optional<SourceHandlePlaces> sourceHandles(const AppState& state) {
     const auto& sources = state.document->sources();
     if (!state.layers.sources || sources.empty() || state.sceneBounds.isEmpty()) return std::nullopt;
-    const Source& source = sources[std::min(state.selectedSource, sources.size() - 1)];
+    const Source& source = sources[selectedSourceIndex(state, sources)];
     const double diagonal = state.sceneBounds.diagonal().norm();
     const double arrow = render::kSourceGlyph * diagonal;
     const Eigen::Vector3d direction = source.direction ? source.direction.vector() : Eigen::Vector3d::UnitZ();
@@ -36,8 +36,8 @@ SourceHandle handleUnder(const AppState& state, const Ray& ray) {
     const auto handles = sourceHandles(state);
     if (!handles) return SourceHandle::None;
     const double origin = distanceToRay(ray, handles->origin);
-    const double aim = state.document->sources()[std::min(state.selectedSource, state.document->sources().size() - 1)]
-                                   .type == SourceType::PointSource
+    const auto& sources = state.document->sources();
+    const double aim = sources[selectedSourceIndex(state, sources)].type == SourceType::PointSource
                            ? std::numeric_limits<double>::infinity()
                            : distanceToRay(ray, handles->aim);
     const double reach = kGrabScale * handles->radius;

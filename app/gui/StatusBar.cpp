@@ -1,5 +1,6 @@
 #include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
+#include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
 
 #include <imgui.h>
@@ -15,15 +16,7 @@ void drawStatusBar(AppState& state) {
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::Begin("##status", nullptr, flags);
     if (state.job.running()) {
-        const TraceJobProgress progress = state.job.progress();
-        const float fraction =
-            progress.total > 0 ? static_cast<float>(progress.done) / static_cast<float>(progress.total) : 0.0f;
-        const std::string label = progress.buildingOctree
-                                      ? std::string("building the octree")
-                                      : std::to_string(progress.done) + " / " + std::to_string(progress.total) + " photons";
-        ImGui::ProgressBar(fraction, ImVec2(220.0f, 0.0f), label.c_str());
-        ImGui::SameLine();
-        if (ImGui::SmallButton("Cancel")) cancelTrace(state);
+        drawTraceProgress(state, 220.0f);
         ImGui::SameLine();
     }
     if (state.status.error) {

@@ -148,7 +148,7 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
 void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
     std::vector<Source> sources = state.document->sources();
     if (sources.empty()) return;
-    Source& source = sources[std::min(state.selectedSource, sources.size() - 1)];
+    Source& source = sources[selectedSourceIndex(state, sources)];
     const auto on = rayPlaneAxis(ray, state.placementPlane.axis, handlePlane_);
     if (!on) return;
     const Point target = *on + grabOffset_;
@@ -217,7 +217,7 @@ void ViewportControls::sourceKeys(AppState& state, const Ray& ray) {
     if (sources.empty()) return state.refuse("no source to move or aim: add one in the Sources panel");
     const auto point = pointUnderCursor(state, ray);
     if (!point) return state.refuse("nothing under the cursor to move or aim the source to");
-    Source& source = sources[std::min(state.selectedSource, sources.size() - 1)];
+    Source& source = sources[selectedSourceIndex(state, sources)];
     if (move) {
         source.origin = *point;
     } else {
