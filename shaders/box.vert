@@ -1,5 +1,7 @@
 #version 330 core
-// Boxes: an instanced unit cube [-1, 1]^3 with face normals, scaled to the box's half extents.
+// Boxes: an instanced unit cube [-1, 1]^3 with face normals, scaled to the box's half extents. Also the
+// meshes of parametric and implicit shapes (render/MeshCache.hpp): vertex normals, positions relative
+// to the shape's translation, which is `center`; `linear` is the identity for them.
 layout(location = 0) in vec3 corner;
 layout(location = 1) in vec3 faceNormal;
 layout(location = 2) in vec3 center;

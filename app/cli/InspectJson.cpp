@@ -1,4 +1,5 @@
 #include "cli/InspectReport.hpp"
+#include "geometry/GeneralShape.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -37,14 +38,16 @@ Json shapesJson(const Scene& scene) {
     for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
         const Shape& shape = *scene.shapes[id];
         const std::string& name = scene.shapeNames[id];
-        shapes.push_back({{"id", id},
-                          {"type", shape.typeName()},
-                          {"name", name.empty() ? Json(nullptr) : Json(name)},
-                          {"medium", scene.mediumOf(shape).name},
-                          {"medium_id", shape.mediumId()},
-                          {"bounds", boundsJson(shape.bounds())},
-                          {"volume", shape.volume()},
-                          {"surface_area", shape.surfaceArea()}});
+        Json entry = {{"id", id},
+                      {"type", shape.typeName()},
+                      {"name", name.empty() ? Json(nullptr) : Json(name)},
+                      {"medium", scene.mediumOf(shape).name},
+                      {"medium_id", shape.mediumId()},
+                      {"bounds", boundsJson(shape.bounds())},
+                      {"volume", shape.volume()},
+                      {"surface_area", shape.surfaceArea()}};
+        if (const GeneralShape* general = asGeneralShape(shape)) entry["preset"] = std::string(general->presetName());
+        shapes.push_back(std::move(entry));
     }
     return shapes;
 }

@@ -1,4 +1,5 @@
 #include "cli/InspectReport.hpp"
+#include "geometry/GeneralShape.hpp"
 #include "cli/TextTable.hpp"
 
 #include <ostream>
@@ -42,7 +43,7 @@ void writeShapes(const Scene& scene, std::ostream& out) {
     for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
         const Shape& shape = *scene.shapes[id];
         const Eigen::AlignedBox3d bounds = shape.bounds();
-        table.addRow({std::to_string(id), std::string(shape.typeName()),
+        table.addRow({std::to_string(id), shapeTypeLabel(shape),
                       scene.shapeNames[id].empty() ? "-" : scene.shapeNames[id], scene.mediumOf(shape).name,
                       formatRange(bounds.min().x(), bounds.max().x()), formatRange(bounds.min().y(), bounds.max().y()),
                       formatRange(bounds.min().z(), bounds.max().z()), formatNumber(shape.volume()),

@@ -2,6 +2,7 @@
 
 #include "cli/AtomicFile.hpp"
 #include "cli/TraceFiles.hpp"
+#include "gui/ShapeDescription.hpp"
 #include "scene/SceneLoader.hpp"
 #include "scene/SceneWriter.hpp"
 #include "transport/OpticalScene.hpp"
@@ -19,7 +20,7 @@ namespace {
 std::string shapeLabel(const SceneDocument& document, ShapeId id) {
     const Shape* shape = document.octree().shape(id);
     std::string text = "shape " + std::to_string(id);
-    if (shape) text += " (" + std::string(shape->typeName()) + ")";
+    if (shape) text += " (" + shapeTypeLabel(*shape) + ")";
     return text;
 }
 

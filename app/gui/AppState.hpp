@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -66,6 +67,14 @@ struct ScreenshotRequest {
 // The file-name prompt open, if any (File menu, Ctrl+O).
 enum class FilePrompt { None, Open, SaveAs, ExportPaths, Screenshot };
 
+// Where a widget was drawn, in ImGui's display coordinates (window pixels).
+struct ItemRect {
+    float minX = 0.0f;
+    float minY = 0.0f;
+    float maxX = 0.0f;
+    float maxY = 0.0f;
+};
+
 // Everything the panels read and change. The App owns one; panels get it by reference.
 struct AppState {
     std::unique_ptr<SceneDocument> document;
@@ -107,6 +116,9 @@ struct AppState {
     std::optional<ScreenshotRequest> screenshot;
     std::filesystem::path screenshotDirectory = ".";  // F12's timestamped PNGs
     std::filesystem::path lastScreenshot;
+    // A few fields' places as last drawn (the shape editor's "centre"), by name: where the UI tests click
+    // to type into them, as a user would, without depending on the panel's layout.
+    std::map<std::string, ItemRect> itemRects;
 
     Eigen::AlignedBox3d sceneBounds;  // of the shapes, as last drawn (render::sceneBounds)
     std::uint64_t drawnRevision = ~std::uint64_t{0};  // the document revision the view was built from

@@ -33,6 +33,12 @@ bool mediumCombo(const char* label, const SceneDocument& document, MediumId& med
     return changed;
 }
 
+void recordItemRect(AppState& state, const std::string& name) {
+    const ImVec2 min = ImGui::GetItemRectMin();
+    const ImVec2 max = ImGui::GetItemRectMax();
+    state.itemRects[name] = ItemRect{min.x, min.y, max.x, max.y};
+}
+
 void drawTraceProgress(AppState& state, float barWidth) {
     const TraceJobProgress progress = state.job.progress();
     const float fraction =

@@ -3,6 +3,7 @@
 #include "gui/PanelLayout.hpp"
 #include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
+#include "gui/ShapeDescription.hpp"
 
 #include <imgui.h>
 
@@ -16,7 +17,7 @@ namespace {
 
 // What the shape list's filter box matches: "12 sphere d1 water".
 std::string listLabel(const SceneDocument& document, ShapeId id, const Shape& shape) {
-    std::string label = std::to_string(id) + " " + std::string(shape.typeName());
+    std::string label = std::to_string(id) + " " + shapeTypeLabel(shape);
     if (!document.nameOf(id).empty()) label += " " + document.nameOf(id);
     return label + " " + document.media().at(shape.mediumId()).name;
 }
@@ -48,14 +49,25 @@ void shapeList(AppState& state) {
     ImGui::Text("%zu shown of %zu", shown.size(), document.shapeCount());
 }
 
+// The preset, its parameters and the matrix M of a parametric or implicit shape, read-only.
+void generalShapeDetails(const GeneralShape& shape) {
+    ImGui::Text("preset: %s", std::string(shape.presetName()).c_str());
+    for (const PresetParameter& parameter : shape.presetParameters()) {
+        ImGui::BulletText("%s: %s", parameter.key.c_str(), presetParameterText(parameter).c_str());
+    }
+    ImGui::TextUnformatted("matrix M, row by row:");
+    for (const std::string& row : matrixRows(shape.transform().matrix())) ImGui::Text("  %s", row.c_str());
+}
+
 void selectedShapeEditor(AppState& state) {
+    state.itemRects.erase("centre");
     const Shape* shape = state.document->octree().shape(state.selected);
     if (!shape) {
         ImGui::TextDisabled("click a shape (or a row above) to edit it");
         return;
     }
     ShapeSpec spec = describeShape(*shape);
-    ImGui::Text("shape %u: %s", state.selected, std::string(shape->typeName()).c_str());
+    ImGui::Text("shape %u: %s", state.selected, shapeTypeLabel(*shape).c_str());
     bool changed = false;
     ImGuiID editedItem = 0;
     auto track = [&](bool edited, const char* label) {
@@ -66,8 +78,14 @@ void selectedShapeEditor(AppState& state) {
     if (spec.kind == ShapeKind::Box) {
         track(inputVector3("min", spec.boxMin), "min");
         track(inputVector3("max", spec.boxMax), "max");
+    } else if (spec.general) {
+        // The base is shared and read-only here: only where it stands (r0) and its medium are edited.
+        track(inputVector3("centre", spec.center), "centre");
+        recordItemRect(state, "centre");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("the translation r0 of M r + r0");
     } else {
         track(inputVector3("centre", spec.center), "centre");
+        recordItemRect(state, "centre");
         if (spec.kind == ShapeKind::Sphere) {
             track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"), "radius");
         } else {
@@ -77,6 +95,7 @@ void selectedShapeEditor(AppState& state) {
         }
     }
     track(mediumCombo("medium", *state.document, spec.medium), "medium");
+    if (spec.general) generalShapeDetails(*spec.general);  // below the fields, which stay in view
     if (changed) {
         try {
             // One activation of one field (typing a number, dragging a value) is one undo step.

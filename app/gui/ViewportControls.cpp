@@ -4,6 +4,7 @@
 #include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
 #include "gui/Picking.hpp"
+#include "gui/ShapeDescription.hpp"
 
 #include <imgui.h>
 
@@ -24,7 +25,7 @@ std::string describe(const AppState& state, ShapeId id, const char* separator) {
     std::ostringstream text;
     text << "shape " << id;
     if (!document.nameOf(id).empty()) text << " \"" << document.nameOf(id) << '"';
-    text << separator << shape.typeName() << ", " << document.media().at(shape.mediumId()).name;
+    text << separator << shapeTypeLabel(shape) << ", " << document.media().at(shape.mediumId()).name;
     return text.str();
 }
 

@@ -2,7 +2,9 @@
 
 #include "geometry/Box.hpp"
 #include "geometry/Ellipsoid.hpp"
+#include "geometry/GeneralShape.hpp"
 #include "geometry/Sphere.hpp"
+#include "render/MeshCache.hpp"
 
 namespace dropscope::render {
 
@@ -27,7 +29,7 @@ ShapeInstance sphereInstance(const Point& centre, double radius, const Anchor& a
 }
 
 ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& shapes, const Anchor& anchor,
-                                   ShapeId selected) {
+                                   ShapeId selected, MeshCache* cache) {
     ShapeInstances out;
     for (ShapeId id = 0; id < shapes.size(); ++id) {
         const Shape* shape = shapes[id].get();
@@ -54,8 +56,18 @@ ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& sh
             out.boxIds.push_back(id);
             break;
         }
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit: {
+            const auto& general = static_cast<const GeneralShape&>(*shape);
+            auto geometry = cache ? cache->geometry(general) : std::make_shared<const MeshGeometry>(meshGeometry(general));
+            out.meshes.push_back({std::move(geometry), instance(general.transform().translation(),
+                                                                Eigen::Matrix3d::Identity(), anchor, colour)});
+            out.meshIds.push_back(id);
+            break;
+        }
         }
     }
+    if (cache) cache->dropUnused();
     return out;
 }
 

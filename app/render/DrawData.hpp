@@ -5,6 +5,7 @@
 #include "tree/RayHit.hpp"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -29,16 +30,43 @@ struct ShapeInstance {
     Colour colour;
 };
 
+// One corner of a triangle mesh, as box.vert reads it (locations 0 and 1).
+struct MeshVertex {
+    std::array<float, 3> position;
+    std::array<float, 3> normal;
+};
+
+// The triangles of a parametric or implicit shape (GeneralShape::mesh), with its positions relative to
+// the shape's translation r0: float keeps the detail of the shape's own size wherever it stands, and a
+// shape moved (only r0 changed) keeps its geometry. Counter-clockwise seen from outside.
+struct MeshGeometry {
+    std::vector<MeshVertex> vertices;
+    std::vector<std::uint32_t> indices;  // three a triangle
+};
+
+// A GeneralShape as drawn: its geometry and an instance placing it (center = r0 relative to the anchor,
+// linear = identity), so shapes of one geometry share its buffers (box.vert/.frag, instanced).
+struct MeshInstance {
+    std::shared_ptr<const MeshGeometry> geometry;
+    ShapeInstance instance;
+};
+
 struct ShapeInstances {
     std::vector<ShapeInstance> rounded;  // spheres and ellipsoids (impostor.vert/.frag)
     std::vector<ShapeId> roundedIds;
     std::vector<ShapeInstance> boxes;    // box.vert/.frag
     std::vector<ShapeId> boxIds;
+    std::vector<MeshInstance> meshes;    // parametric and implicit shapes (box.vert/.frag, indexed)
+    std::vector<ShapeId> meshIds;
 };
 
-// Null slots are skipped; `selected` is drawn in the highlight colour.
+class MeshCache;
+
+// Null slots are skipped; `selected` is drawn in the highlight colour. With a cache, the geometry of a
+// GeneralShape comes from it (made once for its base and matrix, however often the scene is uploaded);
+// without, it is made afresh.
 ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& shapes, const Anchor& anchor,
-                                   ShapeId selected = RayHit::kNone);
+                                   ShapeId selected = RayHit::kNone, MeshCache* cache = nullptr);
 
 inline constexpr Colour kHighlight{1.0f, 0.85f, 0.1f, 1.0f};
 

@@ -2,6 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace dropscope::render {
@@ -46,8 +47,10 @@ struct Renderer::Mesh {
     GLuint vertexArray = 0;
     GLuint meshBuffer = 0;
     GLuint dataBuffer = 0;
+    GLuint indexBuffer = 0;  // made by makeIndexed only
     GLsizei meshVertices = 0;
-    GLsizei count = 0;  // instances, or vertices for lines
+    GLsizei meshIndices = 0;  // > 0: drawn by its indices
+    GLsizei count = 0;        // instances, or vertices for lines
 
     explicit Mesh(const GlFunctions& functions) : gl(functions) {
         gl.GenVertexArrays(1, &vertexArray);
@@ -55,6 +58,7 @@ struct Renderer::Mesh {
         gl.GenBuffers(1, &dataBuffer);
     }
     ~Mesh() {
+        if (indexBuffer != 0) gl.DeleteBuffers(1, &indexBuffer);
         gl.DeleteBuffers(1, &dataBuffer);
         gl.DeleteBuffers(1, &meshBuffer);
         gl.DeleteVertexArrays(1, &vertexArray);
@@ -74,6 +78,27 @@ struct Renderer::Mesh {
         gl.BindVertexArray(vertexArray);
         gl.BindBuffer(GL_ARRAY_BUFFER, meshBuffer);
         gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(float)), mesh.data(), GL_STATIC_DRAW);
+        instanceAttributes();
+    }
+
+    // makeInstanced for an indexed mesh (MeshVertex has the same layout: position, normal).
+    void makeIndexed(const MeshGeometry& geometry) {
+        static_assert(sizeof(MeshVertex) == 6 * sizeof(float));
+        meshVertices = static_cast<GLsizei>(geometry.vertices.size());
+        meshIndices = static_cast<GLsizei>(geometry.indices.size());
+        gl.BindVertexArray(vertexArray);
+        gl.BindBuffer(GL_ARRAY_BUFFER, meshBuffer);
+        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(geometry.vertices.size() * sizeof(MeshVertex)),
+                      geometry.vertices.data(), GL_STATIC_DRAW);
+        gl.GenBuffers(1, &indexBuffer);
+        gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer);  // part of the vertex array's state
+        gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(geometry.indices.size() * sizeof(std::uint32_t)),
+                      geometry.indices.data(), GL_STATIC_DRAW);
+        instanceAttributes();
+    }
+
+    // Locations 0 and 1 from the bound vertex array's mesh buffer, 2..9 from the instances.
+    void instanceAttributes() {
         attribute(0, 3, 6 * sizeof(float), 0, 0);
         attribute(1, 3, 6 * sizeof(float), 3 * sizeof(float), 0);
         gl.BindBuffer(GL_ARRAY_BUFFER, dataBuffer);
@@ -108,7 +133,8 @@ Renderer::Renderer(const GlFunctions& gl)
     : gl_(gl), impostor_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag")),
       box_(std::make_unique<ShaderProgram>(gl, "box.vert", "box.frag")),
       line_(std::make_unique<ShaderProgram>(gl, "line.vert", "line.frag")), rounded_(std::make_unique<Mesh>(gl)),
-      boxes_(std::make_unique<Mesh>(gl)), markers_(std::make_unique<Mesh>(gl)), lines_(std::make_unique<Mesh>(gl)) {
+      boxes_(std::make_unique<Mesh>(gl)), markers_(std::make_unique<Mesh>(gl)), lines_(std::make_unique<Mesh>(gl)),
+      meshCache_(std::make_unique<MeshCache>()) {
     rounded_->makeInstanced(quadTriangles());
     boxes_->makeInstanced(cubeTriangles());
     markers_->makeInstanced(quadTriangles());
@@ -120,6 +146,31 @@ Renderer::~Renderer() = default;
 void Renderer::setShapes(const ShapeInstances& instances) {
     rounded_->upload(instances.rounded);
     boxes_->upload(instances.boxes);
+    // The instances of each geometry, in the order of their first shape.
+    std::vector<std::pair<std::shared_ptr<const MeshGeometry>, std::vector<ShapeInstance>>> groups;
+    for (const MeshInstance& mesh : instances.meshes) {
+        const auto group = std::find_if(groups.begin(), groups.end(),
+                                        [&](const auto& g) { return g.first == mesh.geometry; });
+        if (group != groups.end()) {
+            group->second.push_back(mesh.instance);
+        } else {
+            groups.push_back({mesh.geometry, {mesh.instance}});
+        }
+    }
+    decltype(meshes_) kept;
+    for (auto& [geometry, shapeInstances] : groups) {
+        const auto old = std::find_if(meshes_.begin(), meshes_.end(), [&](const auto& m) { return m.first == geometry; });
+        std::unique_ptr<Mesh> mesh;
+        if (old != meshes_.end()) {
+            mesh = std::move(old->second);
+        } else {
+            mesh = std::make_unique<Mesh>(gl_);
+            mesh->makeIndexed(*geometry);
+        }
+        mesh->upload(shapeInstances);
+        kept.emplace_back(geometry, std::move(mesh));
+    }
+    meshes_ = std::move(kept);  // the buffers of geometries no longer drawn are deleted here
 }
 
 void Renderer::setLines(const LineBatch& lines) { lines_->upload(lines.vertices()); }
@@ -137,7 +188,15 @@ void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const 
     gl_.Uniform3fv(program.uniform("eye"), 1, glm::value_ptr(frame.eye));
     gl_.Uniform1f(program.uniform("opacity"), opacity);
     gl_.BindVertexArray(mesh.vertexArray);
-    gl_.DrawArraysInstanced(GL_TRIANGLES, 0, mesh.meshVertices, mesh.count);
+    if (mesh.meshIndices > 0) {
+        gl_.DrawElementsInstanced(GL_TRIANGLES, mesh.meshIndices, GL_UNSIGNED_INT, nullptr, mesh.count);
+    } else {
+        gl_.DrawArraysInstanced(GL_TRIANGLES, 0, mesh.meshVertices, mesh.count);
+    }
+}
+
+void Renderer::drawMeshes(const FrameUniforms& frame, float opacity) {
+    for (const auto& mesh : meshes_) drawShapes(*mesh.second, *box_, frame, opacity);
 }
 
 void Renderer::draw(const Camera& camera, const RenderOptions& options, int width, int height) {
@@ -161,6 +220,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     const bool boxesBlended = options.translucent || options.translucentBoxes;
     if (options.shapes && !options.translucent) drawShapes(*rounded_, *impostor_, frame, 1.0f);
     if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, frame, 1.0f);
+    if (options.shapes && !options.translucent) drawMeshes(frame, 1.0f);
     if (options.lines && lines_->count > 0) {
         line_->use();
         gl_.UniformMatrix4fv(line_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
@@ -172,7 +232,14 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
         gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         gl_.DepthMask(GL_FALSE);
         drawShapes(*boxes_, *box_, frame, options.opacity);
-        if (options.translucent) drawShapes(*rounded_, *impostor_, frame, options.opacity);
+        if (options.translucent) {
+            drawShapes(*rounded_, *impostor_, frame, options.opacity);
+            // Only the faces towards the eye, as the impostors draw only the nearest surface: a mesh's back
+            // faces blended too would make it look twice as opaque as a droplet.
+            gl_.Enable(GL_CULL_FACE);
+            drawMeshes(frame, options.opacity);
+            gl_.Disable(GL_CULL_FACE);
+        }
         gl_.DepthMask(GL_TRUE);
         gl_.Disable(GL_BLEND);
     }

@@ -3,10 +3,13 @@
 #include "render/Camera.hpp"
 #include "render/DrawData.hpp"
 #include "render/GlFunctions.hpp"
+#include "render/MeshCache.hpp"
 #include "render/ShaderProgram.hpp"
 
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace dropscope::render {
 
@@ -21,8 +24,9 @@ struct RenderOptions {
 };
 
 // Draws a scene with OpenGL 3.3 core through a GlFunctions table; the same code for the GUI's window and
-// the headless snapshot. Shapes are instanced (two draw calls for any number of shapes); every line
-// layer is one draw call.
+// the headless snapshot. Shapes are instanced (two draw calls for any number of spheres, ellipsoids and
+// boxes, one for each mesh geometry of the parametric and implicit shapes); every line layer is one draw
+// call.
 class Renderer {
 public:
     explicit Renderer(const GlFunctions& gl);
@@ -32,7 +36,10 @@ public:
 
     void setAnchor(const Anchor& anchor) { anchor_ = anchor; }
     const Anchor& anchor() const { return anchor_; }
+    // Keeps the buffers of the mesh geometries still in use and uploads the new ones.
     void setShapes(const ShapeInstances& instances);
+    // Where uploadScene keeps the mesh geometries between uploads (buildShapeInstances).
+    MeshCache& meshCache() { return *meshCache_; }
     void setLines(const LineBatch& lines);
     // Small spheres (event markers): instances of the impostor, drawn with the shapes, always opaque.
     void setMarkers(const std::vector<ShapeInstance>& markers);
@@ -48,6 +55,7 @@ private:
         glm::vec3 up;
     };
     void drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity);
+    void drawMeshes(const FrameUniforms& frame, float opacity);
 
     const GlFunctions& gl_;
     Anchor anchor_;
@@ -58,6 +66,9 @@ private:
     std::unique_ptr<Mesh> boxes_;
     std::unique_ptr<Mesh> markers_;
     std::unique_ptr<Mesh> lines_;
+    std::unique_ptr<MeshCache> meshCache_;
+    // One per geometry, in the order the shapes list them (a fixed drawing order, for determinism).
+    std::vector<std::pair<std::shared_ptr<const MeshGeometry>, std::unique_ptr<Mesh>>> meshes_;
 };
 
 }  // namespace dropscope::render

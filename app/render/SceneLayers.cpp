@@ -70,7 +70,7 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
 
 void uploadScene(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& shapes, const SceneLayers& layers,
                  const LayerOptions& options) {
-    ShapeInstances instances = buildShapeInstances(shapes, renderer.anchor(), options.selected);
+    ShapeInstances instances = buildShapeInstances(shapes, renderer.anchor(), options.selected, &renderer.meshCache());
     if (options.slice) instances = keptShapes(instances, shapes, *options.slice);
     renderer.setShapes(instances);
     renderer.setLines(layers.lines);

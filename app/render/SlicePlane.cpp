@@ -74,8 +74,8 @@ std::vector<ShapeInstance> keptInstances(const std::vector<ShapeInstance>& insta
 
 ShapeInstances keptShapes(const ShapeInstances& instances, const std::vector<std::unique_ptr<Shape>>& shapes,
                           const SlicePlane& plane) {
-    const auto keep = [&](const std::vector<ShapeInstance>& from, const std::vector<ShapeId>& ids,
-                          std::vector<ShapeInstance>& to, std::vector<ShapeId>& toIds) {
+    const auto keep = [&]<class Instance>(const std::vector<Instance>& from, const std::vector<ShapeId>& ids,
+                                          std::vector<Instance>& to, std::vector<ShapeId>& toIds) {
         for (std::size_t k = 0; k < from.size(); ++k) {
             if (!plane.keeps(shapes[ids[k]]->bounds().center())) continue;
             to.push_back(from[k]);
@@ -85,6 +85,7 @@ ShapeInstances keptShapes(const ShapeInstances& instances, const std::vector<std
     ShapeInstances kept;
     keep(instances.rounded, instances.roundedIds, kept.rounded, kept.roundedIds);
     keep(instances.boxes, instances.boxIds, kept.boxes, kept.boxIds);
+    keep(instances.meshes, instances.meshIds, kept.meshes, kept.meshIds);
     return kept;
 }
 

@@ -11,10 +11,10 @@ namespace dropscope::render {
 
 // A movable plane that hides everything on one side, to look inside a dense cloud (docs/rendering.md).
 // The kept side is where (x - point)·normal <= 0: the normal points at what is hidden, and a point
-// exactly on the plane is kept. Shapes and markers are kept or hidden whole, by their centre (a droplet
-// cut open would show its inside, which the impostors cannot draw, and half droplets would read as
-// different shapes); line segments are cut at the plane exactly. A plane with an invalid normal (made
-// from a zero vector) hides nothing.
+// exactly on the plane is kept. Shapes and markers are kept or hidden whole, by their centre (of their
+// bounds, for a parametric or implicit shape): a droplet cut open would show its inside, which the
+// impostors cannot draw, and half droplets would read as different shapes. Line segments are cut at the
+// plane exactly. A plane with an invalid normal (made from a zero vector) hides nothing.
 struct SlicePlane {
     Point point = Point::Zero();
     Direction normal{0.0, 0.0, 1.0};
@@ -49,7 +49,8 @@ std::vector<ShapeInstance> keptInstances(const std::vector<ShapeInstance>& insta
 
 // The shape instances (buildShapeInstances of `shapes`) of the shapes whose centre is on the kept side;
 // the ids stay parallel to the instances. The centre is that of the shape's bounds, which is the centre
-// of a sphere, an ellipsoid and a box.
+// of a sphere, an ellipsoid and a box, and of the box around a parametric or implicit shape (a mesh is
+// kept or hidden whole too, like the droplets, not cut open).
 ShapeInstances keptShapes(const ShapeInstances& instances, const std::vector<std::unique_ptr<Shape>>& shapes,
                           const SlicePlane& plane);
 

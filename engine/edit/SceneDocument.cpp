@@ -2,6 +2,7 @@
 // The edits and their checks are in SceneDocumentEdits.cpp.
 #include "edit/SceneDocument.hpp"
 
+#include "geometry/GeneralShape.hpp"
 #include "scene/JsonPath.hpp"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ std::optional<ShapeId> SceneDocument::findShape(const std::string& name) const {
 
 std::string SceneDocument::shapeTitle(ShapeId id) const {
     const Shape* s = shape(id);
-    std::string title(s ? s->typeName() : "shape");
+    std::string title = s ? shapeTypeLabel(*s) : "shape";
     const std::string& name = nameOf(id);
     return title + " " + (name.empty() ? std::to_string(id) : jsonpath::quoted(name));
 }

@@ -3,6 +3,7 @@
 
 #include "geometry/Box.hpp"
 #include "geometry/Ellipsoid.hpp"
+#include "geometry/GeneralShape.hpp"
 #include "geometry/Sphere.hpp"
 #include "scene/GeneratorReader.hpp"
 #include "scene/JsonPath.hpp"
@@ -53,6 +54,13 @@ bool isMove(const Shape& before, const Shape& after) {
             const Eigen::Vector3d a = static_cast<const Box&>(before).edgeLengths();
             const Eigen::Vector3d b = static_cast<const Box&>(after).edgeLengths();
             return (a - b).cwiseAbs().maxCoeff() <= kSameEdgeRelative * a.maxCoeff();
+        }
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit: {
+            const auto& a = static_cast<const GeneralShape&>(before);
+            const auto& b = static_cast<const GeneralShape&>(after);
+            return a.transform().matrix() == b.transform().matrix() && a.presetName() == b.presetName() &&
+                   a.presetParameters() == b.presetParameters();
         }
     }
     return false;
@@ -154,8 +162,8 @@ std::optional<std::string> SceneDocument::overlapOf(const Shape& shape, std::opt
         if (other == ignore) continue;
         const Shape& existing = *octree_.shape(other);
         if (nestsInside(shape, existing) || nestsInside(existing, shape)) continue;
-        return std::string(shape.typeName()) + " would overlap shape " + std::to_string(other) + " (" +
-               withName(std::string(existing.typeName()), nameOf(other)) + ")";
+        return shapeTypeLabel(shape) + " would overlap shape " + std::to_string(other) + " (" +
+               withName(shapeTypeLabel(existing), nameOf(other)) + ")";
     }
     return std::nullopt;
 }
@@ -176,7 +184,7 @@ ShapeId SceneDocument::addShape(const ShapeSpec& spec, const std::string& name) 
     if (const auto overlap = overlapOf(*shape, std::nullopt)) refuse(*overlap);
     const auto id = static_cast<ShapeId>(octree_.slotCount());
     Step step;
-    step.label = withName("add " + std::string(shape->typeName()), name);
+    step.label = withName("add " + shapeTypeLabel(*shape), name);
     step.shapes.push_back({id, nullptr, std::move(shape), {}, name});
     commit(std::move(step));
     return id;

@@ -54,6 +54,12 @@ std::unique_ptr<Shape> makeBox(const ShapeSpec& spec) {
     return std::make_unique<Box>(spec.boxMin, spec.boxMax);
 }
 
+std::unique_ptr<Shape> makeGeneral(const ShapeSpec& spec) {
+    require(spec.general != nullptr && spec.general->kind() == spec.kind, "no parametric or implicit shape given");
+    require(spec.center.allFinite(), "center must be finite");
+    return spec.general->withTransform(AffineTransform(spec.general->transform().matrix(), spec.center));
+}
+
 }  // namespace
 
 std::unique_ptr<Shape> makeShape(const ShapeSpec& spec) {
@@ -62,6 +68,8 @@ std::unique_ptr<Shape> makeShape(const ShapeSpec& spec) {
         case ShapeKind::Sphere: shape = makeSphere(spec); break;
         case ShapeKind::Ellipsoid: shape = makeEllipsoid(spec); break;
         case ShapeKind::Box: shape = makeBox(spec); break;
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit: shape = makeGeneral(spec); break;
     }
     require(shape != nullptr, "unknown shape kind");
     shape->setMediumId(spec.medium);
@@ -94,6 +102,13 @@ ShapeSpec describeShape(const Shape& shape) {
             spec.center = box.center();
             spec.boxMin = box.lower();
             spec.boxMax = box.upper();
+            break;
+        }
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit: {
+            const auto& general = static_cast<const GeneralShape&>(shape);
+            spec.center = general.transform().translation();
+            spec.general = std::shared_ptr<const GeneralShape>(general.withTransform(general.transform()));
             break;
         }
     }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "geometry/GeneralShape.hpp"
 #include "geometry/Shape.hpp"
 
 #include <Eigen/Core>
@@ -16,7 +17,9 @@ class Ellipsoid;
 //   ellipsoid: center, semiAxes (half-lengths along x, y, z before the rotation), and a right-handed
 //              turn of rotationAngleDeg degrees about rotationAxis (any non-zero length);
 //   box:       boxMin, boxMax (axis-aligned). describeShape sets center to the box's centre too, for
-//              display; makeShape ignores it (withCenter moves a box).
+//              display; makeShape ignores it (withCenter moves a box);
+//   parametric, implicit: general (the shape: its shared base, transform and form) and center, its
+//              translation r0; makeShape places `general` at `center`, so moving one edits only r0.
 struct ShapeSpec {
     ShapeKind kind = ShapeKind::Sphere;
     Point center = Point::Zero();
@@ -26,6 +29,7 @@ struct ShapeSpec {
     double rotationAngleDeg = 0.0;
     Point boxMin{-1.0, -1.0, -1.0};
     Point boxMax{1.0, 1.0, 1.0};
+    std::shared_ptr<const GeneralShape> general;
     MediumId medium = 0;
 };
 

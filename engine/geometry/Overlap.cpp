@@ -2,6 +2,7 @@
 
 #include "geometry/Box.hpp"
 #include "geometry/Ellipsoid.hpp"
+#include "geometry/GeneralShape.hpp"
 #include "geometry/Sphere.hpp"
 
 #include <algorithm>
@@ -43,18 +44,24 @@ bool orderedOverlap(const Shape& a, const Shape& b) {
         case ShapeKind::Box: return boxesOverlap(box(a), box(b));
         case ShapeKind::Sphere: return sphereOverlapsBox(sphere(b), box(a));
         case ShapeKind::Ellipsoid: return ellipsoidOverlapsBox(ellipsoid(b), box(a));
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit: break;
         }
         break;
     case ShapeKind::Sphere:
         switch (b.kind()) {
         case ShapeKind::Sphere: return spheresOverlap(sphere(a), sphere(b));
         case ShapeKind::Ellipsoid: return ellipsoidOverlapsSphere(ellipsoid(b), sphere(a));
-        case ShapeKind::Box: break;
+        case ShapeKind::Box:
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit: break;
         }
         break;
     case ShapeKind::Ellipsoid:
         if (b.kind() == ShapeKind::Ellipsoid) return ellipsoidsOverlap(ellipsoid(a), ellipsoid(b));
         break;
+    case ShapeKind::Parametric:
+    case ShapeKind::Implicit: break;
     }
     throw std::logic_error("no overlap test between a " + std::string(a.typeName()) + " and a " +
                            std::string(b.typeName()));
@@ -63,6 +70,8 @@ bool orderedOverlap(const Shape& a, const Shape& b) {
 }  // namespace
 
 bool shapesOverlap(const Shape& a, const Shape& b) {
+    if (const GeneralShape* general = asGeneralShape(a)) return generalShapeOverlaps(*general, b);
+    if (const GeneralShape* general = asGeneralShape(b)) return generalShapeOverlaps(*general, a);
     return a.kind() <= b.kind() ? orderedOverlap(a, b) : orderedOverlap(b, a);
 }
 

@@ -9,6 +9,7 @@ namespace dropscope {
 class Box;
 class Sphere;
 class Ellipsoid;
+class GeneralShape;
 
 // Positive volume of intersection between any two shapes; symmetric. Touching within the surface
 // bands is not overlapping. Shape::overlaps forwards here.
@@ -34,5 +35,13 @@ bool ellipsoidOverlapsSphere(const Ellipsoid& ellipsoid, const Sphere& sphere);
 double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::Matrix3d& m,
                                    const Box& box);
 bool ellipsoidOverlapsBox(const Ellipsoid& ellipsoid, const Box& box);
+
+}  // namespace dropscope
+
+namespace dropscope {
+
+// A parametric or implicit shape against any shape: a conservative test through the shape's surface
+// cover (GeneralOverlap.cpp): never misses an overlap, may refuse shapes closer than the cover's cells.
+bool generalShapeOverlaps(const GeneralShape& general, const Shape& other);
 
 }  // namespace dropscope

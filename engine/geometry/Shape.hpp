@@ -9,7 +9,8 @@
 
 namespace dropscope {
 
-enum class ShapeKind { Box, Sphere, Ellipsoid };
+// Parametric and Implicit are GeneralShapes (geometry/GeneralShape.hpp).
+enum class ShapeKind { Box, Sphere, Ellipsoid, Parametric, Implicit };
 
 // Where a point lies with respect to a shape's surface band (see tolerance::kSurfaceRelative).
 // Every shape answers surfaceContains/encloses through this one classification, so the three

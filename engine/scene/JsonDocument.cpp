@@ -4,6 +4,10 @@
 #include "scene/SceneLoader.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <fstream>
+#include <sstream>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -140,6 +144,19 @@ Json parseJsonDocument(std::string_view text, const std::string& origin) {
     DocumentBuilder builder(root, text, origin);
     Json::sax_parse(text, &builder);
     return root;
+}
+
+std::string readJsonFileText(const std::filesystem::path& file) {
+    const std::string origin = file.string();
+    std::error_code status;
+    if (!std::filesystem::exists(file, status)) throw SceneError(origin, "", "no such file");
+    if (std::filesystem::is_directory(file, status)) throw SceneError(origin, "", "is a directory, not a scene file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw SceneError(origin, "", "cannot open: " + std::generic_category().message(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw SceneError(origin, "", "cannot read: " + std::generic_category().message(errno));
+    return text.str();
 }
 
 }  // namespace dropscope

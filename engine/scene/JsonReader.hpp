@@ -23,6 +23,8 @@ public:
     JsonReader(const Json& value, std::string path, const std::string& origin);
 
     const std::string& path() const { return path_; }
+    // The file (or other source) the document came from.
+    const std::string& origin() const { return origin_; }
     [[noreturn]] void fail(const std::string& message) const;
     // Runs a constructor or factory of the value read here; a std::invalid_argument it throws
     // becomes a SceneError at this path.
@@ -44,6 +46,9 @@ public:
 
     // Arrays.
     std::vector<JsonReader> elements() const;
+
+    bool isNumber() const { return value_.is_number(); }
+    bool isString() const { return value_.is_string(); }
 
     // Scalars. number() is finite; positive() is finite and > 0; nonNegative() finite and >= 0.
     double number() const;

@@ -73,8 +73,9 @@ void readAmbient(const JsonReader& root, Scene& scene) {
 }
 
 void readShapes(const JsonReader& shapes, Scene& scene) {
+    BaseCache cache;
     for (const JsonReader& json : shapes.elements()) {
-        NamedShape shape = readShape(json, scene.media);
+        NamedShape shape = readShape(json, scene.media, cache);
         for (std::size_t other = 0; other < scene.shapeNames.size() && !shape.name.empty(); ++other) {
             if (scene.shapeNames[other] == shape.name) {
                 json.member("name").fail("name " + jsonpath::quoted(shape.name) + " is already used by " +
@@ -155,16 +156,7 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
 }
 
 Scene loadScene(const std::filesystem::path& file) {
-    const std::string origin = file.string();
-    std::error_code status;
-    if (!std::filesystem::exists(file, status)) throw SceneError(origin, "", "no such file");
-    if (std::filesystem::is_directory(file, status)) throw SceneError(origin, "", "is a directory, not a scene file");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw SceneError(origin, "", "cannot open: " + std::generic_category().message(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw SceneError(origin, "", "cannot read: " + std::generic_category().message(errno));
-    return parseScene(text.str(), origin);
+    return parseScene(readJsonFileText(file), file.string());
 }
 
 }  // namespace dropscope

@@ -1,6 +1,7 @@
 #include "scene/SceneOverlaps.hpp"
 
 #include "geometry/Box.hpp"
+#include "geometry/GeneralShape.hpp"
 #include "geometry/Sphere.hpp"
 #include "scene/JsonPath.hpp"
 #include "scene/SceneLoader.hpp"
@@ -27,7 +28,7 @@ constexpr double kSizeClassRatio = 8.0;
 
 // `sphere "d1"`, or just `box` for an unnamed shape.
 std::string describe(const Scene& scene, std::size_t id) {
-    std::string text(scene.shapes[id]->typeName());
+    std::string text = shapeTypeLabel(*scene.shapes[id]);
     if (!scene.shapeNames[id].empty()) text.append(" ").append(jsonpath::quoted(scene.shapeNames[id]));
     return text;
 }

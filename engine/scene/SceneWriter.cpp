@@ -1,6 +1,7 @@
 #include "scene/SceneWriter.hpp"
 
 #include "edit/ShapeSpec.hpp"
+#include "geometry/GeneralShape.hpp"
 #include "scene/JsonPath.hpp"
 
 #include <nlohmann/json.hpp>
@@ -33,6 +34,37 @@ Json mediumJson(const Medium& medium) {
     return json;
 }
 
+// values[offset ...] nested as `extents` says, row-major.
+Json nested(const std::vector<double>& values, const std::vector<std::size_t>& extents, std::size_t level,
+            std::size_t& offset) {
+    if (level == extents.size()) return values[offset++];
+    Json array = Json::array();
+    for (std::size_t i = 0; i < extents[level]; ++i) array.push_back(nested(values, extents, level + 1, offset));
+    return array;
+}
+
+Json matrixJson(const Eigen::Matrix3d& m) {
+    Json rows = Json::array();
+    for (Eigen::Index row = 0; row < 3; ++row) rows.push_back(vector3(m.row(row).transpose()));
+    return rows;
+}
+
+// The preset's own parameters, then the transform as the matrix and translation it composed to (the
+// steps it was written as are not kept; the placed shape is the same).
+void writeGeneral(const GeneralShape& shape, Json& json) {
+    json["preset"] = std::string(shape.presetName());
+    for (const PresetParameter& parameter : shape.presetParameters()) {
+        std::size_t offset = 0;
+        json[parameter.key] = nested(parameter.values, parameter.extents, 0, offset);
+    }
+    const AffineTransform& transform = shape.transform();
+    if (transform.isIdentity()) return;
+    Json placed = Json::object();
+    if (transform.matrix() != Eigen::Matrix3d::Identity()) placed["matrix"] = matrixJson(transform.matrix());
+    if (transform.translation() != Eigen::Vector3d::Zero()) placed["translation"] = vector3(transform.translation());
+    json["transform"] = placed;
+}
+
 Json shapeJson(const Shape& shape, const std::string& name, const std::vector<Medium>& media) {
     const ShapeSpec spec = describeShape(shape);
     Json json = Json::object();
@@ -53,6 +85,10 @@ Json shapeJson(const Shape& shape, const std::string& name, const std::vector<Me
         case ShapeKind::Box:
             json["min"] = vector3(spec.boxMin);
             json["max"] = vector3(spec.boxMax);
+            break;
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit:
+            writeGeneral(static_cast<const GeneralShape&>(shape), json);
             break;
     }
     json["medium"] = media[shape.mediumId()].name;

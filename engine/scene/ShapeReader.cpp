@@ -70,7 +70,7 @@ Eigen::AlignedBox3d readCorners(const JsonReader& json) {
     return {lower, upper};
 }
 
-NamedShape readShape(const JsonReader& json, const std::vector<Medium>& media) {
+NamedShape readShape(const JsonReader& json, const std::vector<Medium>& media, BaseCache& cache) {
     const JsonReader typeJson = json.member("type");
     const std::string type = typeJson.string();
     NamedShape result;
@@ -80,8 +80,13 @@ NamedShape readShape(const JsonReader& json, const std::vector<Medium>& media) {
         result.shape = readEllipsoid(json);
     } else if (type == "box") {
         result.shape = readBox(json);
+    } else if (type == "parametric") {
+        result.shape = readParametricShape(json, cache);
+    } else if (type == "implicit") {
+        result.shape = readImplicitShape(json, cache);
     } else {
-        typeJson.fail("unknown shape type " + jsonpath::quoted(type) + " (known: sphere, ellipsoid, box)");
+        typeJson.fail("unknown shape type " + jsonpath::quoted(type) +
+                      " (known: sphere, ellipsoid, box, parametric, implicit)");
     }
     result.shape->setMediumId(readMediumName(json.member("medium"), media));
     if (const auto name = json.optionalMember("name")) {

@@ -47,6 +47,31 @@ TEST(InspectCommand, TableColumnsAreAligned) {
     }
 }
 
+TEST(InspectCommand, ParametricAndImplicitShapesShowTheirPreset) {
+    const std::string gallery = kSourceDir + "/assets/scenes/shapes_gallery.json";
+    const CliRun table = runDropscope({"inspect", gallery});
+    ASSERT_EQ(table.status, kExitSuccess) << table.err;
+    for (const char* type : {"parametric bezier", "parametric torus", "parametric sphere", "implicit blob",
+                             "implicit superellipsoid"}) {
+        EXPECT_NE(table.out.find(type), std::string::npos) << type << "\n" << table.out;
+    }
+    const CliRun run = runDropscope({"inspect", gallery, "--json"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    const nlohmann::json report = nlohmann::json::parse(run.out);
+    const auto& ring = report["shapes"][1];
+    EXPECT_EQ(ring["type"], "parametric");
+    EXPECT_EQ(ring["preset"], "torus");
+    // Torus R = 1, r = 0.3: V = 2 pi^2 R r^2, S = 4 pi^2 R r (a rotation changes neither).
+    EXPECT_NEAR(ring["volume"].get<double>(), 2 * std::numbers::pi * std::numbers::pi * 0.09, 1e-9);
+    EXPECT_NEAR(ring["surface_area"].get<double>(), 4 * std::numbers::pi * std::numbers::pi * 0.3, 1e-9);
+    // Its x extent is the translation +- (R + r): a rotation about x leaves x alone.
+    EXPECT_NEAR(ring["bounds"]["min"][0].get<double>(), -3.2 - 1.3, 1e-9);
+    EXPECT_NEAR(ring["bounds"]["max"][0].get<double>(), -3.2 + 1.3, 1e-9);
+    EXPECT_EQ(report["shapes"][0]["preset"], "bezier");
+    EXPECT_EQ(report["totals"]["shapes_by_type"]["parametric"], 3);
+    EXPECT_EQ(report["totals"]["shapes_by_type"]["implicit"], 2);
+}
+
 TEST(InspectCommand, JsonHasEveryDocumentedKeyAndFullPrecision) {
     const CliRun run = runDropscope({"inspect", kOneSphere, "--json"});
     ASSERT_EQ(run.status, kExitSuccess) << run.err;

@@ -12,6 +12,12 @@ namespace dropscope::test {
 
 namespace {
 
+// "NAME.json" (tests/data/scenes/golden) or "../NAME.json" (tests/data/scenes), nowhere else.
+bool isSceneName(const std::string& scene) {
+    const std::string file = scene.starts_with("../") ? scene.substr(3) : scene;
+    return file.ends_with(".json") && file.size() > 5 && file.find('/') == std::string::npos;
+}
+
 bool isCaseName(const std::string& name) {
     return !name.empty() &&
            std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
@@ -33,10 +39,9 @@ std::vector<GoldenCase> readGoldenCases(const std::filesystem::path& file) {
         if (!isCaseName(golden.name))
             throw std::runtime_error(where + "case name \"" + golden.name + "\" is not [A-Za-z0-9_]+");
         if (!names.insert(golden.name).second) throw std::runtime_error(where + "case \"" + golden.name + "\" repeats");
-        if (!(words >> golden.scene) || !golden.scene.ends_with(".json") ||
-            golden.scene.find('/') != std::string::npos) {
-            throw std::runtime_error(where +
-                                     "expected a scene file name (*.json in tests/data/scenes/golden) after the name");
+        if (!(words >> golden.scene) || !isSceneName(golden.scene)) {
+            throw std::runtime_error(where + "expected a scene file name (*.json in tests/data/scenes/golden, or "
+                                             "../*.json in tests/data/scenes) after the name");
         }
         for (std::string argument; words >> argument;) golden.arguments.push_back(argument);
         cases.push_back(std::move(golden));

@@ -119,7 +119,7 @@ TEST(SceneError, UnknownKeyWithoutANearOneListsTheValidKeys) {
 
 TEST(SceneError, UnknownTypes) {
     EXPECT_EQ(shapeError(R"({"type": "cube", "medium": "water"})"),
-              R"(scene.json: shapes[0].type: unknown shape type "cube" (known: sphere, ellipsoid, box))");
+              R"(scene.json: shapes[0].type: unknown shape type "cube" (known: sphere, ellipsoid, box, parametric, implicit))");
     EXPECT_EQ(sourceError(R"({"type": "laser", "origin": [0, 0, 0]})"),
               R"(scene.json: sources[0].type: unknown source type "laser" (known: beam, ray, point))");
     EXPECT_EQ(shapeError(R"({"center": [0, 0, 0], "radius": 1, "medium": "water"})"),

@@ -1,6 +1,7 @@
 // writeScene / sceneToJson: what they write reads back (parseScene) as the same scene.
 #include "geometry/Box.hpp"
 #include "geometry/Ellipsoid.hpp"
+#include "geometry/GeneralShape.hpp"
 #include "geometry/Sphere.hpp"
 #include "scene/JsonPath.hpp"
 #include "scene/SceneLoader.hpp"
@@ -57,6 +58,17 @@ void expectSameShape(const Shape& actual, const Shape& expected, std::size_t id)
             const double scale = e.matrix().cwiseAbs().maxCoeff();
             EXPECT_LE((a.matrix() - e.matrix()).cwiseAbs().maxCoeff(), kEllipsoidMatrixRelative * scale)
                 << "written " << e.matrix() << "\nread back " << a.matrix();
+            break;
+        }
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit: {
+            // Written as the composed matrix and translation: the same transform, bit for bit.
+            const auto& a = static_cast<const GeneralShape&>(actual);
+            const auto& e = static_cast<const GeneralShape&>(expected);
+            EXPECT_EQ(a.presetName(), e.presetName());
+            EXPECT_TRUE(a.presetParameters() == e.presetParameters());
+            EXPECT_EQ(a.transform().matrix(), e.transform().matrix());
+            EXPECT_EQ(a.transform().translation(), e.transform().translation());
             break;
         }
     }
