@@ -123,6 +123,25 @@ int main(int argc, char** argv) {
         std::printf("%-36s %14.0f %9.4fx %7.1f%%\n", c.name.c_str(), t.queriesPerSecond, t.queriesPerSecond / reference,
                     100.0 * t.hitFraction);
     }
+    // What sharing a base saves: building one (mesh, cover, integrals, extremes) per preset.
+    std::printf("\nbuilding a base (mesh, cover, area, volume, extremes), once per preset:\n");
+    const auto timeBase = [](const char* name, const auto& build) {
+        bench::Stopwatch clock;
+        [[maybe_unused]] const auto built = build();
+        std::printf("  %-34s %8.1f ms\n", name, 1e3 * clock.seconds());
+    };
+    timeBase("parametric sphere", [] { return makeParametricBase(makeSphereSurface(1.0)); });
+    timeBase("parametric torus", [] { return makeParametricBase(makeTorusSurface(0.7, 0.3)); });
+    timeBase("implicit superellipsoid e=1", [] {
+        return ImplicitShape(makeImplicitBase(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(1, 1))), AffineTransform()).volume();
+    });
+    timeBase("implicit superellipsoid e=0.3", [] {
+        return ImplicitShape(makeImplicitBase(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(0.3, 0.3))), AffineTransform()).volume();
+    });
+    timeBase("implicit blob of 2", [] {
+        return ImplicitShape(makeImplicitBase(makeBlob({Point(-0.4, 0, 0), Point(0.4, 0, 0)}, {0.6, 0.6}, 0.1)), AffineTransform()).volume();
+    });
+
     // Same rays, same answers: the general unit spheres against the Sphere class.
     const double tolerance = 1e-9;
     std::printf("\nrays answered differently from the Sphere (distance tolerance %g):\n", tolerance);

@@ -46,6 +46,7 @@ DRIVE
 default="$root/assets/scenes/default.json"
 cloud="$root/assets/scenes/cloud.json"
 topdown="$root/tests/data/scenes/gui_top_down.json"
+gallery="$root/assets/scenes/shapes_gallery.json"
 
 shot app-overview "$default" "mousemove 640 450" "key space" "sleep 2"
 shot app-select-edit "$default" "mousemove 560 430" "click 1" "mousemove 570 440"
@@ -58,3 +59,5 @@ shot app-path-inspector "$default" "mousemove 640 60" "key space" "sleep 2" "key
 shot app-ray-tree "$default" "mousemove 612 396" "key a" "key r" "mousemove 560 420" "click --repeat 4 --delay 100 4" \
     "mousemove 640 60" "sleep 1"
 shot app-help "$default" "mousemove 640 60" "key F1"
+# The parametric and implicit presets, photons fired, the Bezier droplet in the middle selected.
+shot app-general-shapes "$gallery" "mousemove 640 420" "key space" "sleep 2" "click 1"
