@@ -6,6 +6,8 @@
 #include <Eigen/SVD>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace dropscope {
@@ -35,8 +37,11 @@ AffineTransform::AffineTransform(const Eigen::Matrix3d& m, const Eigen::Vector3d
     class_ = classify(m);
     const Eigen::Vector3d& sigma = class_.singularValues;
     if (!(sigma[2] > tolerance::kMatrixRelative * sigma[0])) {
-        throw std::invalid_argument("transformation matrix is singular (singular values " + std::to_string(sigma[0]) +
-                                    ", " + std::to_string(sigma[1]) + ", " + std::to_string(sigma[2]) + ")");
+        std::ostringstream message;
+        message << std::setprecision(3) << "transformation matrix is singular or too ill-conditioned (singular values "
+                << sigma[0] << ", " << sigma[1] << ", " << sigma[2] << "; the smallest must exceed "
+                << tolerance::kMatrixRelative << " times the largest)";
+        throw std::invalid_argument(message.str());
     }
     mInverse_ = m.inverse();
 }

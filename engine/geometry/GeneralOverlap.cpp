@@ -1,28 +1,71 @@
 #include "geometry/Box.hpp"
+#include "geometry/Ellipsoid.hpp"
 #include "geometry/GeneralShape.hpp"
 #include "geometry/Overlap.hpp"
+#include "geometry/Sphere.hpp"
 
 namespace dropscope {
 
-// Conservative (docs/geometry.md, "Overlap of parametric and implicit shapes"): the general shape's
-// surface lies in the union of its cover boxes. If no cover box meets the other shape's volume, the
-// surface is outside the other shape, so the two overlap only if the other lies wholly inside the general
-// shape, which one point of its surface decides. A cover box that meets the other shape counts as an
-// overlap: shapes closer than the cover's resolution are refused, never shapes that truly overlap accepted.
-bool generalShapeOverlaps(const GeneralShape& general, const Shape& other) {
-    if (!general.bounds().intersects(other.bounds())) return false;
+namespace {
+
+// Whether `shape`'s closed body may meet the closed `box`: exact for boxes, spheres and ellipsoids,
+// conservative (never false when they meet) for a general shape. No surface bands: a cover cell on a
+// flat face is thinner than a large box's band, so the band-aware overlap tests would miss it.
+bool mayMeetBox(const Shape& shape, const Eigen::AlignedBox3d& box) {
+    if (!shape.bounds().intersects(box)) return false;
+    switch (shape.kind()) {
+        case ShapeKind::Box: return true;  // the bounds are the box
+        case ShapeKind::Sphere: {
+            const auto& sphere = static_cast<const Sphere&>(shape);
+            return box.squaredExteriorDistance(sphere.center()) <= sphere.radius() * sphere.radius();
+        }
+        case ShapeKind::Ellipsoid: {
+            const auto& ellipsoid = static_cast<const Ellipsoid&>(shape);
+            return minimumQuadraticFormOverBox(ellipsoid.center(), ellipsoid.matrix(), Box(box.min(), box.max())) <= 1.0;
+        }
+        case ShapeKind::Parametric:
+        case ShapeKind::Implicit: break;
+    }
+    const auto& general = static_cast<const GeneralShape&>(shape);
+    for (const Eigen::AlignedBox3d& cell : general.surfaceCover()) {
+        if (cell.intersects(box)) return true;
+    }
+    // No surface in the box: it is wholly inside or wholly outside.
+    return general.locatePoint(box.center()) != PointLocation::Outside;
+}
+
+// A box of positive volume around a cover cell (a cell on a flat face can be flat).
+Eigen::AlignedBox3d solidCell(const Eigen::AlignedBox3d& cell, double band) {
+    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(band);
+    return {cell.min() - grow, cell.max() + grow};
+}
+
+// Some cover cell of `general` may meet `other`.
+bool coverMeets(const GeneralShape& general, const Shape& other) {
     const Eigen::AlignedBox3d reach = other.bounds();
     for (const Eigen::AlignedBox3d& cell : general.surfaceCover()) {
-        if (!cell.intersects(reach)) continue;
-        // Grown by the surface band: points within it are on the surface, and a flat cell gets a volume.
-        const Eigen::Vector3d band = Eigen::Vector3d::Constant(general.surfaceBand());
-        const Box box(cell.min() - band, cell.max() + band);
-        if (shapesOverlap(box, other)) return true;
+        const Eigen::AlignedBox3d solid = solidCell(cell, general.surfaceBand());
+        if (solid.intersects(reach) && mayMeetBox(other, solid)) return true;
     }
-    // Any point of the other shape: the centre of a box, sphere or ellipsoid; a surface point otherwise.
-    const GeneralShape* otherGeneral = asGeneralShape(other);
-    const Point inOther = otherGeneral ? otherGeneral->surfacePoint() : other.bounds().center();
-    return general.locatePoint(inOther) == PointLocation::Inside;
+    return false;
+}
+
+}  // namespace
+
+// Conservative (docs/general-shapes.md, "Overlaps"): a general shape's surface lies in the union of its
+// cover cells. When no cell of either general shape may meet the other shape, neither surface enters the
+// other body, so every connected piece of each is wholly inside or wholly outside the other; a piece
+// inside would have put its cells inside the other body, which mayMeetBox reports. What remains is a
+// box, sphere or ellipsoid (one convex piece) wholly inside a general shape: its centre decides.
+bool generalShapesOverlap(const Shape& a, const Shape& b) {
+    if (!a.bounds().intersects(b.bounds())) return false;
+    const GeneralShape* generalA = asGeneralShape(a);
+    const GeneralShape* generalB = asGeneralShape(b);
+    if (generalA && coverMeets(*generalA, b)) return true;
+    if (generalB && coverMeets(*generalB, a)) return true;
+    if (generalA && !generalB) return generalA->locatePoint(b.bounds().center()) != PointLocation::Outside;
+    if (generalB && !generalA) return generalB->locatePoint(a.bounds().center()) != PointLocation::Outside;
+    return false;
 }
 
 }  // namespace dropscope

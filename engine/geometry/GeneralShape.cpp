@@ -1,5 +1,8 @@
 #include "geometry/GeneralShape.hpp"
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace dropscope {
@@ -33,6 +36,26 @@ std::string shapeTypeLabel(const Shape& shape) {
     return label;
 }
 
-Point GeneralShape::surfacePoint() const { return transform_.apply(baseMesh().vertices.front()); }
+Point GeneralShape::surfacePoint() const {
+    const SurfaceMesh& base = baseMesh();
+    if (base.vertices.empty()) throw std::logic_error("surfacePoint of a shape without a mesh (see checkUsable)");
+    return transform_.apply(base.vertices.front());
+}
+
+void GeneralShape::checkUsable() const {
+    const Eigen::AlignedBox3d box = bounds();
+    if (!box.min().allFinite() || !box.max().allFinite() || box.isEmpty()) {
+        throw std::invalid_argument("its extent is not finite (parameters or transform beyond the double range)");
+    }
+    const double v = volume();
+    const double s = surfaceArea();
+    if (!std::isfinite(v) || !(v > 0.0) || !std::isfinite(s) || !(s > 0.0)) {
+        throw std::invalid_argument("its volume or area is not a positive finite number (volume " + std::to_string(v) +
+                                    ", area " + std::to_string(s) + ")");
+    }
+    if (baseMesh().vertices.empty() || baseMesh().triangles.empty()) {
+        throw std::invalid_argument("its surface is too fine for the tessellation (a droplet far smaller than the shape?)");
+    }
+}
 
 }  // namespace dropscope

@@ -43,8 +43,13 @@ public:
     SurfaceMesh mesh() const;
     // Axis-aligned boxes that together contain the whole surface (conservative overlap tests).
     std::vector<Eigen::AlignedBox3d> surfaceCover() const;
-    // A point on the surface.
+    // A point on the surface (a vertex of the mesh).
     Point surfacePoint() const;
+
+    // Throws std::invalid_argument when the placed shape is unusable: bounds, volume or area not finite
+    // or not positive (a transform or parameters at the edge of the double range), or a surface the
+    // tessellation does not resolve (no mesh: a blob's droplet far smaller than the blob).
+    void checkUsable() const;
 
 protected:
     explicit GeneralShape(const AffineTransform& transform) : transform_(transform) {}

@@ -70,8 +70,7 @@ bool orderedOverlap(const Shape& a, const Shape& b) {
 }  // namespace
 
 bool shapesOverlap(const Shape& a, const Shape& b) {
-    if (const GeneralShape* general = asGeneralShape(a)) return generalShapeOverlaps(*general, b);
-    if (const GeneralShape* general = asGeneralShape(b)) return generalShapeOverlaps(*general, a);
+    if (asGeneralShape(a) || asGeneralShape(b)) return generalShapesOverlap(a, b);
     return a.kind() <= b.kind() ? orderedOverlap(a, b) : orderedOverlap(b, a);
 }
 

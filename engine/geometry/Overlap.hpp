@@ -9,7 +9,6 @@ namespace dropscope {
 class Box;
 class Sphere;
 class Ellipsoid;
-class GeneralShape;
 
 // Positive volume of intersection between any two shapes; symmetric. Touching within the surface
 // bands is not overlapping. Shape::overlaps forwards here.
@@ -40,8 +39,9 @@ bool ellipsoidOverlapsBox(const Ellipsoid& ellipsoid, const Box& box);
 
 namespace dropscope {
 
-// A parametric or implicit shape against any shape: a conservative test through the shape's surface
-// cover (GeneralOverlap.cpp): never misses an overlap, may refuse shapes closer than the cover's cells.
-bool generalShapeOverlaps(const GeneralShape& general, const Shape& other);
+// Two shapes of which at least one is parametric or implicit: a conservative test through the surface
+// covers (GeneralOverlap.cpp): never misses an overlap, may report shapes that only come closer than
+// the cover's cells, or touch. Symmetric.
+bool generalShapesOverlap(const Shape& a, const Shape& b);
 
 }  // namespace dropscope

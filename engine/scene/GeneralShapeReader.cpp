@@ -6,6 +6,7 @@
 #include "geometry/parametric/ParametricShape.hpp"
 #include "scene/JsonDocument.hpp"
 #include "scene/JsonPath.hpp"
+#include "scene/SceneLoader.hpp"
 #include "scene/TransformReader.hpp"
 
 #include <charconv>
@@ -82,14 +83,22 @@ std::shared_ptr<const ParametricSurface> readBezier(const JsonReader& json) {
         const auto patches = readPatches(patchesJson);
         return patchesJson.construct([&] { return makeBezierSurface(patches); });
     }
-    const std::filesystem::path file = resolveBeside(patchesJson, patchesJson.string());
+    const std::string name = patchesJson.string();
+    if (name.empty()) patchesJson.fail("must be the patches or the name of a file holding them, not \"\"");
+    const std::filesystem::path file = resolveBeside(patchesJson, name);
     const std::string origin = file.string();
-    const Json document = parseJsonDocument(readJsonFileText(file), origin);
-    const JsonReader root(document, "", origin);
-    root.expectKeys({"patches"});
-    const JsonReader filePatches = root.member("patches");
-    const auto patches = readPatches(filePatches);
-    return filePatches.construct([&] { return makeBezierSurface(patches); });
+    // An error in the patches file names that file and its own path, after this value's place.
+    try {
+        const Json document = parseJsonDocument(readJsonFileText(file), origin);
+        const JsonReader root(document, "", origin);
+        root.expectObject();
+        root.expectKeys({"patches"});
+        const JsonReader filePatches = root.member("patches");
+        const auto patches = readPatches(filePatches);
+        return filePatches.construct([&] { return makeBezierSurface(patches); });
+    } catch (const SceneError& error) {
+        patchesJson.fail(std::string("in the patches file: ") + error.what());
+    }
 }
 
 std::shared_ptr<const ParametricSurface> readSurface(const JsonReader& json, const std::string& preset) {
@@ -148,7 +157,7 @@ std::shared_ptr<const ImplicitFunction> readFunction(const JsonReader& json, con
                            std::to_string(radii.size()) + " radii)");
         }
         const double blend = json.member("blend").positive();
-        return json.construct([&] { return makeBlob(centers, radii, blend); });
+        return json.member("centers").construct([&] { return makeBlob(centers, radii, blend); });
     }
     json.member("preset").fail("unknown implicit preset " + jsonpath::quoted(preset) + " (known: superellipsoid, blob)");
 }
@@ -168,7 +177,11 @@ std::unique_ptr<Shape> readParametricShape(const JsonReader& json, BaseCache& ca
     const auto base = cached<ParametricBase>(cache, key, [&] {
         return json.construct([&] { return makeParametricBase(surface); });
     });
-    return json.construct([&] { return std::make_unique<ParametricShape>(base, transform); });
+    return json.construct([&] {
+        auto shape = std::make_unique<ParametricShape>(base, transform);
+        shape->checkUsable();
+        return shape;
+    });
 }
 
 std::unique_ptr<Shape> readImplicitShape(const JsonReader& json, BaseCache& cache) {
@@ -179,7 +192,11 @@ std::unique_ptr<Shape> readImplicitShape(const JsonReader& json, BaseCache& cach
     const auto base = cached<ImplicitBase>(cache, key, [&] {
         return json.construct([&] { return makeImplicitBase(function); });
     });
-    return json.construct([&] { return std::make_unique<ImplicitShape>(base, transform); });
+    return json.construct([&] {
+        auto shape = std::make_unique<ImplicitShape>(base, transform);
+        shape->checkUsable();
+        return shape;
+    });
 }
 
 }  // namespace dropscope

@@ -99,8 +99,26 @@ TEST(AffineTransform, NormalsStayPerpendicularToMappedTangents) {
         const Eigen::Vector3d tangent = n.cross(testing::randomDirection(rng).vector());
         const Direction mapped = t.applyToNormal(n);
         EXPECT_NEAR(mapped.dot(t.applyToVector(tangent)), 0.0, 1e-12 * tangent.norm() * m.norm()) << "case " << i;
-        // Outward stays outward: the normal still points from the mapped surface point towards p + n.
-        EXPECT_GT(mapped.dot(t.applyToVector(n)), 0.0) << "case " << i;
+    }
+}
+
+// Under a reflection the image of an outward normal must still point out: the plane z = 0 bounding the
+// half-space z < 0 (outward normal +z), mirrored in x = y and then turned, bounds the image of that
+// half-space, and the mapped normal points away from the image of an inside point.
+TEST(AffineTransform, NormalsStayOutwardUnderReflections) {
+    Rng rng(12);
+    for (int i = 0; i < 50; ++i) {
+        const AffineTransform t = AffineTransform::reflection(testing::randomDirection(rng).vector())
+                                      .then(AffineTransform(testing::randomRotation(rng) * Eigen::Vector3d(1, 2, 0.5).asDiagonal(),
+                                                            testing::randomPoint(rng, 1.0)));
+        ASSERT_TRUE(t.classification().reflects);
+        const Point onSurface = testing::randomPoint(rng, 1.0).cwiseProduct(Eigen::Vector3d(1, 1, 0));
+        const Point inside = onSurface - Eigen::Vector3d::UnitZ();
+        const Direction n = t.applyToNormal(Eigen::Vector3d::UnitZ());
+        EXPECT_LT(n.dot(t.apply(inside) - t.apply(onSurface)), 0.0) << "case " << i;
+        // And it is the normal of the image plane: perpendicular to the images of x and y.
+        EXPECT_NEAR(n.dot(t.applyToVector(Eigen::Vector3d::UnitX())), 0.0, 1e-13) << "case " << i;
+        EXPECT_NEAR(n.dot(t.applyToVector(Eigen::Vector3d::UnitY())), 0.0, 1e-13) << "case " << i;
     }
 }
 

@@ -37,16 +37,21 @@ TEST(GeneralShapeReader, ReadsTheIssueExample) {
 }
 
 TEST(GeneralShapeReader, AppliesTheTransformStepsInTheDocumentedOrder) {
-    // scale, then rotation, shear, reflection, matrix, translation: (1,0,0) -> (3,0,0) -> (0,3,0)
-    // -> shear xy: x += 0.5 y -> (1.5,3,0) -> reflect in the plane z = 0: unchanged -> matrix diag(1,1,2)
-    // -> + (0,0,10).
+    // Steps that do not commute, listed in the file in reverse: the product must be
+    // matrix . reflection . shear . rotation . scale, then + translation.
     const Scene scene = parseScene(sceneWithShapes(R"({"type": "implicit", "preset": "superellipsoid",
         "semi_axes": [1, 1, 1], "exponents": [1, 1], "medium": "water", "transform": {
-        "translation": [0, 0, 10], "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 2]], "reflection": {"normal": [0, 0, 1]},
-        "shear": {"xy": 0.5}, "rotation": {"axis": [0, 0, 1], "angle_deg": 90}, "scale": 3}})"), "scene.json");
+        "translation": [0, 0, 10], "matrix": [[1, 2, 0], [0, 1, 0], [0, 0, 1]], "reflection": {"normal": [1, 1, 0]},
+        "shear": {"xz": 0.5}, "rotation": {"axis": [0, 0, 1], "angle_deg": 90}, "scale": [3, 1, 2]}})"), "scene.json");
     const auto& shape = static_cast<const GeneralShape&>(*scene.shapes[0]);
-    EXPECT_TRUE(shape.transform().apply(Point(1, 0, 0)).isApprox(Point(1.5, 3, 10), 1e-14));
-    EXPECT_TRUE(shape.transform().apply(Point(0, 0, 1)).isApprox(Point(0, 0, 10 - 6), 1e-14));
+    Eigen::Matrix3d matrix, reflection, shear, rotation;
+    matrix << 1, 2, 0, 0, 1, 0, 0, 0, 1;
+    reflection << 0, -1, 0, -1, 0, 0, 0, 0, 1;  // I - 2 n n^T, n = (1, 1, 0)/sqrt(2)
+    shear << 1, 0, 0.5, 0, 1, 0, 0, 0, 1;
+    rotation << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+    const Eigen::Matrix3d expected = matrix * reflection * shear * rotation * Eigen::Vector3d(3, 1, 2).asDiagonal();
+    EXPECT_LE((shape.transform().matrix() - expected).cwiseAbs().maxCoeff(), 1e-14) << shape.transform().matrix();
+    EXPECT_EQ(shape.transform().translation(), Eigen::Vector3d(0, 0, 10));
 }
 
 TEST(GeneralShapeReader, EqualPresetsShareOneBase) {
@@ -105,7 +110,19 @@ TEST(GeneralShapeReader, ErrorsNameTheValue) {
         "radii": [1], "blend": 0.1, "medium": "water"})")),
               "scene.json: shapes[0].radii: must give one radius per center (2 centers, 1 radii)");
     EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "bezier", "patches": "no/such.json",
-        "medium": "water"})")), "no/such.json: no such file");
+        "medium": "water"})")), "scene.json: shapes[0].patches: in the patches file: no/such.json: no such file");
+    EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "bezier", "patches": "",
+        "medium": "water"})")), R"(scene.json: shapes[0].patches: must be the patches or the name of a file holding them, not "")");
+    EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "blob", "centers": [[0, 0, 0]],
+        "radii": [1], "blend": 0.1, "medium": "water"})")).rfind("scene.json: shapes[0].centers: ", 0), 0u);
+    // Parameters at the edge of the double range give no usable shape: refused, not NaN volumes.
+    EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "superellipsoid", "semi_axes": [1e300, 1, 1],
+        "exponents": [1, 1], "medium": "water"})")).find("scene.json: shapes[0]: "), std::string::npos);
+    EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": 1, "medium": "water",
+        "transform": {"scale": 1e200}})")).find("scene.json: shapes[0]"), std::string::npos);
+    // Droplets far below the tessellation's resolution leave no surface to draw or to test overlaps with.
+    EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "blob", "centers": [[0, 0, 0], [1, 1, 1]],
+        "radii": [0.001, 0.001], "blend": 0.0001, "medium": "water"})")).find("scene.json: shapes[0]"), std::string::npos);
     EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "bezier", "patches": [[[[[0, 0, 0]]]]],
         "medium": "water"})")).find("scene.json: shapes[0].patches[0][0]: must be 4 rows"), std::string::npos);
 }

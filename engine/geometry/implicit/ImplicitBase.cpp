@@ -1,6 +1,7 @@
 #include "geometry/implicit/ImplicitBase.hpp"
 
 #include "geometry/Tolerance.hpp"
+#include "geometry/implicit/ConvexBody.hpp"
 #include "geometry/implicit/ImplicitTolerance.hpp"
 #include "geometry/implicit/RayRootFinder.hpp"
 
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <stdexcept>
 #include <unordered_map>
@@ -253,7 +255,13 @@ const std::vector<Eigen::AlignedBox3d>& ImplicitBase::surfaceCover() const {
 
 const BodyIntegrals& ImplicitBase::integrals() const {
     std::call_once(integralsOnce_, [this] {
-        integrals_ = bodyIntegrals(*function_, AffineTransform(), bounds_, bounds_, band_, tolerance::implicit::kIntegralLines);
+        if (const std::optional<Point> centre = function_->convexCentre()) {
+            integrals_ = convexBodyIntegrals(*function_, *centre, bounds_, AffineTransform(), band_,
+                                             tolerance::implicit::kConvexIntegralOrder);
+        } else {
+            integrals_ = bodyIntegrals(*function_, AffineTransform(), bounds_, bounds_, band_,
+                                       tolerance::implicit::kIntegralLines);
+        }
     });
     return integrals_;
 }

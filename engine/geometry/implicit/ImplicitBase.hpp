@@ -49,7 +49,8 @@ public:
     const SurfaceMesh& mesh() const;
     // Boxes (from a Lipschitz subdivision of the bounds) that together contain the whole surface.
     const std::vector<Eigen::AlignedBox3d>& surfaceCover() const;
-    // The base body's volume and area with error estimates (bodyIntegrals with the identity).
+    // The base body's volume and area with error estimates: convexBodyIntegrals (ConvexBody.hpp) when
+    // the function is convex, else bodyIntegrals with the identity.
     const BodyIntegrals& integrals() const;
 
 private:

@@ -1,11 +1,13 @@
 #include "geometry/implicit/ImplicitShape.hpp"
 
 #include "geometry/Tolerance.hpp"
+#include "geometry/implicit/ConvexBody.hpp"
 #include "geometry/implicit/ImplicitTolerance.hpp"
 #include "geometry/implicit/RayRootFinder.hpp"
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
@@ -81,6 +83,11 @@ IntegralEstimate ImplicitShape::areaEstimate() const {
         return {base.value * scale, base.errorEstimate * scale};
     }
     std::call_once(derived_->areaOnce, [this] {
+        if (const std::optional<Point> centre = function().convexCentre()) {
+            derived_->area = convexBodyIntegrals(function(), *centre, base_->bounds(), transform(), base_->band(),
+                                                 kConvexIntegralOrder).area;
+            return;
+        }
         // Over the certified (outward) bounds, padded like the base's, so the ends of every line are outside.
         const Eigen::AlignedBox3d tight = bounds();
         const double padding = kBoundsPaddingRelative * tight.diagonal().norm();

@@ -44,7 +44,8 @@ public:
     double zMin() const override { return extremes()[4]; }
     double zMax() const override { return extremes()[5]; }
 
-    // |det M| times the base volume; K^2 times the base area for a similarity, else the line
+    // |det M| times the base volume; K^2 times the base area for a similarity, else the radial
+    // Gauss-Legendre rule with the placed area element (convex functions, ConvexBody.hpp) or the line
     // integrals (ImplicitBase.hpp) on the placed shape. The estimates carry their error estimates.
     double surfaceArea() const override { return areaEstimate().value; }
     double volume() const override { return volumeEstimate().value; }

@@ -108,6 +108,14 @@ void BezierSurface::validate() {
         bottomIsPole = bottomIsPole && isPoint(bottomEdge(patches_.front()[c]), bottomPole, tol);
         topIsPole = topIsPole && isPoint(topEdge(patches_.back()[c]), topPole, tol);
     }
+    // A pole accepted within the tolerance is made exactly one point: r_v must vanish there exactly (see the
+    // evaluation below), or r_u x r_v would point along the copies' rounding differences.
+    const auto snapPole = [&](std::size_t row, std::size_t edgeRow, const Point& pole) {
+        for (BezierNet& net : patches_[row])
+            for (Point& q : net[edgeRow]) q = pole;
+    };
+    if (bottomIsPole) snapPole(0, 0, bottomPole);
+    if (topIsPole) snapPole(nr - 1, 3, topPole);
     if (bottomIsPole && topIsPole) return;
     const auto bottomMessage = [&](std::size_t c) {
         return name(0, c) + ": its bottom edge (u = 0) is neither a single point (a pole) nor " + name(nr - 1, c) +
@@ -134,55 +142,76 @@ ParameterDomain BezierSurface::domain() const {
     return {0.0, static_cast<double>(rows()), 0.0, static_cast<double>(columns())};
 }
 
+// The sums below run over differences from one control point of each row (and from one row), not over the
+// control points themselves: the Bernstein weights sum to 1 and their derivatives to 0 only up to rounding, so
+// sum_j B_j'(t) net[i][j] over a row collapsed to a pole P would leave r_v ~ eps P instead of 0, whose direction
+// (along P) is unrelated to the surface, and r_u x r_v with it. With differences a collapsed row contributes
+// exactly nothing to the derivatives, and r is exactly the pole there.
+namespace {
+
+// Row i of the patch at t, its first and second v-derivatives: net[i][0] + sum_j B_j(t) (net[i][j] - net[i][0]).
+struct RowSums {
+    std::array<Point, 4> r;
+    std::array<Eigen::Vector3d, 4> rv;
+    std::array<Eigen::Vector3d, 4> rvv;
+};
+
+RowSums rowSums(const BezierNet& net, const Bernstein& bv) {
+    RowSums rows;
+    for (std::size_t i = 0; i < 4; ++i) {
+        Eigen::Vector3d r = Eigen::Vector3d::Zero(), rv = Eigen::Vector3d::Zero(), rvv = Eigen::Vector3d::Zero();
+        for (std::size_t j = 1; j < 4; ++j) {
+            const Eigen::Vector3d delta = net[i][j] - net[i][0];
+            r += bv.b[j] * delta;
+            rv += bv.db[j] * delta;
+            rvv += bv.ddb[j] * delta;
+        }
+        rows.r[i] = net[i][0] + r;
+        rows.rv[i] = rv;
+        rows.rvv[i] = rvv;
+    }
+    return rows;
+}
+
+// sum_i w[i] (x[i] - x[k]) + x[k], or without the "+ x[k]" for derivative weights, from the row k nearer s: at
+// s = 0 or 1 the result is then exactly that end row (a pole).
+template <class Vectors>
+Eigen::Vector3d rowCombination(const std::array<double, 4>& w, const Vectors& x, double s, bool addReference) {
+    const std::size_t k = s <= 0.5 ? 0 : 3;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < 4; ++i)
+        if (i != k) sum += w[i] * (x[i] - x[k]);
+    return addReference ? Eigen::Vector3d(x[k] + sum) : sum;
+}
+
+}  // namespace
+
 Point BezierSurface::point(double u, double v) const {
     const auto [r, s] = locate(u, rows());
     const auto [c, t] = locate(v, columns());
-    const BezierNet& net = patches_[r][c];
-    const Bernstein bu = bernstein(s), bv = bernstein(t);
-    Point p = Point::Zero();
-    for (std::size_t i = 0; i < 4; ++i) {
-        Point row = Point::Zero();
-        for (std::size_t j = 0; j < 4; ++j) row += bv.b[j] * net[i][j];
-        p += bu.b[i] * row;
-    }
-    return p;
+    const RowSums rs = rowSums(patches_[r][c], bernstein(t));
+    return rowCombination(bernstein(s).b, rs.r, s, true);
 }
 
 SurfaceJet BezierSurface::jet(double u, double v) const {
     const auto [r, s] = locate(u, rows());
     const auto [c, t] = locate(v, columns());
-    const BezierNet& net = patches_[r][c];
-    const Bernstein bu = bernstein(s), bv = bernstein(t);
-    SurfaceJet jet{Point::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-    for (std::size_t i = 0; i < 4; ++i) {
-        Point row = Point::Zero(), rowV = Point::Zero();
-        for (std::size_t j = 0; j < 4; ++j) {
-            row += bv.b[j] * net[i][j];
-            rowV += bv.db[j] * net[i][j];
-        }
-        jet.r += bu.b[i] * row;
-        jet.ru += bu.db[i] * row;
-        jet.rv += bu.b[i] * rowV;
-    }
+    const RowSums rs = rowSums(patches_[r][c], bernstein(t));
+    const Bernstein bu = bernstein(s);
+    SurfaceJet jet{rowCombination(bu.b, rs.r, s, true), rowCombination(bu.db, rs.r, s, false), Eigen::Vector3d::Zero()};
+    for (std::size_t i = 0; i < 4; ++i) jet.rv += bu.b[i] * rs.rv[i];
     return jet;
 }
 
 SurfaceHessians BezierSurface::hessians(double u, double v) const {
     const auto [r, s] = locate(u, rows());
     const auto [c, t] = locate(v, columns());
-    const BezierNet& net = patches_[r][c];
-    const Bernstein bu = bernstein(s), bv = bernstein(t);
-    SurfaceHessians h{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    const RowSums rs = rowSums(patches_[r][c], bernstein(t));
+    const Bernstein bu = bernstein(s);
+    SurfaceHessians h{rowCombination(bu.ddb, rs.r, s, false), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     for (std::size_t i = 0; i < 4; ++i) {
-        Point row = Point::Zero(), rowV = Point::Zero(), rowVV = Point::Zero();
-        for (std::size_t j = 0; j < 4; ++j) {
-            row += bv.b[j] * net[i][j];
-            rowV += bv.db[j] * net[i][j];
-            rowVV += bv.ddb[j] * net[i][j];
-        }
-        h.ruu += bu.ddb[i] * row;
-        h.ruv += bu.db[i] * rowV;
-        h.rvv += bu.b[i] * rowVV;
+        h.ruv += bu.db[i] * rs.rv[i];
+        h.rvv += bu.b[i] * rs.rvv[i];
     }
     return h;
 }

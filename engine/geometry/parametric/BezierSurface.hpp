@@ -22,6 +22,7 @@ namespace dropscope {
 //  - each patch's bottom edge is the top edge of the patch below it;
 //  - the u = 0 edge (row 0's bottom) and the u = rows edge (last row's top) are each either one point
 //    (a pole) or, both, the same curve (periodic in u).
+// A pole's control points are then set to exactly its first one, so that r_v vanishes there exactly.
 class BezierSurface final : public ParametricSurface {
 public:
     explicit BezierSurface(std::vector<std::vector<BezierNet>> patches);

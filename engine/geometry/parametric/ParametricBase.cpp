@@ -268,11 +268,11 @@ bool ParametricBase::collapsedEdge(bool uEdge, double value) const {
 
 Direction ParametricBase::outwardNormal(double u, double v) const {
     const Eigen::Vector2d w = wrap(u, v);
-    SurfaceJet j = surface_->jet(w.x(), w.y());
-    if (!isDegenerate(j)) return Direction(orientation_ * j.ru.cross(j.rv));  // seed 000 eq. 1.71, outward
-
-    // Seed 000 eq. 1.71 is 0/0 here. At a pole (a whole edge of the domain collapsed to one point) the normal is
-    // the mean of the normals on a tiny ring just inside that edge: their first-order tilts cancel.
+    // Seed 000 eq. 1.71 is 0/0 at a pole (a whole edge of the domain collapsed to one point): the normal is the mean
+    // of the normals on a tiny ring just inside that edge, where their first-order tilts cancel. This is decided
+    // before looking at r_u x r_v there: at a pole it is zero only up to how the surface rounds r_v (a Bezier row
+    // summed over a collapsed edge leaves ~eps |r| along r itself), and such noise passes the degeneracy test,
+    // which is relative to |r_u| |r_v|.
     const auto ringNormal = [&](bool uEdge, double edge, double inward) {
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
         for (int k = 0; k < tp::kPoleRingSamples; ++k) {
@@ -290,6 +290,9 @@ Direction ParametricBase::outwardNormal(double u, double v) const {
     if (w.x() == domain_.u1 && poleAtU1_) return ringNormal(true, domain_.u1, -1.0);
     if (w.y() == domain_.v0 && poleAtV0_) return ringNormal(false, domain_.v0, 1.0);
     if (w.y() == domain_.v1 && poleAtV1_) return ringNormal(false, domain_.v1, -1.0);
+
+    SurfaceJet j = surface_->jet(w.x(), w.y());
+    if (!isDegenerate(j)) return Direction(orientation_ * j.ru.cross(j.rv));  // seed 000 eq. 1.71, outward
 
     // Elsewhere: a tiny step inside the domain, towards its centre.
     const double uCentre = 0.5 * (domain_.u0 + domain_.u1);

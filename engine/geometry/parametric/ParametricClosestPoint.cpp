@@ -81,6 +81,11 @@ SurfaceProjection leastSquares(const ParametricBase& base, const AffineTransform
             b.dot(b) - pulled.dot(h.rvv);
         const double scale = std::max({a.squaredNorm() + b.squaredNorm(), std::abs(hessian.trace()),
                                        std::numeric_limits<double>::min()});
+        // Marquardt's damping, per parameter (|M r_u|^2, |M r_v|^2) rather than one scale for both: next to a pole
+        // |r_v| is ~ the distance to it, and a damping sized by |r_u| would freeze v there (steps in v below the
+        // rounding of r), leaving the iterate far above the surface band from the true nearest point.
+        const Eigen::Vector2d dampingScale(std::max(a.squaredNorm(), tp::kClosestPointDampingFloor * scale),
+                                           std::max(b.squaredNorm(), tp::kClosestPointDampingFloor * scale));
         // Projected Newton's active set: a parameter on a side of the region that the descent direction pushes
         // further out stays there; the step is solved for the others (without this, a Newton step pointing out
         // of a corner would stop the iteration at the corner).
@@ -93,14 +98,14 @@ SurfaceProjection leastSquares(const ParametricBase& base, const AffineTransform
             Eigen::Vector2d step = Eigen::Vector2d::Zero();
             if (fixU || fixV) {
                 const int k = fixU ? 1 : 0;
-                const double curvature = hessian(k, k) + damping * scale;
+                const double curvature = hessian(k, k) + damping * dampingScale[k];
                 if (!(curvature > 0.0)) {
                     damping = std::max(10.0 * damping, tp::kClosestPointInitialDamping);
                     continue;
                 }
                 step[k] = -gradient[k] / curvature;
             } else {
-                const Eigen::Matrix2d damped = hessian + damping * scale * Eigen::Matrix2d::Identity();
+                const Eigen::Matrix2d damped = hessian + damping * Eigen::Matrix2d(dampingScale.asDiagonal());
                 const Eigen::LLT<Eigen::Matrix2d> factor(damped);
                 if (factor.info() != Eigen::Success) {
                     damping = std::max(10.0 * damping, tp::kClosestPointInitialDamping);

@@ -248,7 +248,13 @@ private:
         crossing.u = folded.x();
         crossing.v = folded.y();
         crossing.degenerate = isDegenerate(jet);
-        const Eigen::Vector3d normal = base_.orientation() * jet.ru.cross(jet.rv);  // eq. 1.71, outward
+        // Eq. 1.71, outward; at a degenerate point (a ray through a pole) r_u x r_v is 0 or noise: the base's normal
+        // there (the pole's) instead.
+        Eigen::Vector3d normal = base_.orientation() * jet.ru.cross(jet.rv);
+        if (crossing.degenerate) {
+            const Direction n = base_.outwardNormal(u, v);
+            normal = n ? n.vector() : Eigen::Vector3d::Zero();
+        }
         // In the placed frame the normal is M^-T n and d . M^-T n = (M^-1 d) . n = d' . n.
         const double placedNorm = (transform_.inverseMatrix().transpose() * normal).norm();
         crossing.cosine = placedNorm > 0.0 ? dBase_.dot(normal) / placedNorm : 0.0;

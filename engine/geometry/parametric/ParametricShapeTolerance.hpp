@@ -129,6 +129,10 @@ inline constexpr int kClosestPointMaxIterations = 80;
 inline constexpr double kClosestPointInitialDamping = 1e-6;
 inline constexpr double kClosestPointMaxDamping = 1e12;
 inline constexpr double kClosestPointStepRelative = 1e-14;
+// The damping is per parameter, relative to |M r_u|^2 and |M r_v|^2, but never relative to less than this fraction
+// of their sum: where one of them vanishes (on a pole) the damped system stays positive definite; 1e-30 leaves
+// parameters whose derivative is ~1e-15 of the other's (a point ~1e-15 of the size from a pole) still free to move.
+inline constexpr double kClosestPointDampingFloor = 1e-30;
 
 // Each leaf's search region is the leaf enlarged by this fraction of its size, so a closest point on a
 // leaf's edge lies inside at least one region, where the projected iteration converges quadratically.

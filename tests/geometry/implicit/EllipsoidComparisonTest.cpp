@@ -123,14 +123,14 @@ TEST(EllipsoidComparison, VolumeAndAreaWithinTheirErrorEstimates) {
     const IntegralEstimate volume = base.volumeEstimate();
     const IntegralEstimate area = base.areaEstimate();
     EXPECT_LE(std::abs(volume.value - exactVolume), volume.errorEstimate);
-    EXPECT_LE(volume.errorEstimate, 1e-3 * exactVolume);
+    EXPECT_LE(volume.errorEstimate, 1e-8 * exactVolume);
     EXPECT_LE(std::abs(area.value - exactArea), area.errorEstimate);
-    EXPECT_LE(area.errorEstimate, 1e-3 * exactArea);
+    EXPECT_LE(area.errorEstimate, 1e-8 * exactArea);
     std::printf("ellipsoid volume error %.3g (estimate %.3g), area error %.3g (estimate %.3g)\n",
                 std::abs(volume.value - exactVolume) / exactVolume, volume.errorEstimate / exactVolume,
                 std::abs(area.value - exactArea) / exactArea, area.errorEstimate / exactArea);
 
-    // Placed: |det M| for the volume; K^2 for a similarity's area, the line integral otherwise.
+    // Placed: |det M| for the volume; K^2 for a similarity's area, the placed radial rule otherwise.
     Rng rng(300);
     for (int placement = 0; placement < 3; ++placement) {
         const bool similarity = placement == 0;
@@ -140,7 +140,7 @@ TEST(EllipsoidComparison, VolumeAndAreaWithinTheirErrorEstimates) {
         EXPECT_NEAR(placedVolume.value, volume.value * std::abs(pair.shape.transform().determinant()), 1e-12);
         const IntegralEstimate placedArea = pair.shape.areaEstimate();
         EXPECT_NEAR(placedArea.value, pair.reference.surfaceArea(), placedArea.errorEstimate) << placement;
-        EXPECT_LE(placedArea.errorEstimate, (similarity ? 1e-3 : 3e-2) * placedArea.value) << placement;
+        EXPECT_LE(placedArea.errorEstimate, 1e-8 * placedArea.value) << placement;
         if (similarity) {
             const double k = pair.shape.transform().classification().uniformScale;
             EXPECT_NEAR(placedArea.value, area.value * k * k, 1e-12 * placedArea.value);
