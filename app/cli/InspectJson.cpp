@@ -1,5 +1,6 @@
 #include "cli/InspectReport.hpp"
 #include "geometry/GeneralShape.hpp"
+#include "geometry/implicit/ImplicitShape.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -47,6 +48,11 @@ Json shapesJson(const Scene& scene) {
                       {"volume", shape.volume()},
                       {"surface_area", shape.surfaceArea()}};
         if (const GeneralShape* general = asGeneralShape(shape)) entry["preset"] = std::string(general->presetName());
+        // Implicit volumes and areas are numerical integrals to ~1e-6: their estimated absolute errors.
+        if (const auto* implicit = dynamic_cast<const ImplicitShape*>(&shape)) {
+            entry["volume_error"] = implicit->volumeEstimate().errorEstimate;
+            entry["surface_area_error"] = implicit->areaEstimate().errorEstimate;
+        }
         shapes.push_back(std::move(entry));
     }
     return shapes;

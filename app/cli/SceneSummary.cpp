@@ -6,7 +6,7 @@ namespace dropscope {
 
 SceneSummary summarise(const Scene& scene) {
     SceneSummary summary;
-    summary.shapesByType = {{"box", 0}, {"ellipsoid", 0}, {"sphere", 0}};
+    summary.shapesByType = {{"box", 0}, {"ellipsoid", 0}, {"implicit", 0}, {"parametric", 0}, {"sphere", 0}};
     std::vector<std::unique_ptr<Shape>> copies;
     for (const auto& shape : scene.shapes) {
         copies.push_back(shape->clone());

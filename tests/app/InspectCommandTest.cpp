@@ -70,6 +70,13 @@ TEST(InspectCommand, ParametricAndImplicitShapesShowTheirPreset) {
     EXPECT_EQ(report["shapes"][0]["preset"], "bezier");
     EXPECT_EQ(report["totals"]["shapes_by_type"]["parametric"], 3);
     EXPECT_EQ(report["totals"]["shapes_by_type"]["implicit"], 2);
+    // The implicit integrals carry error estimates, small against their values.
+    const auto& blob = report["shapes"][3];
+    ASSERT_EQ(blob["preset"], "blob");
+    EXPECT_GT(blob["volume_error"].get<double>(), 0.0);
+    EXPECT_LT(blob["volume_error"].get<double>(), 1e-2 * blob["volume"].get<double>());
+    EXPECT_LT(blob["surface_area_error"].get<double>(), 1e-2 * blob["surface_area"].get<double>());
+    EXPECT_FALSE(ring.contains("volume_error"));
 }
 
 TEST(InspectCommand, JsonHasEveryDocumentedKeyAndFullPrecision) {
@@ -102,7 +109,7 @@ TEST(InspectCommand, JsonHasEveryDocumentedKeyAndFullPrecision) {
     EXPECT_TRUE(source["radius"].is_null());
     const auto& totals = report["totals"];
     EXPECT_EQ(totals["shapes"], 1);
-    EXPECT_EQ(totals["shapes_by_type"], nlohmann::json({{"box", 0}, {"ellipsoid", 0}, {"sphere", 1}}));
+    EXPECT_EQ(totals["shapes_by_type"], nlohmann::json({{"box", 0}, {"ellipsoid", 0}, {"implicit", 0}, {"parametric", 0}, {"sphere", 1}}));
     EXPECT_DOUBLE_EQ(totals["volume"].get<double>(), 4.0 / 3.0 * std::numbers::pi * 8.0);
     EXPECT_EQ(totals["bounds"], shape["bounds"]);
 }

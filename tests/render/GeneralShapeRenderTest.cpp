@@ -8,6 +8,7 @@
 #include "render/RenderHarness.hpp"
 #include "render/RenderTolerances.hpp"
 #include "render/SceneLayers.hpp"
+#include "render/SilhouetteCoverage.hpp"
 #include "render/TestOctahedron.hpp"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,9 @@ namespace dropscope {
 namespace {
 
 using test::DirectRenderer;
+using test::coveredPixels;
 using test::isBlack;
+using test::oneShape;
 using test::TestOctahedron;
 
 constexpr int kWidth = 160;  // not square: a wrong aspect ratio shows
@@ -32,44 +35,6 @@ constexpr int kHeight = 120;
 // Colours read back from 8-bit channels: the rounding of one channel, plus one level for the float
 // shading (normalize, dot) of two different shader paths at the same point.
 constexpr int kChannelLevels = 2;
-
-std::vector<std::unique_ptr<Shape>> oneShape(std::unique_ptr<Shape> shape) {
-    std::vector<std::unique_ptr<Shape>> shapes;
-    shapes.push_back(std::move(shape));
-    return shapes;
-}
-
-// Whether the shape's ray from the eye through pixel (x, y) hits it.
-std::vector<char> exactCoverage(const Shape& shape, const render::Camera& camera) {
-    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
-    std::vector<char> hit(static_cast<std::size_t>(kWidth * kHeight));
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            const double t = shape.distanceToSurface(eye, test::pixelRay(camera, x, y, kWidth, kHeight));
-            hit[static_cast<std::size_t>(y * kWidth + x)] = std::isnan(t) ? 0 : 1;
-        }
-    }
-    return hit;
-}
-
-// Within one pixel of the exact silhouette: some 8-neighbour is classified the other way.
-bool onBoundary(const std::vector<char>& hit, int x, int y) {
-    const char here = hit[static_cast<std::size_t>(y * kWidth + x)];
-    for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, kHeight - 1); ++ny) {
-        for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, kWidth - 1); ++nx) {
-            if (hit[static_cast<std::size_t>(ny * kWidth + nx)] != here) return true;
-        }
-    }
-    return false;
-}
-
-int coveredPixels(const snapshot::Image& image) {
-    int covered = 0;
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) covered += isBlack(image, x, y) ? 0 : 1;
-    }
-    return covered;
-}
 
 // An affine map with a rotation, unequal scalings and a shear (so normals and silhouettes are not those
 // of a similarity), placed at r0.
@@ -100,30 +65,9 @@ TEST(MeshSilhouette, PlacedMeshesCoverExactlyThePixelsWhoseRaysHitTheShape) {
         const snapshot::Image image =
             renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
 
-        const std::vector<char> hit = exactCoverage(*shapes[0], camera);
-        int hits = 0;
-        int outsideBand = 0;
-        int band = 0;
-        int bandMismatches = 0;
-        for (int y = 0; y < kHeight; ++y) {
-            for (int x = 0; x < kWidth; ++x) {
-                const bool shapeHit = hit[static_cast<std::size_t>(y * kWidth + x)] != 0;
-                const bool mismatch = shapeHit == isBlack(image, x, y);
-                hits += shapeHit ? 1 : 0;
-                if (!onBoundary(hit, x, y)) {
-                    outsideBand += mismatch ? 1 : 0;
-                    EXPECT_FALSE(mismatch && outsideBand <= 5)
-                        << "pixel (" << x << ", " << y << "): shape " << (shapeHit ? "hit" : "missed") << ", rendered "
-                        << (shapeHit ? "background" : "covered");
-                } else {
-                    ++band;
-                    bandMismatches += mismatch ? 1 : 0;
-                }
-            }
-        }
-        EXPECT_EQ(outsideBand, 0) << "pixels away from the silhouette where the drawing and the shape disagree";
-        EXPECT_LE(bandMismatches, test::kBandMismatchShare * band) << "of " << band << " pixels along the silhouette";
-        EXPECT_GT(hits, 300) << "the shape should fill a good part of the image";
+        const test::ExactCoverage exact(*shapes[0], camera, kWidth, kHeight);
+        test::expectCoversExactly(image, exact);
+        EXPECT_GT(exact.hits(), 300) << "the shape should fill a good part of the image";
     }
 }
 

@@ -5,12 +5,14 @@
 #include "geometry/Sphere.hpp"
 #include "render/RenderHarness.hpp"
 #include "render/RenderTolerances.hpp"
+#include "render/SilhouetteCoverage.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace dropscope {
@@ -18,15 +20,10 @@ namespace {
 
 using test::DirectRenderer;
 using test::isBlack;
+using test::oneShape;
 
 constexpr int kWidth = 160;  // not square: a wrong aspect ratio shows as an ellipse
 constexpr int kHeight = 120;
-
-std::vector<std::unique_ptr<Shape>> oneShape(std::unique_ptr<Shape> shape) {
-    std::vector<std::unique_ptr<Shape>> shapes;
-    shapes.push_back(std::move(shape));
-    return shapes;
-}
 
 // Looking at `target` from `distance` along `fromDirection`, 40 degrees high.
 render::Camera lookingAt(const Point& target, const Eigen::Vector3d& fromDirection, double distance,
@@ -59,31 +56,20 @@ TEST(SphereSilhouette, CentredSphereCoversTheCircleTheCameraMathPredicts) {
     ASSERT_LT(outside, kWidth);
     EXPECT_TRUE(isBlack(image, outside, kHeight / 2)) << "a pixel at 1.5 radii is coloured";
 
-    int covered = 0;
-    int outsideBand = 0;
-    int band = 0;
-    int bandMismatches = 0;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            const double r = (Eigen::Vector2d(x + 0.5, y + 0.5) - middle).norm();
-            const bool isCovered = !isBlack(image, x, y);
-            const bool mismatch = isCovered != (r < expectedRadius);
-            covered += isCovered ? 1 : 0;
-            if (std::abs(r - expectedRadius) > test::kSilhouetteBandPixels) {
-                outsideBand += mismatch ? 1 : 0;
-                EXPECT_FALSE(mismatch && outsideBand <= 5)
-                    << "pixel (" << x << ", " << y << ") is " << (isCovered ? "" : "not ") << "covered, "
-                    << r - expectedRadius << " px from the circle";
-            } else {
-                ++band;
-                bandMismatches += mismatch ? 1 : 0;
-            }
-        }
-    }
-    EXPECT_EQ(outsideBand, 0) << "pixels farther than " << test::kSilhouetteBandPixels
-                              << " px from the projected circle (radius " << expectedRadius << " px) decided wrongly";
-    EXPECT_LE(bandMismatches, test::kBandMismatchShare * band) << "of " << band << " pixels along the circle";
-    const double areaRadius = std::sqrt(covered / std::numbers::pi);
+    // Signed distance of a pixel centre from the projected circle, in pixels.
+    const auto fromCircle = [&](int x, int y) {
+        return (Eigen::Vector2d(x + 0.5, y + 0.5) - middle).norm() - expectedRadius;
+    };
+    const test::CoverageAgreement agreement = test::compareCoverage(
+        image, [&](int x, int y) { return fromCircle(x, y) < 0.0; },
+        [&](int x, int y) { return std::abs(fromCircle(x, y)) <= test::kSilhouetteBandPixels; },
+        [&](int x, int y) { return ", " + std::to_string(fromCircle(x, y)) + " px from the circle"; });
+    EXPECT_EQ(agreement.outsideBand, 0) << "pixels farther than " << test::kSilhouetteBandPixels
+                                        << " px from the projected circle (radius " << expectedRadius
+                                        << " px) decided wrongly";
+    EXPECT_LE(agreement.bandMismatches, test::kBandMismatchShare * agreement.band)
+        << "of " << agreement.band << " pixels along the circle";
+    const double areaRadius = std::sqrt(test::coveredPixels(image) / std::numbers::pi);
     EXPECT_NEAR(areaRadius, expectedRadius, test::kAreaRadiusPixels);
 }
 
@@ -99,30 +85,6 @@ TEST(SphereSilhouette, PixelRaysAndCameraProjectAgree) {
         EXPECT_NEAR(back.x(), i + 0.5, 1e-6) << i << "," << j;
         EXPECT_NEAR(back.y(), j + 0.5, 1e-6) << i << "," << j;
     }
-}
-
-// Whether the engine's ray from the eye through pixel (x, y) hits the shape.
-std::vector<char> engineCoverage(const Shape& shape, const render::Camera& camera) {
-    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
-    std::vector<char> hit(static_cast<std::size_t>(kWidth * kHeight));
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            const double t = shape.distanceToSurface(eye, test::pixelRay(camera, x, y, kWidth, kHeight));
-            hit[static_cast<std::size_t>(y * kWidth + x)] = std::isnan(t) ? 0 : 1;
-        }
-    }
-    return hit;
-}
-
-// Within one pixel of the engine's silhouette: some 8-neighbour is classified the other way.
-bool onBoundary(const std::vector<char>& hit, int x, int y) {
-    const char here = hit[static_cast<std::size_t>(y * kWidth + x)];
-    for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, kHeight - 1); ++ny) {
-        for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, kWidth - 1); ++nx) {
-            if (hit[static_cast<std::size_t>(ny * kWidth + nx)] != here) return true;
-        }
-    }
-    return false;
 }
 
 // Seeded random ellipsoids (semi-axes, rotation, place) from random directions: every pixel the engine's
@@ -147,30 +109,9 @@ TEST(EllipsoidSilhouette, RotatedEllipsoidsCoverExactlyThePixelsWhoseRaysHitTheE
         const snapshot::Image image =
             renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
 
-        const std::vector<char> hit = engineCoverage(*shapes[0], camera);
-        int hits = 0;
-        int outsideBand = 0;
-        int band = 0;
-        int bandMismatches = 0;
-        for (int y = 0; y < kHeight; ++y) {
-            for (int x = 0; x < kWidth; ++x) {
-                const bool engineHit = hit[static_cast<std::size_t>(y * kWidth + x)] != 0;
-                const bool mismatch = engineHit == isBlack(image, x, y);
-                hits += engineHit ? 1 : 0;
-                if (!onBoundary(hit, x, y)) {
-                    outsideBand += mismatch ? 1 : 0;
-                    EXPECT_FALSE(mismatch && outsideBand <= 5)
-                        << "pixel (" << x << ", " << y << "): engine " << (engineHit ? "hit" : "miss") << ", rendered "
-                        << (engineHit ? "background" : "covered");
-                } else {
-                    ++band;
-                    bandMismatches += mismatch ? 1 : 0;
-                }
-            }
-        }
-        EXPECT_EQ(outsideBand, 0) << "pixels away from the silhouette where the renderer and the engine disagree";
-        EXPECT_LE(bandMismatches, test::kBandMismatchShare * band) << "of " << band << " pixels along the silhouette";
-        EXPECT_GT(hits, 300) << "the ellipsoid should fill a good part of the image";
+        const test::ExactCoverage engine(*shapes[0], camera, kWidth, kHeight);
+        test::expectCoversExactly(image, engine);
+        EXPECT_GT(engine.hits(), 300) << "the ellipsoid should fill a good part of the image";
     }
 }
 

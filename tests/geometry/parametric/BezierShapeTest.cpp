@@ -1,31 +1,28 @@
 // ParametricShape on a Bezier surface: the flattened droplet asset (2 x 4 bicubic patches, a pole at each end of
 // u). Mesh normals and normal(p) at and near the poles, ray crossings against a brute-force fine triangulation of
 // the surface refined by Newton, locatePoint against the parity of that reference, volume under a transform.
-#include "geometry/RandomGeometry.hpp"
+#include "geometry/parametric/BezierAsset.hpp"
 #include "geometry/parametric/BezierSurface.hpp"
-#include "geometry/parametric/ParametricPresets.hpp"
 #include "geometry/parametric/ParametricShape.hpp"
+#include "geometry/parametric/ParametricTestSupport.hpp"
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <Eigen/LU>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 namespace dropscope {
 namespace {
 
+using testing::randomMatrix;
 using testing::Rng;
+using testing::sameDistance;
 using testing::uniform;
-using Patches = std::vector<std::vector<BezierNet>>;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The asset's poles (rows run from north to south) and its parameter domain [0, 2] x [0, 4].
@@ -43,42 +40,9 @@ const Eigen::Vector3d kDown = -Eigen::Vector3d::UnitZ();
 // ~ 0.02 rad. 0.05 adds margin. Only rays whose results differ are checked against it.
 constexpr double kTangencyCosine = 0.05;
 
-Patches readPatches(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot open " + path);
-    const nlohmann::json json = nlohmann::json::parse(in);
-    Patches patches;
-    for (const auto& jsonRow : json.at("patches")) {
-        std::vector<BezierNet> row;
-        for (const auto& jsonNet : jsonRow) {
-            BezierNet net;
-            for (std::size_t i = 0; i < 4; ++i)
-                for (std::size_t j = 0; j < 4; ++j) {
-                    const auto& p = jsonNet.at(i).at(j);
-                    net[i][j] = Point(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
-                }
-            row.push_back(net);
-        }
-        patches.push_back(row);
-    }
-    return patches;
-}
-
 const std::shared_ptr<const ParametricBase>& dropletBase() {
-    static const auto base =
-        makeParametricBase(makeBezierSurface(readPatches(DROPSCOPE_SOURCE_DIR "/assets/shapes/flattened_droplet.json")));
+    static const auto base = makeParametricBase(makeBezierSurface(testing::flattenedDropletPatches()));
     return base;
-}
-
-Eigen::Matrix3d randomMatrix(Rng& rng, bool reflect) {
-    Eigen::Matrix3d shear = Eigen::Matrix3d::Identity();
-    shear(0, 1) = uniform(rng, -0.4, 0.4);
-    shear(1, 2) = uniform(rng, -0.4, 0.4);
-    shear(0, 2) = uniform(rng, -0.4, 0.4);
-    const Eigen::Vector3d scale(uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0));
-    Eigen::Matrix3d m = testing::randomRotation(rng) * scale.asDiagonal() * shear;
-    if (reflect) m.col(0) *= -1.0;
-    return m;
 }
 
 // The transforms the tests run under: the identity, and random non-similar ones (one of them a reflection).
@@ -408,13 +372,6 @@ TEST(BezierShape, ClosestPointsAndRaysAtThePoles) {
             }
         }
     }
-}
-
-// Both NaN, or both finite and within tol (both within 100 tol of 0 also agree: see ParametricDistanceTest).
-bool sameDistance(double actual, double expected, double tol) {
-    if (std::isnan(actual) && std::isnan(expected)) return true;
-    if (std::abs(actual) <= 100.0 * tol && std::abs(expected) <= 100.0 * tol) return true;
-    return !std::isnan(actual) && !std::isnan(expected) && std::abs(actual - expected) <= tol;
 }
 
 // Dense random rays from outside (half of them aimed at the surface, a tenth at a pole), inside and from surface

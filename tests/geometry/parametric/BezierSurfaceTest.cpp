@@ -1,16 +1,16 @@
+#include "geometry/parametric/BezierAsset.hpp"
 #include "geometry/parametric/BezierSurface.hpp"
 #include "geometry/parametric/ParametricPresets.hpp"
 #include "geometry/parametric/SurfaceExtremes.hpp"
 #include "geometry/parametric/SurfaceIntegrals.hpp"
+#include "geometry/parametric/SurfaceTestSupport.hpp"
 
 #include "geometry/RandomGeometry.hpp"
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -22,9 +22,10 @@
 namespace dropscope {
 namespace {
 
+using testing::NumericDerivatives;
+using testing::Patches;
 using testing::Rng;
 using testing::uniform;
-using Patches = std::vector<std::vector<BezierNet>>;
 
 constexpr double kPi = std::numbers::pi;
 const double kKappa = 4.0 / 3.0 * (std::sqrt(2.0) - 1.0);  // the cubic quarter-circle's arm
@@ -90,21 +91,6 @@ SurfaceJet deCasteljau(const BezierNet& net, double s, double t) {
     jet.rv = curve(alongDerivative, s, unused);
     return jet;
 }
-
-class NumericDerivatives final : public ParametricSurface {
-public:
-    explicit NumericDerivatives(const ParametricSurface& s) : s_(s) {}
-    ParameterDomain domain() const override { return s_.domain(); }
-    Point point(double u, double v) const override { return s_.point(u, v); }
-    bool periodicInU() const override { return s_.periodicInU(); }
-    bool periodicInV() const override { return s_.periodicInV(); }
-    double characteristicLength() const override { return s_.characteristicLength(); }
-    std::string_view presetName() const override { return s_.presetName(); }
-    std::vector<PresetParameter> presetParameters() const override { return s_.presetParameters(); }
-
-private:
-    const ParametricSurface& s_;
-};
 
 // The sphere net with its inner control points moved at random: still closed, no longer a sphere.
 Patches wobblyNet(Rng& rng) {
@@ -316,29 +302,8 @@ TEST(BezierSurface, ExtremesMatchBruteForce) {
     }
 }
 
-Patches readPatches(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot open " + path);
-    const nlohmann::json json = nlohmann::json::parse(in);
-    Patches patches;
-    for (const auto& jsonRow : json.at("patches")) {
-        std::vector<BezierNet> row;
-        for (const auto& jsonNet : jsonRow) {
-            BezierNet net;
-            for (std::size_t i = 0; i < 4; ++i)
-                for (std::size_t j = 0; j < 4; ++j) {
-                    const auto& p = jsonNet.at(i).at(j);
-                    net[i][j] = Point(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
-                }
-            row.push_back(net);
-        }
-        patches.push_back(row);
-    }
-    return patches;
-}
-
 TEST(BezierSurface, FlattenedDropletAsset) {
-    const auto surface = makeBezierSurface(readPatches(DROPSCOPE_SOURCE_DIR "/assets/shapes/flattened_droplet.json"));
+    const auto surface = makeBezierSurface(testing::flattenedDropletPatches());
     const auto& bezier = dynamic_cast<const BezierSurface&>(*surface);
     EXPECT_EQ(bezier.rows(), 2u);
     EXPECT_EQ(bezier.columns(), 4u);

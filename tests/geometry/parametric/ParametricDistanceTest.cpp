@@ -1,10 +1,9 @@
 // ParametricShape::distanceToSurface and normal against the analytic Sphere / Ellipsoid, and against a
 // brute-force root scan for the torus (no missed roots).
 #include "geometry/Ellipsoid.hpp"
-#include "geometry/RandomGeometry.hpp"
 #include "geometry/Sphere.hpp"
-#include "geometry/parametric/ParametricPresets.hpp"
 #include "geometry/parametric/ParametricShape.hpp"
+#include "geometry/parametric/ParametricTestSupport.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,52 +15,20 @@
 namespace dropscope {
 namespace {
 
+using testing::ellipsoidBase;
+using testing::randomMatrix;
 using testing::Rng;
+using testing::sameDistance;
+using testing::sphereBase;
+using testing::torusBase;
 using testing::uniform;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-const std::shared_ptr<const ParametricBase>& sphereBase() {
-    static const auto base = makeParametricBase(makeSphereSurface(1.0));
-    return base;
-}
-
-const std::shared_ptr<const ParametricBase>& torusBase() {
-    static const auto base = makeParametricBase(makeTorusSurface(2.0, 0.5));
-    return base;
-}
-
-Eigen::Matrix3d randomMatrix(Rng& rng, bool reflect) {
-    Eigen::Matrix3d shear = Eigen::Matrix3d::Identity();
-    shear(0, 1) = uniform(rng, -0.4, 0.4);
-    shear(1, 2) = uniform(rng, -0.4, 0.4);
-    shear(0, 2) = uniform(rng, -0.4, 0.4);
-    const Eigen::Vector3d scale(uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0));
-    Eigen::Matrix3d m = testing::randomRotation(rng) * scale.asDiagonal() * shear;
-    if (reflect) m.col(0) *= -1.0;
-    return m;
-}
 
 Point uniformInBall(Rng& rng, double radius) {
     for (;;) {
         const Point q = testing::randomPoint(rng, radius);
         if (q.norm() < radius) return q;
     }
-}
-
-// Both NaN, or both finite and within `tol` of each other. Both within `tol` of 0 also agree: from a surface
-// point, a ray within ~1e-6 rad of tangency leaves (0) or crosses a chord of ~1e-6 of the size, and which one is
-// decided by the last bits of the two different representations of the surface.
-::testing::AssertionResult sameDistance(double actual, double expected, double tol) {
-    if (std::isnan(actual) && std::isnan(expected)) return ::testing::AssertionSuccess();
-    if (std::abs(actual) <= 100.0 * tol && std::abs(expected) <= 100.0 * tol) return ::testing::AssertionSuccess();
-    if (std::isnan(actual) != std::isnan(expected) || !(std::abs(actual - expected) <= tol))
-        return ::testing::AssertionFailure() << "parametric " << actual << " vs analytic " << expected;
-    return ::testing::AssertionSuccess();
-}
-
-const std::shared_ptr<const ParametricBase>& ellipsoidBase() {
-    static const auto base = makeParametricBase(makeEllipsoidSurface({1.0, 0.5, 0.3}));
-    return base;
 }
 
 // Dense random rays from inside, outside and on the surface of a parametric sphere (and of the ellipsoid

@@ -1,8 +1,7 @@
 // ParametricShape::locatePoint (closest point for the band, crossing parity beyond it) and closestPoint.
 #include "geometry/Ellipsoid.hpp"
-#include "geometry/RandomGeometry.hpp"
-#include "geometry/parametric/ParametricPresets.hpp"
 #include "geometry/parametric/ParametricShape.hpp"
+#include "geometry/parametric/ParametricTestSupport.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,26 +12,13 @@ namespace dropscope {
 namespace {
 
 using testing::Rng;
+using testing::sphereBase;
+using testing::torusBase;
 using testing::uniform;
 
-const std::shared_ptr<const ParametricBase>& sphereBase() {
-    static const auto base = makeParametricBase(makeSphereSurface(1.0));
-    return base;
-}
-
-const std::shared_ptr<const ParametricBase>& torusBase() {
-    static const auto base = makeParametricBase(makeTorusSurface(2.0, 0.5));
-    return base;
-}
-
+// This file's cases were drawn without the (0, 2) shear and reflect the third column.
 Eigen::Matrix3d randomMatrix(Rng& rng, bool reflect) {
-    Eigen::Matrix3d shear = Eigen::Matrix3d::Identity();
-    shear(0, 1) = uniform(rng, -0.4, 0.4);
-    shear(1, 2) = uniform(rng, -0.4, 0.4);
-    const Eigen::Vector3d scale(uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0));
-    Eigen::Matrix3d m = testing::randomRotation(rng) * scale.asDiagonal() * shear;
-    if (reflect) m.col(2) *= -1.0;
-    return m;
+    return testing::randomMatrix(rng, reflect, {.shearXZ = false, .reflectedColumn = 2});
 }
 
 const char* name(PointLocation l) {

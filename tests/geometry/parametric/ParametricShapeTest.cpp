@@ -1,8 +1,7 @@
 // ParametricShape and ParametricBase: integrals, extremes, mesh, cover, transforms, print, clone.
 #include "geometry/Ellipsoid.hpp"
-#include "geometry/RandomGeometry.hpp"
-#include "geometry/parametric/ParametricPresets.hpp"
 #include "geometry/parametric/ParametricShape.hpp"
+#include "geometry/parametric/ParametricTestSupport.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,31 +13,12 @@
 namespace dropscope {
 namespace {
 
+using testing::randomMatrix;
 using testing::Rng;
+using testing::sphereBase;
+using testing::torusBase;
 using testing::uniform;
 constexpr double kPi = std::numbers::pi;
-
-const std::shared_ptr<const ParametricBase>& sphereBase() {
-    static const auto base = makeParametricBase(makeSphereSurface(1.0));
-    return base;
-}
-
-const std::shared_ptr<const ParametricBase>& torusBase() {
-    static const auto base = makeParametricBase(makeTorusSurface(2.0, 0.5));
-    return base;
-}
-
-// Rotation, anisotropic scaling, shear and (every other case) a reflection.
-Eigen::Matrix3d randomMatrix(Rng& rng, bool reflect) {
-    Eigen::Matrix3d shear = Eigen::Matrix3d::Identity();
-    shear(0, 1) = uniform(rng, -0.4, 0.4);
-    shear(1, 2) = uniform(rng, -0.4, 0.4);
-    shear(0, 2) = uniform(rng, -0.4, 0.4);
-    const Eigen::Vector3d scale(uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0));
-    Eigen::Matrix3d m = testing::randomRotation(rng) * scale.asDiagonal() * shear;
-    if (reflect) m.col(0) *= -1.0;
-    return m;
-}
 
 TEST(ParametricBase, SphereIntegralsAndOrientation) {
     const ParametricBase& base = *sphereBase();

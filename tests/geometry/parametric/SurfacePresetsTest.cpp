@@ -1,6 +1,7 @@
 #include "geometry/Ellipsoid.hpp"
 #include "geometry/parametric/EllipsoidSurface.hpp"
 #include "geometry/parametric/ParametricPresets.hpp"
+#include "geometry/parametric/SurfaceTestSupport.hpp"
 #include "geometry/parametric/TorusSurface.hpp"
 
 #include "geometry/RandomGeometry.hpp"
@@ -19,26 +20,11 @@
 namespace dropscope {
 namespace {
 
+using testing::NumericDerivatives;
 using testing::Rng;
 using testing::uniform;
 
 constexpr double kPi = std::numbers::pi;
-
-// The same surface with ParametricSurface's numeric jet and hessians instead of the analytic ones.
-class NumericDerivatives final : public ParametricSurface {
-public:
-    explicit NumericDerivatives(const ParametricSurface& s) : s_(s) {}
-    ParameterDomain domain() const override { return s_.domain(); }
-    Point point(double u, double v) const override { return s_.point(u, v); }
-    bool periodicInU() const override { return s_.periodicInU(); }
-    bool periodicInV() const override { return s_.periodicInV(); }
-    double characteristicLength() const override { return s_.characteristicLength(); }
-    std::string_view presetName() const override { return s_.presetName(); }
-    std::vector<PresetParameter> presetParameters() const override { return s_.presetParameters(); }
-
-private:
-    const ParametricSurface& s_;
-};
 
 // Largest deviation of the analytic derivatives from the numeric ones at (u, v), relative to `scale`.
 struct DerivativeErrors {

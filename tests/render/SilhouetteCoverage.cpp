@@ -1,0 +1,91 @@
+#include "render/SilhouetteCoverage.hpp"
+
+#include "render/RenderHarness.hpp"
+#include "render/RenderTolerances.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dropscope::test {
+
+std::vector<std::unique_ptr<Shape>> oneShape(std::unique_ptr<Shape> shape) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::move(shape));
+    return shapes;
+}
+
+int coveredPixels(const snapshot::Image& image) {
+    int covered = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) covered += isBlack(image, x, y) ? 0 : 1;
+    }
+    return covered;
+}
+
+ExactCoverage::ExactCoverage(const Shape& shape, const render::Camera& camera, int width, int height)
+    : width_(width), height_(height), hit_(static_cast<std::size_t>(width * height)) {
+    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+    for (int y = 0; y < height_; ++y) {
+        for (int x = 0; x < width_; ++x) {
+            const double t = shape.distanceToSurface(eye, pixelRay(camera, x, y, width_, height_));
+            hit_[index(x, y)] = std::isnan(t) ? 0 : 1;
+        }
+    }
+}
+
+bool ExactCoverage::onBoundary(int x, int y) const {
+    const char here = hit_[index(x, y)];
+    for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height_ - 1); ++ny) {
+        for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width_ - 1); ++nx) {
+            if (hit_[index(nx, ny)] != here) return true;
+        }
+    }
+    return false;
+}
+
+int ExactCoverage::hits() const { return static_cast<int>(std::count(hit_.begin(), hit_.end(), 1)); }
+
+CoverageAgreement compareCoverage(const snapshot::Image& image, const std::function<bool(int, int)>& expected,
+                                  const std::function<bool(int, int)>& inBand,
+                                  const std::function<std::string(int, int)>& note) {
+    constexpr int kReportedMismatches = 5;  // enough to see the pattern, not a page per wrong pixel
+    CoverageAgreement agreement;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const bool covered = !isBlack(image, x, y);
+            const bool mismatch = covered != expected(x, y);
+            if (!inBand(x, y)) {
+                agreement.outsideBand += mismatch ? 1 : 0;
+                EXPECT_FALSE(mismatch && agreement.outsideBand <= kReportedMismatches)
+                    << "pixel (" << x << ", " << y << ") is " << (covered ? "covered" : "background") << ", expected "
+                    << (covered ? "background" : "covered") << note(x, y);
+            } else {
+                ++agreement.band;
+                agreement.bandMismatches += mismatch ? 1 : 0;
+            }
+        }
+    }
+    return agreement;
+}
+
+CoverageAgreement compareCoverage(const snapshot::Image& image, const ExactCoverage& coverage) {
+    if (image.width != coverage.width() || image.height != coverage.height()) {
+        ADD_FAILURE() << "a " << image.width << " x " << image.height << " image against a " << coverage.width()
+                      << " x " << coverage.height() << " coverage";
+        return {};
+    }
+    return compareCoverage(
+        image, [&](int x, int y) { return coverage.hit(x, y); }, [&](int x, int y) { return coverage.onBoundary(x, y); },
+        [](int, int) { return std::string(" (by the shape's exact ray test)"); });
+}
+
+void expectCoversExactly(const snapshot::Image& image, const ExactCoverage& coverage) {
+    const CoverageAgreement agreement = compareCoverage(image, coverage);
+    EXPECT_EQ(agreement.outsideBand, 0) << "pixels away from the silhouette where the drawing and the shape disagree";
+    EXPECT_LE(agreement.bandMismatches, kBandMismatchShare * agreement.band)
+        << "of " << agreement.band << " pixels along the silhouette";
+}
+
+}  // namespace dropscope::test
