@@ -1,6 +1,7 @@
 #include "geometry/GeneralShape.hpp"
 
 #include <cmath>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -28,6 +29,46 @@ std::vector<Eigen::AlignedBox3d> GeneralShape::surfaceCover() const {
     placed.reserve(base.size());
     for (const Eigen::AlignedBox3d& box : base) placed.push_back(transform_.applyToBox(box));
     return placed;
+}
+
+namespace {
+
+// More numbers than this in one parameter are summarised when printed.
+constexpr std::size_t kPrintedValues = 12;
+
+// The values of one preset parameter as nested brackets following its extents ("1", "[1, 2]", ...).
+void printValues(std::ostream& os, const PresetParameter& parameter, std::size_t level, std::size_t& next) {
+    if (level == parameter.extents.size()) {
+        os << parameter.values[next++];
+        return;
+    }
+    os << '[';
+    for (std::size_t i = 0; i < parameter.extents[level]; ++i) {
+        if (i > 0) os << ", ";
+        printValues(os, parameter, level + 1, next);
+    }
+    os << ']';
+}
+
+}  // namespace
+
+void GeneralShape::print(std::ostream& os) const {
+    os << typeName() << ' ' << presetName() << " {";
+    const std::vector<PresetParameter> parameters = presetParameters();
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        os << (i ? ", " : "") << parameters[i].key << ": ";
+        if (parameters[i].values.size() > kPrintedValues) {
+            os << '[' << parameters[i].values.size() << " numbers]";
+            continue;
+        }
+        std::size_t next = 0;
+        printValues(os, parameters[i], 0, next);
+    }
+    const Eigen::Matrix3d& m = transform_.matrix();
+    os << "} M=[";
+    for (int i = 0; i < 3; ++i) os << (i ? ", [" : "[") << m(i, 0) << ", " << m(i, 1) << ", " << m(i, 2) << ']';
+    os << "] r0=";
+    printPoint(os, transform_.translation());
 }
 
 std::string shapeTypeLabel(const Shape& shape) {

@@ -39,6 +39,10 @@ public:
     // The same base under another transformation (the base is shared, not copied); medium kept.
     virtual std::unique_ptr<GeneralShape> withTransform(const AffineTransform& transform) const = 0;
 
+    // "parametric torus {major_radius: 2, minor_radius: 0.5} M=[[1, 0, 0], ...] r0=(1, 2, 3)"; a parameter
+    // of more than kPrintedValues numbers (Bezier patches) is summarised as "[N numbers]".
+    void print(std::ostream& os) const final;
+
     // The base's tessellation, placed by the transform.
     SurfaceMesh mesh() const;
     // Axis-aligned boxes that together contain the whole surface (conservative overlap tests).

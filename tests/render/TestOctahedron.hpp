@@ -86,7 +86,6 @@ public:
         return transform().applyToNormal(q.array().sign().matrix());
     }
 
-    void print(std::ostream& os) const override { os << "test octahedron " << base_->size; }
     std::unique_ptr<Shape> clone() const override { return withTransform(transform()); }
     double surfaceBand() const override { return kBandShare * base_->size; }
 

@@ -2,36 +2,21 @@
 
 #include "geometry/Tolerance.hpp"
 #include "geometry/implicit/ConvexBody.hpp"
+#include "geometry/implicit/ConvexRaySearch.hpp"
 #include "geometry/implicit/ImplicitTolerance.hpp"
 #include "geometry/implicit/RayRootFinder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
+#include <utility>
 
 namespace dropscope {
 
-namespace {
-
 using namespace tolerance::implicit;
-
-// The values of one preset parameter as nested brackets following its extents ("1" , "[1, 2]", ...).
-void printValues(std::ostream& os, const PresetParameter& parameter, std::size_t level, std::size_t& next) {
-    if (level == parameter.extents.size()) {
-        os << parameter.values[next++];
-        return;
-    }
-    os << '[';
-    for (std::size_t i = 0; i < parameter.extents[level]; ++i) {
-        if (i > 0) os << ", ";
-        printValues(os, parameter, level + 1, next);
-    }
-    os << ']';
-}
-
-}  // namespace
 
 std::shared_ptr<const ImplicitBase> makeImplicitBase(std::shared_ptr<const ImplicitFunction> function) {
     return std::make_shared<const ImplicitBase>(std::move(function));
@@ -40,6 +25,7 @@ std::shared_ptr<const ImplicitBase> makeImplicitBase(std::shared_ptr<const Impli
 ImplicitShape::ImplicitShape(std::shared_ptr<const ImplicitBase> base, const AffineTransform& transform)
     : GeneralShape(transform), base_(std::move(base)), derived_(std::make_shared<Derived>()) {
     if (!base_) throw std::invalid_argument("implicit base must not be null");
+    convex_ = function().convexCentre().has_value();
     // The smallest feature scaled by the smallest singular value of M; coordinates from the placed bounds.
     const Eigen::AlignedBox3d placed = transform.applyToBox(base_->bounds());
     const double coordinates = std::max(placed.min().cwiseAbs().maxCoeff(), placed.max().cwiseAbs().maxCoeff());
@@ -117,17 +103,63 @@ double ImplicitShape::distanceToSurface(const Point& p, const Direction& d) cons
     const auto range = clipToBox(base_->bounds(), origin, direction);
     const double noCrossing = start == PointLocation::OnSurface ? 0.0 : kNaN;
     if (!range || range->second <= 0.0) return noCrossing;
+    if (convex_) {
+        if (const std::optional<double> t = convexDistance(start, origin, direction, *range)) return *t;
+    }
+    return lipschitzDistance(start, origin, direction, *range);
+}
 
+std::optional<double> ImplicitShape::convexDistance(PointLocation start, const Point& origin,
+                                                    const Eigen::Vector3d& direction,
+                                                    const std::pair<double, double>& range) const {
+    // The same answers as lipschitzDistance, from the convexity of g(t) = f(origin + t direction): one
+    // interval inside, so from outside the entry, from inside the exit, from the surface the far side's
+    // exit when entering and 0 when leaving (no re-entry).
+    using Status = ConvexRayResult::Status;
+    const ImplicitFunction& f = function();
+    const double tolerance = kRefineBands * band_;
+    const double tEnd = range.second;  // g > 0 there: the box is padded
+    const auto answer = [](const ConvexRayResult& r, double none) -> std::optional<double> {
+        if (r.status == Status::Failed) return std::nullopt;
+        return r.status == Status::Found ? r.t : none;
+    };
+    if (start == PointLocation::Outside) {
+        return answer(convexEntry(f, origin, direction, std::max(0.0, range.first), tEnd, band_, tolerance),
+                      std::numeric_limits<double>::quiet_NaN());
+    }
+    if (start == PointLocation::Inside) {
+        const ConvexRayResult exit = convexExit(f, origin, direction, 0.0, tEnd, tolerance);
+        if (exit.status != Status::Found) return std::nullopt;  // from inside there is an exit: rounding
+        return exit.t;
+    }
+
+    // On the surface: g' >= grad f . direction >= 0 (a subgradient bounds the directional derivative)
+    // means g never decreases again, so nothing lies ahead but the ray's own crossing.
+    if (f.gradient(origin).dot(direction) >= 0.0) return 0.0;
+    const double own = kSelfCrossingBands * band_;  // crossings up to here are the ray's own
+    if (own >= tEnd) return 0.0;
+    if (!(f.value(origin + own * direction) < 0.0)) {
+        // Not inside yet (p lay just outside, the ray nearly tangent): the body may still lie ahead, and
+        // count only if the ray passes through it.
+        const ConvexRayResult entry = convexEntry(f, origin, direction, own, tEnd, band_, tolerance);
+        if (entry.status != Status::Found) return answer(entry, 0.0);
+    }
+    return answer(convexExit(f, origin, direction, own, tEnd, tolerance), 0.0);
+}
+
+double ImplicitShape::lipschitzDistance(PointLocation start, const Point& origin, const Eigen::Vector3d& direction,
+                                        const std::pair<double, double>& range) const {
     // Which crossing answers: from inside the exit, from outside the entry; from the surface, the exit
     // on the far side when the ray enters, a re-entry when it leaves (or is tangent), skipping the
     // crossing at p itself.
+    const double noCrossing = start == PointLocation::OnSurface ? 0.0 : std::numeric_limits<double>::quiet_NaN();
     bool wantEntering = start == PointLocation::Outside;
     double ownCrossing = -1.0;
     if (start == PointLocation::OnSurface) {
         wantEntering = function().gradient(origin).dot(direction) >= 0.0;
         ownCrossing = kSelfCrossingBands * band_;
     }
-    RayRootFinder finder(function(), origin, direction, std::max(0.0, range->first), range->second,
+    RayRootFinder finder(function(), origin, direction, std::max(0.0, range.first), range.second,
                          kMinStepBands * band_, kRefineBands * band_);
     while (const auto crossing = finder.next()) {
         if (crossing->t <= ownCrossing || crossing->entering != wantEntering) continue;
@@ -146,20 +178,6 @@ Direction ImplicitShape::normal(const Point& p) const {
     return Direction(g);  // invalid when the gradient vanishes
 }
 
-void ImplicitShape::print(std::ostream& os) const {
-    os << "implicit " << presetName() << " {";
-    const std::vector<PresetParameter> parameters = presetParameters();
-    for (std::size_t i = 0; i < parameters.size(); ++i) {
-        os << (i ? ", " : "") << parameters[i].key << ": ";
-        std::size_t next = 0;
-        printValues(os, parameters[i], 0, next);
-    }
-    const Eigen::Matrix3d& m = transform().matrix();
-    os << "} M=[";
-    for (int i = 0; i < 3; ++i) os << (i ? ", [" : "[") << m(i, 0) << ", " << m(i, 1) << ", " << m(i, 2) << ']';
-    os << "] r0=";
-    printPoint(os, transform().translation());
-}
 
 std::unique_ptr<GeneralShape> ImplicitShape::withTransform(const AffineTransform& transform) const {
     auto shape = std::make_unique<ImplicitShape>(base_, transform);

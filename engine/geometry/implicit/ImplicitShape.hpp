@@ -6,6 +6,8 @@
 #include <array>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <utility>
 
 namespace dropscope {
 
@@ -14,8 +16,10 @@ std::shared_ptr<const ImplicitBase> makeImplicitBase(std::shared_ptr<const Impli
 
 // The implicit surface f(M^-1 (r - r0)) = 0 (seed 000 Appendix A, seed 003 1.2.4): inside where < 0.
 // Distances follow the general-shape semantics (the nearest crossing; a graze is no hit; from the
-// surface, the next crossing beyond the ray's own, else 0), found by RayRootFinder in the base frame
-// along M^-1 d, whose parameter is the world distance.
+// surface, the next crossing beyond the ray's own, else 0), found in the base frame along M^-1 d, whose
+// parameter is the world distance: by the monotone Newton searches of ConvexRaySearch.hpp when the
+// function is convex (a few dozen evaluations even along a flat face), else (or should they fail) by
+// RayRootFinder's Lipschitz steps.
 //
 // locatePoint deviates from the seed's convex two-ray test and from the crossing-parity count of the
 // parametric shapes: the sign of f itself says inside or outside, exactly, for any shape; OnSurface
@@ -56,7 +60,6 @@ public:
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
     // One line: "implicit superellipsoid {semi_axes: [a, b, c], exponents: [e1, e2]} M=[[...], ...] r0=(x, y, z)".
-    void print(std::ostream& os) const override;
     std::unique_ptr<Shape> clone() const override { return std::make_unique<ImplicitShape>(*this); }
     double surfaceBand() const override { return band_; }
 
@@ -69,6 +72,13 @@ protected:
     const std::vector<Eigen::AlignedBox3d>& baseSurfaceCover() const override { return base_->surfaceCover(); }
 
 private:
+    // distanceToSurface of a point located `start`, in the base frame, over the ray's parameter range in
+    // the padded bounds: by the convex searches (nothing when they fail), and by Lipschitz stepping.
+    std::optional<double> convexDistance(PointLocation start, const Point& origin, const Eigen::Vector3d& direction,
+                                         const std::pair<double, double>& range) const;
+    double lipschitzDistance(PointLocation start, const Point& origin, const Eigen::Vector3d& direction,
+                             const std::pair<double, double>& range) const;
+
     // Computed on first use and shared by clones (same base, same transform).
     struct Derived {
         std::once_flag extremesOnce;
@@ -80,6 +90,7 @@ private:
 
     std::shared_ptr<const ImplicitBase> base_;
     double band_;
+    bool convex_;  // the function is convex (ImplicitFunction::convexCentre)
     std::shared_ptr<Derived> derived_;
 };
 

@@ -39,6 +39,18 @@ inline constexpr int kMaxRefineIterations = 200;
 // 1.6 is their recommended value, saving ~30-50% of evaluations on oblique approaches.
 inline constexpr double kOverRelaxation = 1.6;
 
+// Convex ray searches (ConvexRaySearch.hpp): Newton converges quadratically at a transversal crossing
+// but only linearly, by 1 - 1/k per step, at a tangent (k = 2) or at the contact of order k ~ 2/e with a
+// superellipsoid's flat face (k = 20 at e = 0.1). An iteration whose Newton step is more than this
+// fraction of the previous one is slow and also bisects the interval left, so every iteration at least
+// halves either the step or that interval: bisection's own rate.
+inline constexpr double kConvexSlowProgress = 0.5;
+// Each iteration halves a step or interval from the bounds' size down to ~kRefineBands bands (1e-12 of
+// the size): ~2 x 45 iterations at the very worst; measured at most ~70 samples (141 evaluations) per
+// query. The cap only guards a function that is not convex after all (or inconsistent gradients); the
+// search then falls back to RayRootFinder.
+inline constexpr int kConvexRayIterations = 200;
+
 // A ray starting on the surface ignores crossings within this many bands of its origin: they are the
 // origin's own crossing, displaced by the band and rounding.
 inline constexpr double kSelfCrossingBands = 8.0;

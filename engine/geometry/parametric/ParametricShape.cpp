@@ -49,12 +49,6 @@ ExtremeRange placedRange(const ParametricBase& base, const AffineTransform& tran
     return {range.min + r0, range.max + r0};
 }
 
-void printMatrix(std::ostream& os, const Eigen::Matrix3d& m) {
-    os << '[';
-    for (int i = 0; i < 3; ++i) os << (i ? ", [" : "[") << m(i, 0) << ", " << m(i, 1) << ", " << m(i, 2) << ']';
-    os << ']';
-}
-
 }  // namespace
 
 struct ParametricShape::AreaCache {
@@ -151,27 +145,6 @@ Direction ParametricShape::normal(const Point& p) const {
     return transform().applyToNormal(baseNormal.vector());
 }
 
-void ParametricShape::print(std::ostream& os) const {
-    os << "parametric " << presetName() << " {";
-    bool first = true;
-    for (const PresetParameter& parameter : presetParameters()) {
-        os << (first ? "" : ", ") << parameter.key << '=';
-        first = false;
-        if (parameter.extents.empty() && parameter.values.size() == 1) {
-            os << parameter.values.front();
-        } else if (parameter.extents.size() == 1 && parameter.values.size() <= 4) {
-            os << '(';
-            for (std::size_t i = 0; i < parameter.values.size(); ++i) os << (i ? ", " : "") << parameter.values[i];
-            os << ')';
-        } else {
-            os << '[' << parameter.values.size() << " values]";
-        }
-    }
-    os << "} M=";
-    printMatrix(os, transform().matrix());
-    os << " r0=";
-    printPoint(os, transform().translation());
-}
 
 std::unique_ptr<GeneralShape> ParametricShape::withTransform(const AffineTransform& transform) const {
     auto shape = std::make_unique<ParametricShape>(base_, transform);

@@ -42,7 +42,6 @@ public:
     PointLocation locatePoint(const Point& p) const override;
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
-    void print(std::ostream& os) const override;
     std::unique_ptr<Shape> clone() const override { return std::make_unique<ParametricShape>(*this); }
     double surfaceBand() const override { return band_; }
 

@@ -13,32 +13,6 @@
 namespace dropscope::testing {
 namespace {
 
-// Forwards to a function and counts its value and gradient evaluations.
-class CountingFunction final : public ImplicitFunction {
-public:
-    explicit CountingFunction(std::shared_ptr<const ImplicitFunction> f) : f_(std::move(f)) {}
-    double value(const Point& r) const override {
-        ++evaluations;
-        return f_->value(r);
-    }
-    Eigen::Vector3d gradient(const Point& r) const override {
-        ++evaluations;
-        return f_->gradient(r);
-    }
-    double lipschitzBound() const override { return f_->lipschitzBound(); }
-    double lipschitzAlong(const Eigen::Vector3d& d) const override { return f_->lipschitzAlong(d); }
-    std::optional<Point> convexCentre() const override { return f_->convexCentre(); }
-    Eigen::AlignedBox3d bounds() const override { return f_->bounds(); }
-    double characteristicLength() const override { return f_->characteristicLength(); }
-    std::string_view presetName() const override { return f_->presetName(); }
-    std::vector<PresetParameter> presetParameters() const override { return f_->presetParameters(); }
-
-    mutable long evaluations = 0;
-
-private:
-    std::shared_ptr<const ImplicitFunction> f_;
-};
-
 TEST(ConvexBody, RadialExitIsTheGaugeRoot) {
     // For a gauge F, the exit along u is 1 / F(u) exactly; Newton from outside needs one or two steps.
     const Superellipsoid f(Eigen::Vector3d(1.0, 0.7, 0.5), Eigen::Vector2d(0.3, 1.7));

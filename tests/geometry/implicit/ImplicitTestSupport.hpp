@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace dropscope::testing {
 
@@ -30,6 +32,38 @@ inline Ellipsoid placedEllipsoid(const Eigen::Vector3d& semiAxes, const AffineTr
     const Eigen::Matrix3d q = t.inverseMatrix().transpose() * inverseSquares * t.inverseMatrix();
     return Ellipsoid::fromMatrix(t.translation(), 0.5 * (q + q.transpose()));
 }
+
+// Forwards to a function and counts its value and gradient evaluations (single-threaded use). With
+// `convex` false it hides convexCentre(), so shapes built on it take the general (Lipschitz) routes:
+// the reference the convex ones are checked against.
+class CountingFunction final : public ImplicitFunction {
+public:
+    explicit CountingFunction(std::shared_ptr<const ImplicitFunction> f, bool convex = true)
+        : f_(std::move(f)), convex_(convex) {}
+    double value(const Point& r) const override {
+        ++evaluations;
+        return f_->value(r);
+    }
+    Eigen::Vector3d gradient(const Point& r) const override {
+        ++evaluations;
+        return f_->gradient(r);
+    }
+    double lipschitzBound() const override { return f_->lipschitzBound(); }
+    double lipschitzAlong(const Eigen::Vector3d& d) const override { return f_->lipschitzAlong(d); }
+    std::optional<Point> convexCentre() const override {
+        return convex_ ? f_->convexCentre() : std::nullopt;
+    }
+    Eigen::AlignedBox3d bounds() const override { return f_->bounds(); }
+    double characteristicLength() const override { return f_->characteristicLength(); }
+    std::string_view presetName() const override { return f_->presetName(); }
+    std::vector<PresetParameter> presetParameters() const override { return f_->presetParameters(); }
+
+    mutable long evaluations = 0;
+
+private:
+    std::shared_ptr<const ImplicitFunction> f_;
+    bool convex_;
+};
 
 // Euler's beta function.
 inline double beta(double x, double y) { return std::exp(std::lgamma(x) + std::lgamma(y) - std::lgamma(x + y)); }

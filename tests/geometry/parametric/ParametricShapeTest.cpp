@@ -158,7 +158,7 @@ TEST(ParametricShape, PrintCloneAndWithTransform) {
     std::ostringstream os;
     torus.print(os);
     EXPECT_EQ(os.str(),
-              "parametric torus {major_radius=2, minor_radius=0.5} M=[[1, 0, 0], [0, 1, 0], [0, 0, 1]] r0=(1, 2, 3)");
+              "parametric torus {major_radius: 2, minor_radius: 0.5} M=[[1, 0, 0], [0, 1, 0], [0, 0, 1]] r0=(1, 2, 3)");
     EXPECT_EQ(torus.kind(), ShapeKind::Parametric);
     EXPECT_EQ(torus.typeName(), "parametric");
     EXPECT_EQ(torus.presetName(), "torus");
