@@ -122,15 +122,6 @@ TEST(Blob, BoundsContainTheSurfaceAndLipschitzBoundHolds) {
     EXPECT_TRUE(f.gradient(Point(0, 0, 0)).allFinite());
 }
 
-void expectMessage(const std::function<void()>& build, const std::string& fragment) {
-    try {
-        build();
-        ADD_FAILURE() << "no exception, expected: " << fragment;
-    } catch (const std::invalid_argument& error) {
-        EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos) << error.what();
-    }
-}
-
 TEST(Blob, BadParametersAreRejected) {
     const Point a(0, 0, 0);
     const Point b(1, 0, 0);

@@ -7,7 +7,12 @@
 
 #include "geometry/RandomGeometry.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -71,6 +76,16 @@ inline double beta(double x, double y) { return std::exp(std::lgamma(x) + std::l
 // Closed-form superellipsoid volume 2 a b c e1 e2 B(e1/2 + 1, e1) B(e2/2, e2/2).
 inline double superellipsoidVolume(const Eigen::Vector3d& s, const Eigen::Vector2d& e) {
     return 2.0 * s.prod() * e[0] * e[1] * beta(e[0] / 2.0 + 1.0, e[0]) * beta(e[1] / 2.0, e[1] / 2.0);
+}
+
+// `build` throws std::invalid_argument with `fragment` in its message.
+inline void expectMessage(const std::function<void()>& build, const std::string& fragment) {
+    try {
+        build();
+        ADD_FAILURE() << "no exception, expected: " << fragment;
+    } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos) << error.what();
+    }
 }
 
 }  // namespace dropscope::testing

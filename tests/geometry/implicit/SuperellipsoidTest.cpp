@@ -103,15 +103,6 @@ TEST(Superellipsoid, GradientMatchesFiniteDifferencesAndLipschitzBoundHolds) {
     }
 }
 
-void expectMessage(const std::function<void()>& build, const std::string& fragment) {
-    try {
-        build();
-        ADD_FAILURE() << "no exception, expected: " << fragment;
-    } catch (const std::invalid_argument& error) {
-        EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos) << error.what();
-    }
-}
-
 TEST(Superellipsoid, BadParametersAreRejectedWithTheReason) {
     const Eigen::Vector3d ok(1, 1, 1);
     expectMessage([&] { makeSuperellipsoid(Eigen::Vector3d(1, 0, 1), Eigen::Vector2d(1, 1)); }, "semi_axes");
