@@ -3,6 +3,8 @@
 #include <limits>
 
 // Every numerical tolerance of the geometry, in one place. docs/geometry.md explains the policy.
+// The parametric and implicit families' own tolerances (cells, Newton, quadrature, root finding) are in
+// parametric/SurfaceTolerance.hpp, parametric/ParametricShapeTolerance.hpp and implicit/ImplicitTolerance.hpp.
 namespace dropscope::tolerance {
 
 // Half-width of the band around a surface inside which a point counts as "on the surface",
