@@ -205,7 +205,8 @@ TEST(MeshCache, AMovedShapeIsDrawnAtItsNewPlaceFromTheSameGeometry) {
     EXPECT_FALSE(covered(after, Point(-1.5, 0.0, 0.0)));
     EXPECT_TRUE(covered(after, Point(1.5, 0.0, 0.0)));
     EXPECT_EQ(cache.made(), 1u) << "moved: the same geometry";
-    EXPECT_EQ(first.baseMeshCalls(), meshCalls) << "the mesh was placed again";
+    // `first` is gone; the moved shape shares its base, which counts the calls.
+    EXPECT_EQ(static_cast<const TestOctahedron&>(*shapes[0]).baseMeshCalls(), meshCalls) << "the mesh was placed again";
     EXPECT_EQ(cache.size(), 1u);
 
     // Two shapes of one base and matrix share a geometry; another matrix is another one.
