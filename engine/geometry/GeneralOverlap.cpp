@@ -27,9 +27,7 @@ bool mayMeetBox(const Shape& shape, const Eigen::AlignedBox3d& box) {
         case ShapeKind::Implicit: break;
     }
     const auto& general = static_cast<const GeneralShape&>(shape);
-    for (const Eigen::AlignedBox3d& cell : general.surfaceCover()) {
-        if (cell.intersects(box)) return true;
-    }
+    if (general.anyCoverBox([&](const Eigen::AlignedBox3d& cell) { return cell.intersects(box); })) return true;
     // No surface in the box: it is wholly inside or wholly outside.
     return general.locatePoint(box.center()) != PointLocation::Outside;
 }
@@ -43,11 +41,11 @@ Eigen::AlignedBox3d solidCell(const Eigen::AlignedBox3d& cell, double band) {
 // Some cover cell of `general` may meet `other`.
 bool coverMeets(const GeneralShape& general, const Shape& other) {
     const Eigen::AlignedBox3d reach = other.bounds();
-    for (const Eigen::AlignedBox3d& cell : general.surfaceCover()) {
-        const Eigen::AlignedBox3d solid = solidCell(cell, general.surfaceBand());
-        if (solid.intersects(reach) && mayMeetBox(other, solid)) return true;
-    }
-    return false;
+    const double band = general.surfaceBand();
+    return general.anyCoverBox([&](const Eigen::AlignedBox3d& cell) {
+        const Eigen::AlignedBox3d solid = solidCell(cell, band);
+        return solid.intersects(reach) && mayMeetBox(other, solid);
+    });
 }
 
 }  // namespace

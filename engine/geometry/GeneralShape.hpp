@@ -47,6 +47,15 @@ public:
     SurfaceMesh mesh() const;
     // Axis-aligned boxes that together contain the whole surface (conservative overlap tests).
     std::vector<Eigen::AlignedBox3d> surfaceCover() const;
+    // Whether `test` holds for some box of the surface cover, each placed as it is tested: the overlap
+    // tests' inner loop, which must not build the whole placed cover once per call.
+    template <class Test>
+    bool anyCoverBox(Test&& test) const {
+        for (const Eigen::AlignedBox3d& box : baseSurfaceCover()) {
+            if (test(transform_.applyToBox(box))) return true;
+        }
+        return false;
+    }
     // A point on the surface (a vertex of the mesh).
     Point surfacePoint() const;
 

@@ -12,6 +12,7 @@
 #include <charconv>
 #include <filesystem>
 #include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -167,36 +168,33 @@ AffineTransform readOptionalTransform(const JsonReader& json) {
     return transform ? readTransform(*transform) : AffineTransform();
 }
 
-}  // namespace
-
-std::unique_ptr<Shape> readParametricShape(const JsonReader& json, BaseCache& cache) {
-    const std::string preset = json.member("preset").string();
-    const std::shared_ptr<const ParametricSurface> surface = readSurface(json, preset);
+// A `Placed` shape on the base made from `source` (once per preset and parameters: the cache), placed by
+// the file's transform and checked usable.
+template <class Placed, class Source, class MakeBase>
+std::unique_ptr<Shape> placeOnBase(const JsonReader& json, BaseCache& cache, std::string_view family,
+                                   const std::string& preset, const std::shared_ptr<const Source>& source,
+                                   MakeBase makeBase) {
     const AffineTransform transform = readOptionalTransform(json);
-    const std::string key = cacheKey("parametric", preset, parameterNumbers(surface->presetParameters()));
-    const auto base = cached<ParametricBase>(cache, key, [&] {
-        return json.construct([&] { return makeParametricBase(surface); });
-    });
+    const std::string key = cacheKey(family, preset, parameterNumbers(source->presetParameters()));
+    using Base = std::remove_const_t<typename decltype(makeBase(source))::element_type>;
+    const auto base = cached<Base>(cache, key, [&] { return json.construct([&] { return makeBase(source); }); });
     return json.construct([&] {
-        auto shape = std::make_unique<ParametricShape>(base, transform);
+        auto shape = std::make_unique<Placed>(base, transform);
         shape->checkUsable();
         return shape;
     });
 }
 
+}  // namespace
+
+std::unique_ptr<Shape> readParametricShape(const JsonReader& json, BaseCache& cache) {
+    const std::string preset = json.member("preset").string();
+    return placeOnBase<ParametricShape>(json, cache, "parametric", preset, readSurface(json, preset), makeParametricBase);
+}
+
 std::unique_ptr<Shape> readImplicitShape(const JsonReader& json, BaseCache& cache) {
     const std::string preset = json.member("preset").string();
-    const std::shared_ptr<const ImplicitFunction> function = readFunction(json, preset);
-    const AffineTransform transform = readOptionalTransform(json);
-    const std::string key = cacheKey("implicit", preset, parameterNumbers(function->presetParameters()));
-    const auto base = cached<ImplicitBase>(cache, key, [&] {
-        return json.construct([&] { return makeImplicitBase(function); });
-    });
-    return json.construct([&] {
-        auto shape = std::make_unique<ImplicitShape>(base, transform);
-        shape->checkUsable();
-        return shape;
-    });
+    return placeOnBase<ImplicitShape>(json, cache, "implicit", preset, readFunction(json, preset), makeImplicitBase);
 }
 
 }  // namespace dropscope
