@@ -16,11 +16,12 @@ inline std::string cloudSceneText(std::size_t droplets, double halfSide) {
     const std::string h = std::to_string(halfSide);
     return R"({"dropscope": 1, "unit": "mm", "wavelength_nm": 532, "ambient": "air",
   "media": {"air": {"n": 1.000278}, "water": {"n": 1.3337, "kappa": 1.9e-9}},
-  "generators": [{"type": "droplet_cloud", "region": {"min": [-)" + h + ", -" + h + ", -" + h + R"(], "max": [)" +
-           h + ", " + h + ", " + h + R"(]}, "count": )" + std::to_string(droplets) + R"(,
+  "generators": [{"type": "droplet_cloud", "region": {"min": [-)" +
+           h + ", -" + h + ", -" + h + R"(], "max": [)" + h + ", " + h + ", " + h + R"(]}, "count": )" +
+           std::to_string(droplets) + R"(,
     "radius": {"distribution": "lognormal", "median": 0.1, "sigma": 0.35, "max": 0.5}, "medium": "water", "seed": 7}],
-  "sources": [{"type": "beam", "origin": [0, 0, -)" + std::to_string(2.0 * halfSide) +
-           R"(], "direction": [0, 0, 1], "radius": )" + h + R"(}],
+  "sources": [{"type": "beam", "origin": [0, 0, -)" +
+           std::to_string(2.0 * halfSide) + R"(], "direction": [0, 0, 1], "radius": )" + h + R"(}],
   "octree": {"max_depth": 10, "max_shapes_per_leaf": 16}})";
 }
 

@@ -106,13 +106,23 @@ int main(int argc, char** argv) {
     };
     std::vector<Case> cases;
     cases.push_back({"sphere (class Sphere)", std::make_unique<Sphere>(sphere)});
-    cases.push_back({"parametric sphere", std::make_unique<ParametricShape>(makeParametricBase(makeSphereSurface(1.0)), none)});
-    cases.push_back({"parametric sphere, scaled+rotated", std::make_unique<ParametricShape>(makeParametricBase(makeSphereSurface(1.0)), tilted)});
-    cases.push_back({"parametric torus R=0.7 r=0.3", std::make_unique<ParametricShape>(makeParametricBase(makeTorusSurface(0.7, 0.3)), none)});
+    cases.push_back(
+        {"parametric sphere", std::make_unique<ParametricShape>(makeParametricBase(makeSphereSurface(1.0)), none)});
+    cases.push_back({"parametric sphere, scaled+rotated",
+                     std::make_unique<ParametricShape>(makeParametricBase(makeSphereSurface(1.0)), tilted)});
+    cases.push_back({"parametric torus R=0.7 r=0.3",
+                     std::make_unique<ParametricShape>(makeParametricBase(makeTorusSurface(0.7, 0.3)), none)});
     cases.push_back({"parametric bezier droplet", flattenedDroplet()});
-    cases.push_back({"implicit superellipsoid e=1", std::make_unique<ImplicitShape>(makeImplicitBase(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(1, 1))), none)});
-    cases.push_back({"implicit superellipsoid e=0.3", std::make_unique<ImplicitShape>(makeImplicitBase(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(0.3, 0.3))), none)});
-    cases.push_back({"implicit blob of 2", std::make_unique<ImplicitShape>(makeImplicitBase(makeBlob({Point(-0.4, 0, 0), Point(0.4, 0, 0)}, {0.6, 0.6}, 0.1)), none)});
+    cases.push_back({"implicit superellipsoid e=1",
+                     std::make_unique<ImplicitShape>(
+                         makeImplicitBase(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(1, 1))), none)});
+    cases.push_back(
+        {"implicit superellipsoid e=0.3",
+         std::make_unique<ImplicitShape>(
+             makeImplicitBase(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(0.3, 0.3))), none)});
+    cases.push_back({"implicit blob of 2",
+                     std::make_unique<ImplicitShape>(
+                         makeImplicitBase(makeBlob({Point(-0.4, 0, 0), Point(0.4, 0, 0)}, {0.6, 0.6}, 0.1)), none)});
 
     std::printf("distance queries on %zu rays, %.2f s per shape\n\n", rays.size(), seconds);
     std::printf("%-36s %14s %10s %8s\n", "shape", "queries/s", "vs sphere", "hits");
@@ -135,12 +145,16 @@ int main(int argc, char** argv) {
     // An implicit base computes its parts when first asked: ask for all of them.
     const auto everything = [](std::shared_ptr<const ImplicitFunction> f) {
         const ImplicitShape shape(makeImplicitBase(std::move(f)), AffineTransform());
-        return shape.volume() + shape.surfaceArea() + shape.xMax() + static_cast<double>(shape.mesh().vertices.size() +
-                                                                                      shape.surfaceCover().size());
+        return shape.volume() + shape.surfaceArea() + shape.xMax() +
+               static_cast<double>(shape.mesh().vertices.size() + shape.surfaceCover().size());
     };
-    timeBase("implicit superellipsoid e=1", [&] { return everything(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(1, 1))); });
-    timeBase("implicit superellipsoid e=0.3", [&] { return everything(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(0.3, 0.3))); });
-    timeBase("implicit blob of 2", [&] { return everything(makeBlob({Point(-0.4, 0, 0), Point(0.4, 0, 0)}, {0.6, 0.6}, 0.1)); });
+    timeBase("implicit superellipsoid e=1",
+             [&] { return everything(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(1, 1))); });
+    timeBase("implicit superellipsoid e=0.3",
+             [&] { return everything(makeSuperellipsoid(Eigen::Vector3d::Ones(), Eigen::Vector2d(0.3, 0.3))); });
+    timeBase("implicit blob of 2", [&] {
+        return everything(makeBlob({Point(-0.4, 0, 0), Point(0.4, 0, 0)}, {0.6, 0.6}, 0.1));
+    });
 
     // Same rays, same answers: the general unit spheres against the Sphere class.
     const double tolerance = 1e-9;

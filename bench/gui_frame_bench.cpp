@@ -45,11 +45,16 @@ Options parse(int argc, char** argv) {
     Options options;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
-        if (flag == "--frames") options.frames = static_cast<int>(parseCount(flag, argv[i + 1]));
-        else if (flag == "--droplets") options.droplets = parseCount(flag, argv[i + 1]);
-        else if (flag == "--paths") options.paths = parseCount(flag, argv[i + 1]);
-        else if (flag == "--png") options.png = argv[i + 1];
-        else throw std::invalid_argument("unknown option " + flag);
+        if (flag == "--frames")
+            options.frames = static_cast<int>(parseCount(flag, argv[i + 1]));
+        else if (flag == "--droplets")
+            options.droplets = parseCount(flag, argv[i + 1]);
+        else if (flag == "--paths")
+            options.paths = parseCount(flag, argv[i + 1]);
+        else if (flag == "--png")
+            options.png = argv[i + 1];
+        else
+            throw std::invalid_argument("unknown option " + flag);
     }
     return options;
 }
@@ -134,8 +139,8 @@ int run(const Options& options) {
                 steady.minimum(), steady.median() / reference3d);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, layers rebuilt every frame", rebuild.median(), rebuild.minimum(),
                 rebuild.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "reference: 3D view alone (ViewportScene)", reference3d, alone.minimum(),
-                1.0);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "reference: 3D view alone (ViewportScene)", reference3d,
+                alone.minimum(), 1.0);
     std::printf("steady: %.1f frames/s\n", 1e3 / steady.median());
     // The ray tree (R) is traced on the UI thread from an optical scene built from the document.
     Stopwatch rayTree;

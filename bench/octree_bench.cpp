@@ -6,8 +6,8 @@
 // Run: build/bench/octree_bench [--min-n 1e3] [--max-n 1e6] [--rays 1e6] [--brute-rays K]
 //                               [--brute-max-n 1e4] [--repeat 1] [--seed 1] [--max-depth D] [--max-leaf K]
 #include "geometry/Sphere.hpp"
-#include "octree/EmbreePeers.hpp"
 #include "octree/CountArgument.hpp"
+#include "octree/EmbreePeers.hpp"
 #include "octree/Measure.hpp"
 #include "octree/Rays.hpp"
 #include "octree/SphereCloud.hpp"
@@ -63,23 +63,34 @@ Options parseOptions(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
         if (flag == "--help" || flag == "-h") {
-            std::cout << "octree_bench [--min-n 1e3] [--max-n 1e6] [--rays 1e6] [--brute-rays K (default min(rays, 1e8/N))]\n"
-                         "             [--brute-max-n 1e4] [--repeat 1 (best of)] [--seed 1]\n"
-                         "             [--max-depth D] [--max-leaf K] (octree settings; engine defaults otherwise)\n";
+            std::cout
+                << "octree_bench [--min-n 1e3] [--max-n 1e6] [--rays 1e6] [--brute-rays K (default min(rays, 1e8/N))]\n"
+                   "             [--brute-max-n 1e4] [--repeat 1 (best of)] [--seed 1]\n"
+                   "             [--max-depth D] [--max-leaf K] (octree settings; engine defaults otherwise)\n";
             std::exit(0);
         }
         if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
         const char* value = argv[++i];
-        if (flag == "--min-n") options.minCount = parseCount(flag, value);
-        else if (flag == "--max-n") options.maxCount = parseCount(flag, value);
-        else if (flag == "--rays") options.rays = parseCount(flag, value);
-        else if (flag == "--brute-rays") options.bruteRays = parseCount(flag, value);
-        else if (flag == "--brute-max-n") options.bruteMaxCount = parseCount(flag, value);
-        else if (flag == "--repeat") options.repeat = std::max(1, static_cast<int>(parseCount(flag, value)));
-        else if (flag == "--seed") options.seed = parseCount(flag, value);
-        else if (flag == "--max-depth") options.octree.maxDepth = static_cast<int>(parseCount(flag, value));
-        else if (flag == "--max-leaf") options.octree.maxShapesPerLeaf = static_cast<int>(parseCount(flag, value));
-        else throw std::invalid_argument("unknown option " + flag);
+        if (flag == "--min-n")
+            options.minCount = parseCount(flag, value);
+        else if (flag == "--max-n")
+            options.maxCount = parseCount(flag, value);
+        else if (flag == "--rays")
+            options.rays = parseCount(flag, value);
+        else if (flag == "--brute-rays")
+            options.bruteRays = parseCount(flag, value);
+        else if (flag == "--brute-max-n")
+            options.bruteMaxCount = parseCount(flag, value);
+        else if (flag == "--repeat")
+            options.repeat = std::max(1, static_cast<int>(parseCount(flag, value)));
+        else if (flag == "--seed")
+            options.seed = parseCount(flag, value);
+        else if (flag == "--max-depth")
+            options.octree.maxDepth = static_cast<int>(parseCount(flag, value));
+        else if (flag == "--max-leaf")
+            options.octree.maxShapesPerLeaf = static_cast<int>(parseCount(flag, value));
+        else
+            throw std::invalid_argument("unknown option " + flag);
     }
     if (options.rays == 0) throw std::invalid_argument("--rays must be > 0");
     if (options.minCount == 0) throw std::invalid_argument("--min-n must be > 0");
@@ -122,8 +133,8 @@ std::size_t sameShape(const std::vector<RayHit>& a, const std::vector<RayHit>& b
 struct OrderResult {
     std::string name;
     std::size_t rays = 0;
-    std::size_t bruteRays = 0;       // 0: brute force not run
-    double brute = 0.0;              // Mrays/s
+    std::size_t bruteRays = 0;  // 0: brute force not run
+    double brute = 0.0;         // Mrays/s
     double octree = 0.0;
     double embreeFloat = 0.0;
     double embreeUser = 0.0;
@@ -189,7 +200,8 @@ OrderResult runOrder(const std::string& name, const std::vector<Ray>& rays, cons
         trace(rays, rays.size(), options.repeat, [&](const Ray& ray) { return embreeFloat.firstHit(ray, ft); });
     std::cerr << ", embree user" << std::flush;
     const std::size_t testsBefore = embreeUser.sphereTests();
-    const Timed byUser = trace(rays, rays.size(), options.repeat, [&](const Ray& ray) { return embreeUser.firstHit(ray); });
+    const Timed byUser =
+        trace(rays, rays.size(), options.repeat, [&](const Ray& ray) { return embreeUser.firstHit(ray); });
     result.userTestsPerRay = static_cast<double>(embreeUser.sphereTests() - testsBefore) /
                              static_cast<double>(rays.size() * static_cast<std::size_t>(options.repeat));
     if (bruteRays > 0) {
@@ -209,7 +221,8 @@ OrderResult runOrder(const std::string& name, const std::vector<Ray>& rays, cons
     const auto n = static_cast<double>(rays.size());
     result.floatSameShape = static_cast<double>(sameShape(byOctree.hits, byFloat.hits)) / n;
     result.hitFraction = static_cast<double>(std::count_if(byOctree.hits.begin(), byOctree.hits.end(),
-                                                           [](const RayHit& h) { return bool(h); })) / n;
+                                                           [](const RayHit& h) { return bool(h); })) /
+                         n;
     recordWork(octree, rays, result);
     return result;
 }
@@ -226,7 +239,8 @@ SizeResult runSize(std::size_t count, const Options& options) {
     const std::size_t heapStart = heapInUse();
     std::vector<std::unique_ptr<Shape>> shapes;
     shapes.reserve(count);
-    for (const Droplet& droplet : cloud.droplets()) shapes.push_back(std::make_unique<Sphere>(droplet.center, droplet.radius));
+    for (const Droplet& droplet : cloud.droplets())
+        shapes.push_back(std::make_unique<Sphere>(droplet.center, droplet.radius));
     const std::size_t heapShapes = heapInUse();
     const Stopwatch octreeWatch;
     const Octree octree(std::move(shapes), options.octree);
@@ -263,11 +277,13 @@ SizeResult runSize(std::size_t count, const Options& options) {
     const std::size_t bruteRays =
         count > options.bruteMaxCount
             ? 0
-            : std::min(options.rays, options.bruteRays > 0 ? options.bruteRays
-                                                           : static_cast<std::size_t>(1e8 / static_cast<double>(count)));
+            : std::min(options.rays, options.bruteRays > 0
+                                         ? options.bruteRays
+                                         : static_cast<std::size_t>(1e8 / static_cast<double>(count)));
     const double floatTnear = kFloatTnearRelative * result.halfSide;
     const std::vector<Ray> randoms = randomRays(cloud, options.rays, options.seed * 7919 + count);
-    result.orders.push_back(runOrder("random", randoms, octree, embreeFloat, embreeUser, floatTnear, bruteRays, options));
+    result.orders.push_back(
+        runOrder("random", randoms, octree, embreeFloat, embreeUser, floatTnear, bruteRays, options));
     const std::vector<Ray> walks = photonWalks(cloud, options.rays, options.seed * 104729 + count, [&](const Ray& ray) {
         return octree.firstHit(ray.origin, ray.direction);
     });
@@ -306,17 +322,20 @@ void printTables(const std::vector<SizeResult>& results, double floatTnearRelati
         }
     }
     std::cout << "\n### Agreement and work per ray\n\n"
-                 "Float peer: tnear = " << floatTnearRelative << " x cube half-side; the others count only t > 0.\n\n"
+                 "Float peer: tnear = "
+              << floatTnearRelative
+              << " x cube half-side; the others count only t > 0.\n\n"
                  "| N | rays | traced | hit a droplet | brute-checked | octree != brute | octree != Embree user | "
                  "Embree float same shape | octree cells/ray | octree sphere tests/ray | distinct spheres/ray | "
                  "Embree user tests/ray |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SizeResult& r : results) {
         for (const OrderResult& o : r.orders) {
-            std::cout << "| " << r.count << " | " << o.name << " | " << o.rays << " | " << fixed(100.0 * o.hitFraction, 1)
-                      << " % | " << o.bruteRays << " | " << (o.bruteRays ? std::to_string(o.bruteMismatches) : "-")
-                      << " | " << o.userMismatches << " | " << fixed(100.0 * o.floatSameShape, 4) << " % | "
-                      << fixed(o.cellsPerRay, 1) << " | " << fixed(o.sphereTestsPerRay, 1) << " | "
-                      << fixed(o.uniqueTestsPerRay, 1) << " | " << fixed(o.userTestsPerRay, 1) << " |\n";
+            std::cout << "| " << r.count << " | " << o.name << " | " << o.rays << " | "
+                      << fixed(100.0 * o.hitFraction, 1) << " % | " << o.bruteRays << " | "
+                      << (o.bruteRays ? std::to_string(o.bruteMismatches) : "-") << " | " << o.userMismatches << " | "
+                      << fixed(100.0 * o.floatSameShape, 4) << " % | " << fixed(o.cellsPerRay, 1) << " | "
+                      << fixed(o.sphereTestsPerRay, 1) << " | " << fixed(o.uniqueTestsPerRay, 1) << " | "
+                      << fixed(o.userTestsPerRay, 1) << " |\n";
         }
     }
 }
@@ -330,7 +349,8 @@ int main(int argc, char** argv) {
                   << options.seed << ", octree max_depth " << options.octree.maxDepth << ", max_shapes_per_leaf "
                   << options.octree.maxShapesPerLeaf << '\n';
         std::vector<SizeResult> results;
-        for (std::size_t count = options.minCount; count <= options.maxCount; count *= 10) results.push_back(runSize(count, options));
+        for (std::size_t count = options.minCount; count <= options.maxCount; count *= 10)
+            results.push_back(runSize(count, options));
         printTables(results, kFloatTnearRelative);
         bool exact = true;
         for (const SizeResult& r : results) {

@@ -41,11 +41,11 @@
 namespace {
 
 using namespace dropscope;
-using dropscope::bench::DrawCount;
-using dropscope::bench::Stopwatch;
 using dropscope::bench::countingDraws;
+using dropscope::bench::DrawCount;
 using dropscope::bench::drawCount;
 using dropscope::bench::parseCount;
+using dropscope::bench::Stopwatch;
 
 struct Options {
     int frames = 40;  // measured per configuration, after the warm-up
@@ -64,24 +64,35 @@ Options parseOptions(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
         if (flag == "--help" || flag == "-h") {
-            std::cout << "render_bench [--frames 40] [--warm-up 3] [--segments 1e4] [--octree-level 2] [--droplets 1e5]\n"
-                         "             [--width 1280] [--height 800] [--seed 1] [--png PREFIX]\n";
+            std::cout
+                << "render_bench [--frames 40] [--warm-up 3] [--segments 1e4] [--octree-level 2] [--droplets 1e5]\n"
+                   "             [--width 1280] [--height 800] [--seed 1] [--png PREFIX]\n";
             std::exit(0);
         }
         if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
         const char* value = argv[++i];
         const auto count = [&] { return parseCount(flag, value); };
         const auto small = [&] { return static_cast<int>(std::min<std::uint64_t>(count(), 100000)); };
-        if (flag == "--frames") options.frames = std::max(1, small());
-        else if (flag == "--warm-up") options.warmUp = small();
-        else if (flag == "--segments") options.segments = count();
-        else if (flag == "--octree-level") options.octreeLevel = small();
-        else if (flag == "--droplets") options.droplets = std::max<std::uint64_t>(1, count());
-        else if (flag == "--width") options.width = std::max(1, small());
-        else if (flag == "--height") options.height = std::max(1, small());
-        else if (flag == "--seed") options.seed = count();
-        else if (flag == "--png") options.png = value;
-        else throw std::invalid_argument("unknown option " + flag);
+        if (flag == "--frames")
+            options.frames = std::max(1, small());
+        else if (flag == "--warm-up")
+            options.warmUp = small();
+        else if (flag == "--segments")
+            options.segments = count();
+        else if (flag == "--octree-level")
+            options.octreeLevel = small();
+        else if (flag == "--droplets")
+            options.droplets = std::max<std::uint64_t>(1, count());
+        else if (flag == "--width")
+            options.width = std::max(1, small());
+        else if (flag == "--height")
+            options.height = std::max(1, small());
+        else if (flag == "--seed")
+            options.seed = count();
+        else if (flag == "--png")
+            options.png = value;
+        else
+            throw std::invalid_argument("unknown option " + flag);
     }
     return options;
 }
@@ -232,11 +243,12 @@ void printFrames(const std::vector<Frame>& frames, const std::string& title) {
     for (const Frame& f : frames) {
         const double total = median(f.seconds);
         const double submit = median(f.submit);
-        std::cout << "| " << f.layers << " | " << f.view << " | " << f.width << "x" << f.height << " | " << f.count.calls
-                  << " | " << f.count.instances << " | " << f.count.vertices << " | " << fixed(1e3 * total, 1) << " | "
+        std::cout << "| " << f.layers << " | " << f.view << " | " << f.width << "x" << f.height << " | "
+                  << f.count.calls << " | " << f.count.instances << " | " << f.count.vertices << " | "
+                  << fixed(1e3 * total, 1) << " | "
                   << fixed(1e3 * *std::min_element(f.seconds.begin(), f.seconds.end()), 1) << " | "
-                  << fixed(1.0 / total, 1) << " | " << fixed(1e3 * submit, 1) << " | " << fixed(1e3 * (total - submit), 1)
-                  << " |\n";
+                  << fixed(1.0 / total, 1) << " | " << fixed(1e3 * submit, 1) << " | "
+                  << fixed(1e3 * (total - submit), 1) << " |\n";
     }
 }
 
@@ -319,8 +331,8 @@ void printScene(const Options& options, const BenchScene& s, const render::Shape
               << options.octreeLevel
               << " cell segments | line vertices | event markers | build instances ms | upload instances ms | "
                  "upload lines ms | upload markers ms |\n|---|---|---|---|---|---|---|---|---|---|\n| "
-              << instances.rounded.size() << " (" << megabytes(instances.rounded) << " MB) | " << s.paths.size() << " | "
-              << s.pathSegments << " | " << s.cellSegments << " | " << s.lines.vertices().size() << " ("
+              << instances.rounded.size() << " (" << megabytes(instances.rounded) << " MB) | " << s.paths.size()
+              << " | " << s.pathSegments << " | " << s.cellSegments << " | " << s.lines.vertices().size() << " ("
               << megabytes(s.lines.vertices()) << " MB) | " << s.markers.size() << " | " << uploads << " |\n"
               << "\nUploads: the first, then the median of five more (each followed by glFinish).\n";
 }
@@ -393,7 +405,8 @@ int main(int argc, char** argv) {
         for (const auto& [view, camera] : views) {
             Frame first = frame("whole scene", view, true, true, camera, options.width, options.height);
             bench.run(first, true);
-            firstFrames += (firstFrames.empty() ? "" : ", ") + view + " " + fixed(1e3 * first.seconds.front(), 1) + " ms";
+            firstFrames +=
+                (firstFrames.empty() ? "" : ", ") + view + " " + fixed(1e3 * first.seconds.front(), 1) + " ms";
             if (options.png) writePng(context, *options.png + "-" + view + ".png");
         }
         const std::vector<Frame> layers = measureLayers(bench, views, options);
@@ -401,12 +414,13 @@ int main(int argc, char** argv) {
 
         const char* threads = std::getenv("LP_NUM_THREADS");
         std::cout << "render_bench: " << options.width << "x" << options.height << ", " << gl.describe()
-                  << "; LP_NUM_THREADS " << (threads ? threads : "unset") << " (CPUs: "
-                  << std::thread::hardware_concurrency() << "); " << options.frames
-                  << " frames per configuration after " << options.warmUp
-                  << " warm-up, interleaved; load average " << loadBefore << " -> " << loadAverage() << '\n';
+                  << "; LP_NUM_THREADS " << (threads ? threads : "unset")
+                  << " (CPUs: " << std::thread::hardware_concurrency() << "); " << options.frames
+                  << " frames per configuration after " << options.warmUp << " warm-up, interleaved; load average "
+                  << loadBefore << " -> " << loadAverage() << '\n';
         printScene(options, s, instances, uploads);
-        std::cout << "\nFirst frame of the whole scene (llvmpipe compiles the shader variants): " << firstFrames << ".\n";
+        std::cout << "\nFirst frame of the whole scene (llvmpipe compiles the shader variants): " << firstFrames
+                  << ".\n";
         printFrames(layers, "Frame time (draw + glFinish)");
         printFrames(scaling, "Where the time goes: the shapes alone, by instances and pixels");
         return 0;

@@ -33,9 +33,9 @@
 namespace {
 
 using namespace dropscope;
-using dropscope::bench::Stopwatch;
 using dropscope::bench::cloudSceneText;
 using dropscope::bench::parseCount;
+using dropscope::bench::Stopwatch;
 
 // The built-in cloud: 1e5 water droplets in a cube of half-side 15 mm (bench/CloudScene.hpp): 2.7 % of
 // the volume, and a mean optical depth of about 4.5 along the beam, so about 1 % of the photons cross
@@ -49,7 +49,7 @@ struct Options {
     int threads = 2;                         // compared with 1
     std::uint64_t referencePhotons = 20000;  // photons whose segments are replayed through firstHit
     std::uint64_t seed = 1;
-    std::optional<std::string> scene;        // a scene file instead of the built-in cloud
+    std::optional<std::string> scene;  // a scene file instead of the built-in cloud
 };
 
 Options parseOptions(int argc, char** argv) {
@@ -58,18 +58,26 @@ Options parseOptions(int argc, char** argv) {
         const std::string flag = argv[i];
         if (flag == "--help" || flag == "-h") {
             std::cout << "trace_bench [--photons 2e5] [--repeat 5 (median of)] [--threads 2 (against 1)]\n"
-                         "            [--reference-photons 2e4] [--seed 1] [--scene FILE (default: the built-in 1e5 cloud)]\n";
+                         "            [--reference-photons 2e4] [--seed 1] [--scene FILE (default: the built-in 1e5 "
+                         "cloud)]\n";
             std::exit(0);
         }
         if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
         const char* value = argv[++i];
-        if (flag == "--photons") options.photons = parseCount(flag, value);
-        else if (flag == "--repeat") options.repeat = std::max(1, static_cast<int>(parseCount(flag, value)));
-        else if (flag == "--threads") options.threads = std::max(1, static_cast<int>(parseCount(flag, value)));
-        else if (flag == "--reference-photons") options.referencePhotons = parseCount(flag, value);
-        else if (flag == "--seed") options.seed = parseCount(flag, value);
-        else if (flag == "--scene") options.scene = value;
-        else throw std::invalid_argument("unknown option " + flag);
+        if (flag == "--photons")
+            options.photons = parseCount(flag, value);
+        else if (flag == "--repeat")
+            options.repeat = std::max(1, static_cast<int>(parseCount(flag, value)));
+        else if (flag == "--threads")
+            options.threads = std::max(1, static_cast<int>(parseCount(flag, value)));
+        else if (flag == "--reference-photons")
+            options.referencePhotons = parseCount(flag, value);
+        else if (flag == "--seed")
+            options.seed = parseCount(flag, value);
+        else if (flag == "--scene")
+            options.scene = value;
+        else
+            throw std::invalid_argument("unknown option " + flag);
     }
     if (options.photons == 0) throw std::invalid_argument("--photons must be > 0");
     if (options.referencePhotons == 0) throw std::invalid_argument("--reference-photons must be > 0");
@@ -117,7 +125,10 @@ std::unique_ptr<OpticalScene> buildOpticalScene(const Scene& scene, int repeat, 
         for (const auto& shape : scene.shapes) copies.push_back(shape->clone());
         clone.push_back(cloneWatch.seconds());
         const Stopwatch octreeWatch;
-        { const Octree alone(std::move(copies), scene.octree); octree.push_back(octreeWatch.seconds()); }
+        {
+            const Octree alone(std::move(copies), scene.octree);
+            octree.push_back(octreeWatch.seconds());
+        }
         const Stopwatch wholeWatch;
         optical = std::make_unique<OpticalScene>(scene);
         whole.push_back(wholeWatch.seconds());
@@ -265,12 +276,12 @@ void printPhotons(const TraceTally& tally, double expectedUnscattered) {
     std::cout << "\n### What a photon does\n\n"
                  "| photons | reflect | refract | TIR | absorb | events (all four) | escaped | absorbed | lost | "
                  "unscattered | exp(-optical depth) |\n|---|---|---|---|---|---|---|---|---|---|---|\n"
-              << "| " << tally.photons << " | " << fixed(perPhoton(e.reflect), 3) << " | " << fixed(perPhoton(e.refract), 3)
-              << " | " << fixed(perPhoton(e.tir), 4) << " | " << fixed(perPhoton(e.absorb), 5) << " | "
-              << fixed(perPhoton(e.reflect + e.refract + e.tir + e.absorb), 3) << " | "
-              << fixed(100.0 * perPhoton(tally.escaped), 3) << " % | " << fixed(100.0 * perPhoton(tally.absorbed), 3)
-              << " % | " << fixed(100.0 * perPhoton(tally.lost), 4) << " % | "
-              << fixed(100.0 * perPhoton(tally.unscattered), 3) << " % | "
+              << "| " << tally.photons << " | " << fixed(perPhoton(e.reflect), 3) << " | "
+              << fixed(perPhoton(e.refract), 3) << " | " << fixed(perPhoton(e.tir), 4) << " | "
+              << fixed(perPhoton(e.absorb), 5) << " | " << fixed(perPhoton(e.reflect + e.refract + e.tir + e.absorb), 3)
+              << " | " << fixed(100.0 * perPhoton(tally.escaped), 3) << " % | "
+              << fixed(100.0 * perPhoton(tally.absorbed), 3) << " % | " << fixed(100.0 * perPhoton(tally.lost), 4)
+              << " % | " << fixed(100.0 * perPhoton(tally.unscattered), 3) << " % | "
               << (expectedUnscattered >= 0.0 ? fixed(100.0 * expectedUnscattered, 3) + " %" : "-") << " |\n"
               << "\nPer photon except the percentages.\n";
 }
@@ -290,8 +301,8 @@ void printTransport(const std::vector<ThreadRuns>& runs, const TraceTally& tally
         const double t = run.medianSeconds();
         std::cout << "| " << run.threads << " | " << each << " | " << fixed(photons / t, 0) << " | "
                   << fixed(base / t, 2) << " | " << fixed(baseBest / run.bestSeconds(), 2) << " | "
-                  << fixed(interface / t * 1e-6, 3) << " M | "
-                  << fixed(median(run.cpuSeconds) / photons * 1e6, 2) << " |\n";
+                  << fixed(interface / t * 1e-6, 3) << " M | " << fixed(median(run.cpuSeconds) / photons * 1e6, 2)
+                  << " |\n";
     }
 }
 
@@ -303,20 +314,21 @@ void printReference(const FirstHitTimes& hits, const ThreadRuns& oneThread, cons
     const double hitSeconds = median(hits.oneThread);
     const double perHit = hitSeconds / static_cast<double>(hits.rays);
     const double perPhoton = oneThread.medianSeconds() / photons;
-    std::cout << "\n### Reference: Octree::firstHit alone on the photons' own segments (same run, median)\n\n"
-                 "| segments | hit | firstHit Mrays/s (1 thread) | ns per firstHit | firstHit speedup on "
-              << threads
-              << " threads (median / fastest) | us per photon (1 thread) | firstHit calls per photon | time per photon / "
-                 "(events per photon x time per firstHit) | octree share of the photon time |\n"
-                 "|---|---|---|---|---|---|---|---|---|\n"
-              << "| " << hits.rays << " | " << fixed(100.0 * hits.hitFraction, 1) << " % | "
-              << fixed(static_cast<double>(hits.rays) / hitSeconds * 1e-6, 3) << " | " << fixed(perHit * 1e9, 0) << " | "
-              << fixed(hitSeconds / median(hits.manyThreads), 2) << " / "
-              << fixed(best(hits.oneThread) / best(hits.manyThreads), 2) << " | " << fixed(perPhoton * 1e6, 2) << " | "
-              << fixed(queries, 3) << " | " << fixed(perPhoton / (events * perHit), 2) << " | "
-              << fixed(100.0 * queries * perHit / perPhoton, 1) << " % |\n"
-              << "\nfirstHit calls per photon = 1 + interface events per photon (the emission's query, then one "
-                 "after each event; the last one finds nothing, or an absorption comes first).\n";
+    std::cout
+        << "\n### Reference: Octree::firstHit alone on the photons' own segments (same run, median)\n\n"
+           "| segments | hit | firstHit Mrays/s (1 thread) | ns per firstHit | firstHit speedup on "
+        << threads
+        << " threads (median / fastest) | us per photon (1 thread) | firstHit calls per photon | time per photon / "
+           "(events per photon x time per firstHit) | octree share of the photon time |\n"
+           "|---|---|---|---|---|---|---|---|---|\n"
+        << "| " << hits.rays << " | " << fixed(100.0 * hits.hitFraction, 1) << " % | "
+        << fixed(static_cast<double>(hits.rays) / hitSeconds * 1e-6, 3) << " | " << fixed(perHit * 1e9, 0) << " | "
+        << fixed(hitSeconds / median(hits.manyThreads), 2) << " / "
+        << fixed(best(hits.oneThread) / best(hits.manyThreads), 2) << " | " << fixed(perPhoton * 1e6, 2) << " | "
+        << fixed(queries, 3) << " | " << fixed(perPhoton / (events * perHit), 2) << " | "
+        << fixed(100.0 * queries * perHit / perPhoton, 1) << " % |\n"
+        << "\nfirstHit calls per photon = 1 + interface events per photon (the emission's query, then one "
+           "after each event; the last one finds nothing, or an absorption comes first).\n";
 }
 
 }  // namespace
@@ -328,8 +340,8 @@ int main(int argc, char** argv) {
         const std::string name = builtIn ? "built-in cloud, 1e5 droplets" : *options.scene;
         std::cerr << "scene: " << name << '\n';
         const Stopwatch parseWatch;
-        const Scene scene = builtIn ? parseScene(cloudSceneText(kDroplets, kHalfSide), "trace_bench cloud")
-                                    : loadScene(*options.scene);
+        const Scene scene =
+            builtIn ? parseScene(cloudSceneText(kDroplets, kHalfSide), "trace_bench cloud") : loadScene(*options.scene);
         const double parseSeconds = parseWatch.seconds();
         if (scene.sources.empty()) throw std::invalid_argument(name + ": the scene has no light sources");
 

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config
+  cmake g++ make pkg-config clang-format
   libeigen3-dev libboost-math-dev nlohmann-json3-dev libcli11-dev librandom123-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libglm-dev libstb-dev

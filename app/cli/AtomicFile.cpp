@@ -1,9 +1,9 @@
 #include "cli/AtomicFile.hpp"
 
+#include <unistd.h>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
-#include <unistd.h>
 
 namespace dropscope {
 

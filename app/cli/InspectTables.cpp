@@ -1,6 +1,6 @@
 #include "cli/InspectReport.hpp"
-#include "geometry/GeneralShape.hpp"
 #include "cli/TextTable.hpp"
+#include "geometry/GeneralShape.hpp"
 
 #include <ostream>
 #include <sstream>
@@ -18,14 +18,18 @@ void writeSettings(const Scene& scene, std::ostream& out) {
     out << "scene       " << scene.origin << '\n'
         << "format      " << scene.formatVersion << '\n'
         << "unit        " << unit << '\n'
-        << "wavelength  " << formatNumber(scene.wavelengthNm) << " nm = "
-        << formatNumber(scene.wavelengthInSceneUnits()) << ' ' << unit << '\n'
+        << "wavelength  " << formatNumber(scene.wavelengthNm)
+        << " nm = " << formatNumber(scene.wavelengthInSceneUnits()) << ' ' << unit << '\n'
         << "ambient     " << scene.media.at(scene.ambient).name << '\n';
 }
 
 void writeMedia(const Scene& scene, std::ostream& out) {
-    TextTable table({{"id", Align::Right}, {"name"}, {"n", Align::Right}, {"kappa", Align::Right},
-                     {"sigma", Align::Right}, {"absorption [1/" + scene.unit + "]", Align::Right}});
+    TextTable table({{"id", Align::Right},
+                     {"name"},
+                     {"n", Align::Right},
+                     {"kappa", Align::Right},
+                     {"sigma", Align::Right},
+                     {"absorption [1/" + scene.unit + "]", Align::Right}});
     for (std::size_t id = 0; id < scene.media.size(); ++id) {
         const Medium& medium = scene.media[id];
         table.addRow({std::to_string(id), medium.name, formatNumber(medium.n), optionalNumber(medium.kappa),
@@ -37,8 +41,14 @@ void writeMedia(const Scene& scene, std::ostream& out) {
 
 void writeShapes(const Scene& scene, std::ostream& out) {
     const std::string& unit = scene.unit;
-    TextTable table({{"id", Align::Right}, {"type"}, {"name"}, {"medium"}, {"x [" + unit + "]"},
-                     {"y [" + unit + "]"}, {"z [" + unit + "]"}, {"volume [" + unit + "^3]", Align::Right},
+    TextTable table({{"id", Align::Right},
+                     {"type"},
+                     {"name"},
+                     {"medium"},
+                     {"x [" + unit + "]"},
+                     {"y [" + unit + "]"},
+                     {"z [" + unit + "]"},
+                     {"volume [" + unit + "^3]", Align::Right},
                      {"area [" + unit + "^2]", Align::Right}});
     for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
         const Shape& shape = *scene.shapes[id];
@@ -75,8 +85,8 @@ void writeTotals(const Scene& scene, const SceneSummary& summary, std::ostream& 
 }
 
 void writeSources(const Scene& scene, std::ostream& out) {
-    TextTable table({{"id", Align::Right}, {"type"}, {"origin"}, {"direction"},
-                     {"radius [" + scene.unit + "]", Align::Right}});
+    TextTable table(
+        {{"id", Align::Right}, {"type"}, {"origin"}, {"direction"}, {"radius [" + scene.unit + "]", Align::Right}});
     for (std::size_t id = 0; id < scene.sources.size(); ++id) {
         const Source& source = scene.sources[id];
         table.addRow({std::to_string(id), std::string(sourceTypeName(source.type)), formatVector(source.origin),
@@ -107,8 +117,12 @@ void writeOctree(const SceneSummary& summary, std::ostream& out) {
         << formatRange(octree.root.min().z(), octree.root.max().z()) << '\n'
         << "  cell margin   " << formatNumber(octree.margin) << '\n'
         << "  bytes         " << octree.bytes << '\n';
-    TextTable table({{"level", Align::Right}, {"cells", Align::Right}, {"leaves", Align::Right},
-                     {"shapes stored", Align::Right}, {"bytes", Align::Right}, {"leaves by shape count"}});
+    TextTable table({{"level", Align::Right},
+                     {"cells", Align::Right},
+                     {"leaves", Align::Right},
+                     {"shapes stored", Align::Right},
+                     {"bytes", Align::Right},
+                     {"leaves by shape count"}});
     for (const LevelStatistics& level : octree.levels) {
         table.addRow({std::to_string(level.level), std::to_string(level.cells), std::to_string(level.leaves),
                       std::to_string(level.shapesStored), std::to_string(level.bytes), histogram(level.shapesPerLeaf)});

@@ -18,9 +18,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void writeHits(const std::vector<RayHit>& hits, std::ostream& out) {
     out << "ray,shape,distance\n";
@@ -74,9 +72,8 @@ int runQuery(const QueryOptions& options, std::ostream&, std::ostream& err) {
     }
     const double rate = querySeconds > 0.0 ? static_cast<double>(rays.size()) / querySeconds : 0.0;
     char summary[256];
-    std::snprintf(summary, sizeof summary,
-                  "query: %zu shapes, %zu rays, %s, build %.3f s, query %.3f s, %.0f rays/s\n", shapeCount,
-                  rays.size(), options.brute ? "brute force" : "octree", buildSeconds, querySeconds, rate);
+    std::snprintf(summary, sizeof summary, "query: %zu shapes, %zu rays, %s, build %.3f s, query %.3f s, %.0f rays/s\n",
+                  shapeCount, rays.size(), options.brute ? "brute force" : "octree", buildSeconds, querySeconds, rate);
     err << summary;
     return kExitSuccess;
 }

@@ -26,9 +26,10 @@ double parseField(std::string_view field, const std::string& origin, std::size_t
     double value = 0.0;
     const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (status != std::errc() || end != text.data() + text.size() || text.empty()) {
-        fail(origin, line, "field " + std::to_string(column + 1) + " (" + std::string(kHeader.substr(
-                               static_cast<std::size_t>(column) * 3, 2)) + ") is not a number: \"" +
-                               std::string(text) + "\"");
+        fail(origin, line,
+             "field " + std::to_string(column + 1) + " (" +
+                 std::string(kHeader.substr(static_cast<std::size_t>(column) * 3, 2)) + ") is not a number: \"" +
+                 std::string(text) + "\"");
     }
     if (!std::isfinite(value)) fail(origin, line, "field " + std::to_string(column + 1) + " is not finite");
     return value;
@@ -46,7 +47,8 @@ CsvRay parseLine(std::string_view text, const std::string& origin, std::size_t l
         if (comma == std::string_view::npos) break;
         start = comma + 1;
     }
-    if (column != 6) fail(origin, line, "expected 6 fields (" + std::string(kHeader) + "), got " + std::to_string(column));
+    if (column != 6)
+        fail(origin, line, "expected 6 fields (" + std::string(kHeader) + "), got " + std::to_string(column));
     const Direction direction(values[3], values[4], values[5]);
     if (!direction) fail(origin, line, "direction (dx, dy, dz) is zero");
     return {Point(values[0], values[1], values[2]), direction};

@@ -21,15 +21,14 @@ constexpr int kMaxPixels = 8192;
 constexpr std::uint64_t kMaxDrawnPaths = 100000;
 constexpr std::uint64_t kMaxSnapshotPhotons = 100'000'000;  // a picture, not a study: seconds, not hours
 
-
 // "x,y,z": three finite numbers.
 Point parsePoint(const std::string& option, const std::string& text) {
     std::istringstream in(text);
     Point p;
     char comma1 = 0;
     char comma2 = 0;
-    if (!(in >> p.x() >> comma1 >> p.y() >> comma2 >> p.z()) || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
-        !p.allFinite()) {
+    if (!(in >> p.x() >> comma1 >> p.y() >> comma2 >> p.z()) || comma1 != ',' || comma2 != ',' ||
+        !(in >> std::ws).eof() || !p.allFinite()) {
         throw BadInputError(option + ": expected three numbers x,y,z, got \"" + text + "\"");
     }
     return p;
@@ -38,11 +37,13 @@ Point parsePoint(const std::string& option, const std::string& text) {
 // The layer switches beyond the options (docs/rendering.md).
 void addLayerOptions(CLI::App& command, SnapshotCommandOptions& options) {
     render::LayerOptions& layers = options.render.layers;
-    command.add_option("--octree-filter", options.octreeFilter,
-                       "Octree cells drawn: only level L, levels <= L (both with --octree-level), or the leaves")
+    command
+        .add_option("--octree-filter", options.octreeFilter,
+                    "Octree cells drawn: only level L, levels <= L (both with --octree-level), or the leaves")
         ->capture_default_str()
         ->check(CLI::IsMember({"level", "upto", "leaves"}));
-    command.add_option("--octree-colour", options.octreeColour, "Octree cells coloured by level or by occupancy (heat)")
+    command
+        .add_option("--octree-colour", options.octreeColour, "Octree cells coloured by level or by occupancy (heat)")
         ->capture_default_str()
         ->check(CLI::IsMember({"level", "occupancy"}));
     command.add_option("--colour-by", options.colourBy, "Paths coloured by weight (viridis) or by event type")
@@ -76,7 +77,7 @@ void applyLayerOptions(SnapshotCommandOptions& options) {
     }
     using Mode = render::OctreeFilter::Mode;
     layers.octree = leaves;  // --octree-level switches it on too (SnapshotOptions::octreeLevel)
-    layers.octreeFilter.mode = leaves                            ? Mode::LeavesOnly
+    layers.octreeFilter.mode = leaves                           ? Mode::LeavesOnly
                                : options.octreeFilter == "upto" ? Mode::UpToLevel
                                                                 : Mode::OnlyLevel;
     layers.octreeFilter.occupancyColour = options.octreeColour == "occupancy";
@@ -117,7 +118,8 @@ CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options) {
         ->check(CLI::Range(16, kMaxPixels));
     command->add_option("--eye", options.eye, "Camera position x,y,z (default: the scene's view, else fitted)");
     command->add_option("--target", options.target, "Point looked at x,y,z (default: the view's, else the centre)");
-    command->add_option("--fov-deg", options.fovDeg, "Vertical field of view in degrees")->check(CLI::Range(1.0, 179.0));
+    command->add_option("--fov-deg", options.fovDeg, "Vertical field of view in degrees")
+        ->check(CLI::Range(1.0, 179.0));
     command->add_option("--octree-level", options.octreeLevel, "Draw the octree's cells at this level")
         ->check(CLI::Range(0, 30));
     command->add_option("--paths", options.render.paths, "Draw the paths of the first K traced photons")

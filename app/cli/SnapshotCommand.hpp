@@ -16,10 +16,10 @@ namespace dropscope {
 struct SnapshotCommandOptions {
     std::string scenePath;
     std::string outPath;
-    std::optional<std::string> eye;     // "x,y,z"
-    std::optional<std::string> target;  // "x,y,z"
-    double fovDeg = 0.0;  // 0: not given
-    int octreeLevel = -1;  // -1: not given
+    std::optional<std::string> eye;      // "x,y,z"
+    std::optional<std::string> target;   // "x,y,z"
+    double fovDeg = 0.0;                 // 0: not given
+    int octreeLevel = -1;                // -1: not given
     std::string octreeFilter = "level";  // level | upto | leaves
     std::string octreeColour = "level";  // level | occupancy
     std::string colourBy = "weight";     // weight | event (paths)

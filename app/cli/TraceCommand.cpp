@@ -24,9 +24,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::uint64_t kMaxBins = 100'000;    // 0.0018 degrees; a tally per thread: 0.8 MB each at most
-constexpr std::uint64_t kMaxThreads = 1024;    // beyond any machine we run on; a typo otherwise
-constexpr std::uint64_t kMaxPaths = 1'000'000; // every event kept in memory: ~1 KB per photon
+constexpr std::uint64_t kMaxBins = 100'000;     // 0.0018 degrees; a tally per thread: 0.8 MB each at most
+constexpr std::uint64_t kMaxThreads = 1024;     // beyond any machine we run on; a typo otherwise
+constexpr std::uint64_t kMaxPaths = 1'000'000;  // every event kept in memory: ~1 KB per photon
 
 // Refuses an --out that names something other than a folder, or holds an output name that is not a
 // regular file, before any work is done.

@@ -257,7 +257,8 @@ std::filesystem::path timestampedScreenshotPath(const std::filesystem::path& dir
     std::ostringstream stem;
     stem << "dropscope-" << std::put_time(&local, "%Y%m%d-%H%M%S");
     std::filesystem::path path = directory / (stem.str() + ".png");
-    for (int k = 2; std::filesystem::exists(path); ++k) path = directory / (stem.str() + "-" + std::to_string(k) + ".png");
+    for (int k = 2; std::filesystem::exists(path); ++k)
+        path = directory / (stem.str() + "-" + std::to_string(k) + ".png");
     return path;
 }
 

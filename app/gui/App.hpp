@@ -18,8 +18,8 @@ namespace dropscope::gui {
 class ImGuiRenderer;
 
 struct AppOptions {
-    std::filesystem::path scenePath;  // where the scene came from (Save writes there); may be empty
-    std::filesystem::path iniFile;    // ImGui's panel layout, remembered between runs; empty: not kept
+    std::filesystem::path scenePath;                  // where the scene came from (Save writes there); may be empty
+    std::filesystem::path iniFile;                    // ImGui's panel layout, remembered between runs; empty: not kept
     std::filesystem::path screenshotDirectory = ".";  // where F12 puts its timestamped PNGs
 };
 

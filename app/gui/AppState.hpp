@@ -95,17 +95,17 @@ struct AppState {
     std::size_t selectedSource = 0;
     FireSettings fire;
     TraceJob job;
-    bool retraceWanted = false;             // the scene changed under a shown trace
-    std::vector<ShapeId> pendingSlots;      // slotOfShape of the run in progress
-    std::uint64_t firedRevision = 0;        // the document revision the last run traced
-    std::optional<TraceShown> trace;        // the last finished Monte Carlo run
-    std::optional<RayTree> rayTree;         // the last ray fired as a tree
+    bool retraceWanted = false;         // the scene changed under a shown trace
+    std::vector<ShapeId> pendingSlots;  // slotOfShape of the run in progress
+    std::uint64_t firedRevision = 0;    // the document revision the last run traced
+    std::optional<TraceShown> trace;    // the last finished Monte Carlo run
+    std::optional<RayTree> rayTree;     // the last ray fired as a tree
     std::optional<Ray> rayTreeRay;
     std::uint64_t rayTreeRevision = 0;
-    bool automaticTrace = false;            // the run in progress was started by "live", not the user
+    bool automaticTrace = false;  // the run in progress was started by "live", not the user
 
-    int selectedPath = -1;   // index into trace->outcome.result.paths
-    int selectedEvent = 0;   // within that path; the segment from it to the next is "selected"
+    int selectedPath = -1;                          // index into trace->outcome.result.paths
+    int selectedEvent = 0;                          // within that path; the segment from it to the next is "selected"
     std::optional<render::RayTraversal> traversal;  // of the selected segment
 
     StatusMessage status;
@@ -120,9 +120,9 @@ struct AppState {
     // to type into them, as a user would, without depending on the panel's layout.
     std::map<std::string, ItemRect> itemRects;
 
-    Eigen::AlignedBox3d sceneBounds;  // of the shapes, as last drawn (render::sceneBounds)
+    Eigen::AlignedBox3d sceneBounds;                  // of the shapes, as last drawn (render::sceneBounds)
     std::uint64_t drawnRevision = ~std::uint64_t{0};  // the document revision the view was built from
-    bool viewDirty = true;                           // something drawn changed: rebuild the layers
+    bool viewDirty = true;                            // something drawn changed: rebuild the layers
 
     void say(std::string text) { status = {std::move(text), false}; }
     void refuse(std::string text) { status = {std::move(text), true}; }

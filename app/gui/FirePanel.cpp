@@ -54,7 +54,8 @@ void sourceEditor(AppState& state) {
     if (ImGui::Button("Add source")) {
         Source source;
         source.origin = Point(state.camera.eye.x, state.camera.eye.y, state.camera.eye.z);
-        source.direction = Direction(Point(state.camera.target.x, state.camera.target.y, state.camera.target.z) - source.origin);
+        source.direction =
+            Direction(Point(state.camera.target.x, state.camera.target.y, state.camera.target.z) - source.origin);
         sources.push_back(source);
         state.selectedSource = sources.size() - 1;
         changed = true;

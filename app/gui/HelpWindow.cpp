@@ -9,7 +9,8 @@ namespace dropscope::gui {
 
 void drawHelpWindow(AppState& state) {
     if (!state.showHelp) return;
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+                            ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
     if (!ImGui::Begin("Help", &state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
         return;

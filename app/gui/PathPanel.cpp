@@ -19,7 +19,8 @@ void photonList(AppState& state) {
     while (clipper.Step()) {
         for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
             const PhotonPath& path = paths[static_cast<std::size_t>(row)];
-            const std::string label = "photon " + std::to_string(path.photon) + ": " + std::string(photonFateName(path.fate)) + ", " +
+            const std::string label = "photon " + std::to_string(path.photon) + ": " +
+                                      std::string(photonFateName(path.fate)) + ", " +
                                       std::to_string(path.events.size()) + " events";
             if (ImGui::Selectable(label.c_str(), row == state.selectedPath)) selectEvent(state, row, 0);
         }

@@ -40,8 +40,8 @@ std::optional<Pick> pickShape(const AppState& state, const Ray& ray) {
 }
 
 std::optional<Point> placementCentre(const AppState& state, const Ray& ray) {
-    if (const auto pick = pickShape(state, ray); pick && pick->normal &&
-                                                 state.document->octree().shape(pick->shape)->kind() != ShapeKind::Box) {
+    if (const auto pick = pickShape(state, ray);
+        pick && pick->normal && state.document->octree().shape(pick->shape)->kind() != ShapeKind::Box) {
         return Point(pick->point + state.placementRadius * pick->normal.vector());
     }
     return rayPlaneAxis(ray, state.placementPlane.axis, state.placementPlane.offset);

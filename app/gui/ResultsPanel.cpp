@@ -20,9 +20,11 @@ std::vector<float> perSteradian(const TraceTally& tally) {
     if (tally.photons == 0) return values;
     const double width = std::numbers::pi / static_cast<double>(bins);
     for (std::size_t k = 0; k < bins; ++k) {
-        const double solidAngle = 2.0 * std::numbers::pi * (std::cos(width * static_cast<double>(k)) - std::cos(width * static_cast<double>(k + 1)));
-        values[k] = static_cast<float>(static_cast<double>(tally.angular[k]) / static_cast<double>(tally.photons) /
-                                       solidAngle);
+        const double solidAngle =
+            2.0 * std::numbers::pi *
+            (std::cos(width * static_cast<double>(k)) - std::cos(width * static_cast<double>(k + 1)));
+        values[k] =
+            static_cast<float>(static_cast<double>(tally.angular[k]) / static_cast<double>(tally.photons) / solidAngle);
     }
     return values;
 }

@@ -30,7 +30,8 @@ void shapeList(AppState& state) {
     std::vector<ShapeId> shown;
     for (ShapeId id = 0; id < octree.slotCount(); ++id) {
         const Shape* shape = octree.shape(id);
-        if (shape && (!filter.IsActive() || filter.PassFilter(listLabel(document, id, *shape).c_str()))) shown.push_back(id);
+        if (shape && (!filter.IsActive() || filter.PassFilter(listLabel(document, id, *shape).c_str())))
+            shown.push_back(id);
     }
     ImGui::BeginChild("shapes", ImVec2(0.0f, 110.0f), true);
     ImGuiListClipper clipper;
@@ -163,8 +164,10 @@ void cloudGenerator(AppState& state) {
     if (ImGui::Button("Generate")) {
         try {
             if (count < 0) throw std::invalid_argument("count must be >= 0");
-            if (!(radiusMin > 0.0) || !(radiusMax >= radiusMin)) throw std::invalid_argument("need 0 < radius min <= radius max");
-            if (!(lower.array() < upper.array()).all()) throw std::invalid_argument("region min must be below max on every axis");
+            if (!(radiusMin > 0.0) || !(radiusMax >= radiusMin))
+                throw std::invalid_argument("need 0 < radius min <= radius max");
+            if (!(lower.array() < upper.array()).all())
+                throw std::invalid_argument("region min must be below max on every axis");
             DropletCloudSpec spec;
             spec.region = Eigen::AlignedBox3d(lower, upper);
             spec.count = static_cast<std::uint64_t>(count);

@@ -16,7 +16,8 @@ snapshot::Image readFramebuffer(const render::GlFunctions& gl, int width, int he
     gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
     const std::size_t row = 4 * static_cast<std::size_t>(width);
     for (int y = 0; y < height; ++y) {
-        const auto source = bottomUp.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height - 1 - y));
+        const auto source =
+            bottomUp.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height - 1 - y));
         std::copy(source, source + static_cast<std::ptrdiff_t>(row),
                   image.rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
     }
@@ -59,7 +60,8 @@ snapshot::Image renderViewport(const render::GlFunctions& gl, ViewportScene& sce
 
 void writePng(const snapshot::Image& image, const std::filesystem::path& file) {
     const std::string bytes = snapshot::encodePng(image);
-    writeFileAtomically(file, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
+    writeFileAtomically(
+        file, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
 }
 
 }  // namespace dropscope::gui

@@ -44,7 +44,8 @@ std::string presetParameterText(const PresetParameter& parameter) {
     if (values.size() != expected) return std::to_string(values.size()) + " numbers";
     if (extents.empty()) return number(values[0]);
     if (extents.size() == 1) {
-        return extents[0] <= kShownVectorLength ? tuple(values, 0, extents[0]) : std::to_string(extents[0]) + " numbers";
+        return extents[0] <= kShownVectorLength ? tuple(values, 0, extents[0])
+                                                : std::to_string(extents[0]) + " numbers";
     }
     const std::size_t rank = extents.size();
     if (rank >= 3 && extents[rank - 2] == kNetPoints && extents[rank - 1] == 3) {

@@ -14,7 +14,8 @@ namespace {
 
 void toggleHelp(AppState& state) { state.showHelp = !state.showHelp; }
 void screenshotNow(AppState& state) {
-    state.screenshot = ScreenshotRequest{timestampedScreenshotPath(state.screenshotDirectory, std::chrono::system_clock::now()), false, 0, 0};
+    state.screenshot = ScreenshotRequest{
+        timestampedScreenshotPath(state.screenshotDirectory, std::chrono::system_clock::now()), false, 0, 0};
 }
 void save(AppState& state) {
     if (state.scenePath.empty()) {
@@ -27,7 +28,8 @@ void askOpen(AppState& state) { state.prompt = FilePrompt::Open; }
 void quit(AppState& state) { state.quit = true; }
 void togglePlacement(AppState& state) {
     state.placementMode = !state.placementMode;
-    state.say(state.placementMode ? "placement mode: click to drop a droplet (P or Esc to leave)" : "placement mode off");
+    state.say(state.placementMode ? "placement mode: click to drop a droplet (P or Esc to leave)"
+                                  : "placement mode off");
 }
 void escape(AppState& state) {
     if (state.job.running()) return cancelTrace(state);

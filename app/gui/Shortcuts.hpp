@@ -13,7 +13,7 @@ struct Shortcut {
     int key;  // a Key index (InputFrame.hpp)
     bool ctrl;
     bool shift;
-    std::string_view keys;    // as the Help window shows it
+    std::string_view keys;  // as the Help window shows it
     std::string_view action;
     void (*run)(AppState&);
 };

@@ -29,8 +29,7 @@ void TraceJob::start(Scene scene, TraceSettings settings) {
     done_.store(0);
     total_.store(settings.photons);
     seconds_.store(0.0);
-    worker_ = std::thread(
-        [this, traced = std::move(scene), settings]() mutable { run(std::move(traced), settings); });
+    worker_ = std::thread([this, traced = std::move(scene), settings]() mutable { run(std::move(traced), settings); });
 }
 
 void TraceJob::cancel() { stop_.store(true, std::memory_order_relaxed); }

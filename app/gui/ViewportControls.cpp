@@ -114,12 +114,8 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
     }
     const ImGuiIO& io = ImGui::GetIO();
     switch (drag_) {
-    case Drag::Orbit:
-        state.camera.orbit(-kOrbitPerPixel * dx, -kOrbitPerPixel * dy);
-        break;
-    case Drag::Pan:
-        state.camera.pan(-dx / io.DisplaySize.y, dy / io.DisplaySize.y);
-        break;
+    case Drag::Orbit: state.camera.orbit(-kOrbitPerPixel * dx, -kOrbitPerPixel * dy); break;
+    case Drag::Pan: state.camera.pan(-dx / io.DisplaySize.y, dy / io.DisplaySize.y); break;
     case Drag::MoveShape: {
         const Shape* shape = state.document->octree().shape(moving_);
         if (!shape) break;
@@ -138,11 +134,8 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
         }
         break;
     }
-    case Drag::MoveHandle:
-        moveHandle(state, ray);
-        break;
-    default:
-        break;
+    case Drag::MoveHandle: moveHandle(state, ray); break;
+    default: break;
     }
 }
 

@@ -24,7 +24,7 @@ private:
     void moveHandle(AppState& state, const Ray& ray);
 
     Drag drag_ = Drag::None;
-    float travelled_ = 0.0f;       // pixels moved since the press
+    float travelled_ = 0.0f;            // pixels moved since the press
     Point grabOffset_ = Point::Zero();  // droplet centre minus the grabbed point on the drag plane
     ShapeId moving_ = RayHit::kNone;
     bool movedThisDrag_ = false;

@@ -51,7 +51,8 @@ void ViewportScene::rebuild(AppState& state) {
         }
     }
     if (const auto handles = sourceHandles(state)) {
-        layers_.markers.push_back(render::sphereInstance(handles->origin, handles->radius, anchor, kOriginHandleColour));
+        layers_.markers.push_back(
+            render::sphereInstance(handles->origin, handles->radius, anchor, kOriginHandleColour));
         const auto& sources = document.sources();
         if (sources[selectedSourceIndex(state, sources)].type != SourceType::PointSource) {
             layers_.markers.push_back(render::sphereInstance(handles->aim, handles->radius, anchor, kAimHandleColour));

@@ -80,8 +80,8 @@ glm::mat4 Camera::projectionMatrix(double aspect) const {
 
 glm::dvec3 Camera::project(const glm::dvec3& world, int width, int height) const {
     const double aspect = static_cast<double>(width) / static_cast<double>(height);
-    const glm::dmat4 clip = glm::perspective(glm::radians(fovDeg), aspect, nearPlane, farPlane) *
-                            glm::lookAt(eye, target, up);
+    const glm::dmat4 clip =
+        glm::perspective(glm::radians(fovDeg), aspect, nearPlane, farPlane) * glm::lookAt(eye, target, up);
     const glm::dvec4 p = clip * glm::dvec4(world, 1.0);
     const glm::dvec3 ndc = glm::dvec3(p) / p.w;
     return {(ndc.x + 1.0) * 0.5 * width, (1.0 - ndc.y) * 0.5 * height, (ndc.z + 1.0) * 0.5};

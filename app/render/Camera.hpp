@@ -14,7 +14,7 @@ public:
     glm::dvec3 eye{3.0, 2.1, 4.8};  // a three-quarter view of the origin
     glm::dvec3 target{0.0, 0.0, 0.0};
     glm::dvec3 up{0.0, 1.0, 0.0};
-    double fovDeg = 40.0;   // vertical
+    double fovDeg = 40.0;  // vertical
     double nearPlane = 0.01;
     double farPlane = 100.0;
 

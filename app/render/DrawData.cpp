@@ -13,7 +13,8 @@ namespace {
 std::array<float, 9> columnMajor(const Eigen::Matrix3d& m) {
     std::array<float, 9> out{};
     for (int column = 0; column < 3; ++column) {
-        for (int row = 0; row < 3; ++row) out[static_cast<std::size_t>(3 * column + row)] = static_cast<float>(m(row, column));
+        for (int row = 0; row < 3; ++row)
+            out[static_cast<std::size_t>(3 * column + row)] = static_cast<float>(m(row, column));
     }
     return out;
 }
@@ -59,7 +60,8 @@ ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& sh
         case ShapeKind::Parametric:
         case ShapeKind::Implicit: {
             const auto& general = static_cast<const GeneralShape&>(*shape);
-            auto geometry = cache ? cache->geometry(general) : std::make_shared<const MeshGeometry>(meshGeometry(general));
+            auto geometry =
+                cache ? cache->geometry(general) : std::make_shared<const MeshGeometry>(meshGeometry(general));
             out.meshes.push_back({std::move(geometry), instance(general.transform().translation(),
                                                                 Eigen::Matrix3d::Identity(), anchor, colour)});
             out.meshIds.push_back(id);

@@ -54,9 +54,9 @@ struct MeshInstance {
 struct ShapeInstances {
     std::vector<ShapeInstance> rounded;  // spheres and ellipsoids (impostor.vert/.frag)
     std::vector<ShapeId> roundedIds;
-    std::vector<ShapeInstance> boxes;    // box.vert/.frag
+    std::vector<ShapeInstance> boxes;  // box.vert/.frag
     std::vector<ShapeId> boxIds;
-    std::vector<MeshInstance> meshes;    // parametric and implicit shapes (box.vert/.frag, indexed)
+    std::vector<MeshInstance> meshes;  // parametric and implicit shapes (box.vert/.frag, indexed)
     std::vector<ShapeId> meshIds;
 };
 

@@ -6,8 +6,8 @@ namespace dropscope::render {
 
 GlFunctions GlFunctions::load(GlProcLoader loader) {
     GlFunctions gl;
-#define DROPSCOPE_GL_LOAD(type, name)                                                                  \
-    gl.name = reinterpret_cast<type>(loader("gl" #name));                                             \
+#define DROPSCOPE_GL_LOAD(type, name)                     \
+    gl.name = reinterpret_cast<type>(loader("gl" #name)); \
     if (!gl.name) throw RenderError("the OpenGL context has no gl" #name);
     DROPSCOPE_GL_FUNCTIONS(DROPSCOPE_GL_LOAD)
 #undef DROPSCOPE_GL_LOAD

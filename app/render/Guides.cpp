@@ -7,9 +7,9 @@ namespace dropscope::render {
 
 namespace {
 
-constexpr double kGridCover = 1.5;     // the grid's width over the bounds' larger extent
-constexpr double kGridCells = 10.0;    // cells a side, about
-constexpr double kGridDrop = 0.01;     // gap under the bounds, of the grid's width: off any box face
+constexpr double kGridCover = 1.5;   // the grid's width over the bounds' larger extent
+constexpr double kGridCells = 10.0;  // cells a side, about
+constexpr double kGridDrop = 0.01;   // gap under the bounds, of the grid's width: off any box face
 
 // The smallest of 1, 2, 5 times a power of ten that is at least `x`.
 double niceStep(double x) {

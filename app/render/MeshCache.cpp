@@ -18,9 +18,12 @@ std::array<float, 3> toFloat(const Eigen::Vector3d& v) {
 // lies anywhere, often across the surface, which draws as dark spikes. 60 degrees: far from both.
 constexpr double kNormalAgreement = 0.5;
 
-void combine(std::size_t& seed, std::size_t value) { seed ^= value + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2); }
+void combine(std::size_t& seed, std::size_t value) {
+    seed ^= value + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
+}
 
-std::size_t keyHash(const GeneralShape& shape, std::string_view preset, const std::vector<PresetParameter>& parameters) {
+std::size_t keyHash(const GeneralShape& shape, std::string_view preset,
+                    const std::vector<PresetParameter>& parameters) {
     std::size_t seed = static_cast<std::size_t>(shape.kind());
     combine(seed, std::hash<std::string_view>{}(preset));
     const std::hash<double> hashDouble;
@@ -62,7 +65,8 @@ MeshGeometry meshGeometry(const GeneralShape& shape) {
         geometry.vertices.push_back({toFloat(mesh.vertices[k] - r0), toFloat(normals[k])});
     }
     geometry.indices.reserve(3 * mesh.triangles.size());
-    for (const auto& triangle : mesh.triangles) geometry.indices.insert(geometry.indices.end(), triangle.begin(), triangle.end());
+    for (const auto& triangle : mesh.triangles)
+        geometry.indices.insert(geometry.indices.end(), triangle.begin(), triangle.end());
     return geometry;
 }
 
@@ -81,8 +85,8 @@ std::shared_ptr<const MeshGeometry> MeshCache::geometry(const GeneralShape& shap
     }
     auto made = std::make_shared<const MeshGeometry>(meshGeometry(shape));
     ++made_;
-    entries_.emplace(hash, Entry{shape.kind(), std::string(preset), std::move(parameters), shape.transform().matrix(),
-                                 made, true});
+    entries_.emplace(
+        hash, Entry{shape.kind(), std::string(preset), std::move(parameters), shape.transform().matrix(), made, true});
     return made;
 }
 

@@ -77,7 +77,8 @@ struct Renderer::Mesh {
         meshVertices = static_cast<GLsizei>(mesh.size() / 6);
         gl.BindVertexArray(vertexArray);
         gl.BindBuffer(GL_ARRAY_BUFFER, meshBuffer);
-        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(float)), mesh.data(), GL_STATIC_DRAW);
+        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(float)), mesh.data(),
+                      GL_STATIC_DRAW);
         instanceAttributes();
     }
 
@@ -130,10 +131,14 @@ struct Renderer::Mesh {
 };
 
 Renderer::Renderer(const GlFunctions& gl)
-    : gl_(gl), impostor_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag")),
+    : gl_(gl),
+      impostor_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag")),
       box_(std::make_unique<ShaderProgram>(gl, "box.vert", "box.frag")),
-      line_(std::make_unique<ShaderProgram>(gl, "line.vert", "line.frag")), rounded_(std::make_unique<Mesh>(gl)),
-      boxes_(std::make_unique<Mesh>(gl)), markers_(std::make_unique<Mesh>(gl)), lines_(std::make_unique<Mesh>(gl)),
+      line_(std::make_unique<ShaderProgram>(gl, "line.vert", "line.frag")),
+      rounded_(std::make_unique<Mesh>(gl)),
+      boxes_(std::make_unique<Mesh>(gl)),
+      markers_(std::make_unique<Mesh>(gl)),
+      lines_(std::make_unique<Mesh>(gl)),
       meshCache_(std::make_unique<MeshCache>()) {
     rounded_->makeInstanced(quadTriangles());
     boxes_->makeInstanced(cubeTriangles());
@@ -149,8 +154,8 @@ void Renderer::setShapes(const ShapeInstances& instances) {
     // The instances of each geometry, in the order of their first shape.
     std::vector<std::pair<std::shared_ptr<const MeshGeometry>, std::vector<ShapeInstance>>> groups;
     for (const MeshInstance& mesh : instances.meshes) {
-        const auto group = std::find_if(groups.begin(), groups.end(),
-                                        [&](const auto& g) { return g.first == mesh.geometry; });
+        const auto group =
+            std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == mesh.geometry; });
         if (group != groups.end()) {
             group->second.push_back(mesh.instance);
         } else {
@@ -159,7 +164,8 @@ void Renderer::setShapes(const ShapeInstances& instances) {
     }
     decltype(meshes_) kept;
     for (auto& [geometry, shapeInstances] : groups) {
-        const auto old = std::find_if(meshes_.begin(), meshes_.end(), [&](const auto& m) { return m.first == geometry; });
+        const auto old =
+            std::find_if(meshes_.begin(), meshes_.end(), [&](const auto& m) { return m.first == geometry; });
         std::unique_ptr<Mesh> mesh;
         if (old != meshes_.end()) {
             mesh = std::move(old->second);

@@ -19,7 +19,7 @@ struct RenderOptions {
     bool translucent = false;      // every shape blended at `opacity`, drawn after everything opaque
     bool translucentBoxes = true;  // boxes blended: usually cells around the droplets
     float opacity = 0.35f;
-    bool lines = true;         // the line layers handed to setLines (octree, paths, glyphs, axes, grid)
+    bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid)
     Colour background{0.08f, 0.09f, 0.11f, 1.0f};
 };
 

@@ -23,7 +23,7 @@ struct LayerOptions {
     bool traversal = false;  // the cells of one ray's octree traversal
     bool paths = true;
     PathColouring pathColouring = PathColouring::Weight;
-    bool markers = false;    // event markers of the paths and the ray tree
+    bool markers = false;  // event markers of the paths and the ray tree
     bool rayTree = false;
     bool sources = false;
     bool axes = false;
@@ -47,9 +47,9 @@ struct LayerInputs {
 };
 
 // Sizes of the drawn helpers, as fractions of the diagonal of the scene's bounds.
-inline constexpr double kEscapeLength = 0.5;   // escaping paths and branches go on this far
+inline constexpr double kEscapeLength = 0.5;  // escaping paths and branches go on this far
 inline constexpr double kMarkerRadius = 0.006;
-inline constexpr double kSourceGlyph = 0.15;   // a source's arrow
+inline constexpr double kSourceGlyph = 0.15;  // a source's arrow
 inline constexpr double kAxisLength = 0.25;
 
 struct SceneLayers {

@@ -7,7 +7,7 @@ namespace dropscope::render {
 
 // A GLSL file of shaders/, compiled into the binary (cmake/EmbedShaders.cmake).
 struct EmbeddedShader {
-    std::string_view file;    // e.g. "impostor.frag"
+    std::string_view file;  // e.g. "impostor.frag"
     std::string_view source;
 };
 

@@ -13,7 +13,9 @@ struct Image {
     int height = 0;
     std::vector<std::uint8_t> rgba;
 
-    const std::uint8_t* pixel(int x, int y) const { return rgba.data() + 4 * (static_cast<std::size_t>(y) * width + x); }
+    const std::uint8_t* pixel(int x, int y) const {
+        return rgba.data() + 4 * (static_cast<std::size_t>(y) * width + x);
+    }
 };
 
 // The PNG file's bytes (stb_image_write).

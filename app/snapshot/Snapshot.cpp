@@ -32,7 +32,9 @@ render::Camera snapshotCamera(const Scene& scene, const SnapshotOptions& options
     // Looking along `up` leaves lookAt without a sideways axis: take the world axis least aligned instead.
     if (glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up))) < 1e-6) {
         const glm::dvec3 a = glm::abs(glm::normalize(view));
-        camera.up = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0) : a.y <= a.z ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+        camera.up = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0)
+                    : a.y <= a.z             ? glm::dvec3(0, 1, 0)
+                                             : glm::dvec3(0, 0, 1);
     }
     return camera;
 }

@@ -50,7 +50,8 @@ bool EmbreeDevice::monitor(void* self, ssize_t bytes, bool /*post*/) {
 
 void EmbreeDevice::onError(void* self, RTCError code, const char* message) {
     auto& device = *static_cast<EmbreeDevice*>(self);
-    if (device.error_.empty()) device.error_ = "error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : "");
+    if (device.error_.empty())
+        device.error_ = "error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : "");
 }
 
 void EmbreeDevice::check(const char* step) {

@@ -47,7 +47,7 @@ public:
     std::size_t shapeCount() const { return octree_.shapeCount(); }
     std::size_t slotCount() const { return octree_.slotCount(); }
     const Shape* shape(ShapeId id) const { return octree_.shape(id); }  // null for an empty slot
-    const std::string& nameOf(ShapeId id) const;                         // empty when unnamed or empty
+    const std::string& nameOf(ShapeId id) const;                        // empty when unnamed or empty
     std::optional<ShapeId> findShape(const std::string& name) const;
     // `sphere "d1"` when named, else `sphere 3`: how labels and messages name a shape.
     std::string shapeTitle(ShapeId id) const;

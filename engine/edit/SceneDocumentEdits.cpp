@@ -46,22 +46,22 @@ double sphereVolume(double radius) { return 4.0 / 3.0 * std::numbers::pi * radiu
 bool isMove(const Shape& before, const Shape& after) {
     if (before.kind() != after.kind() || before.mediumId() != after.mediumId()) return false;
     switch (before.kind()) {
-        case ShapeKind::Sphere:
-            return static_cast<const Sphere&>(before).radius() == static_cast<const Sphere&>(after).radius();
-        case ShapeKind::Ellipsoid:
-            return static_cast<const Ellipsoid&>(before).matrix() == static_cast<const Ellipsoid&>(after).matrix();
-        case ShapeKind::Box: {
-            const Eigen::Vector3d a = static_cast<const Box&>(before).edgeLengths();
-            const Eigen::Vector3d b = static_cast<const Box&>(after).edgeLengths();
-            return (a - b).cwiseAbs().maxCoeff() <= kSameEdgeRelative * a.maxCoeff();
-        }
-        case ShapeKind::Parametric:
-        case ShapeKind::Implicit: {
-            const auto& a = static_cast<const GeneralShape&>(before);
-            const auto& b = static_cast<const GeneralShape&>(after);
-            return a.transform().matrix() == b.transform().matrix() && a.presetName() == b.presetName() &&
-                   a.presetParameters() == b.presetParameters();
-        }
+    case ShapeKind::Sphere:
+        return static_cast<const Sphere&>(before).radius() == static_cast<const Sphere&>(after).radius();
+    case ShapeKind::Ellipsoid:
+        return static_cast<const Ellipsoid&>(before).matrix() == static_cast<const Ellipsoid&>(after).matrix();
+    case ShapeKind::Box: {
+        const Eigen::Vector3d a = static_cast<const Box&>(before).edgeLengths();
+        const Eigen::Vector3d b = static_cast<const Box&>(after).edgeLengths();
+        return (a - b).cwiseAbs().maxCoeff() <= kSameEdgeRelative * a.maxCoeff();
+    }
+    case ShapeKind::Parametric:
+    case ShapeKind::Implicit: {
+        const auto& a = static_cast<const GeneralShape&>(before);
+        const auto& b = static_cast<const GeneralShape&>(after);
+        return a.transform().matrix() == b.transform().matrix() && a.presetName() == b.presetName() &&
+               a.presetParameters() == b.presetParameters();
+    }
     }
     return false;
 }

@@ -65,11 +65,11 @@ std::unique_ptr<Shape> makeGeneral(const ShapeSpec& spec) {
 std::unique_ptr<Shape> makeShape(const ShapeSpec& spec) {
     std::unique_ptr<Shape> shape;
     switch (spec.kind) {
-        case ShapeKind::Sphere: shape = makeSphere(spec); break;
-        case ShapeKind::Ellipsoid: shape = makeEllipsoid(spec); break;
-        case ShapeKind::Box: shape = makeBox(spec); break;
-        case ShapeKind::Parametric:
-        case ShapeKind::Implicit: shape = makeGeneral(spec); break;
+    case ShapeKind::Sphere: shape = makeSphere(spec); break;
+    case ShapeKind::Ellipsoid: shape = makeEllipsoid(spec); break;
+    case ShapeKind::Box: shape = makeBox(spec); break;
+    case ShapeKind::Parametric:
+    case ShapeKind::Implicit: shape = makeGeneral(spec); break;
     }
     require(shape != nullptr, "unknown shape kind");
     shape->setMediumId(spec.medium);
@@ -81,36 +81,36 @@ ShapeSpec describeShape(const Shape& shape) {
     spec.kind = shape.kind();
     spec.medium = shape.mediumId();
     switch (shape.kind()) {
-        case ShapeKind::Sphere: {
-            const auto& sphere = static_cast<const Sphere&>(shape);
-            spec.center = sphere.center();
-            spec.radius = sphere.radius();
-            break;
-        }
-        case ShapeKind::Ellipsoid: {
-            const auto& ellipsoid = static_cast<const Ellipsoid&>(shape);
-            const EllipsoidFrame frame = ellipsoidFrame(ellipsoid);
-            const AxisAngle turn = axisAngleOf(frame.rotation);
-            spec.center = ellipsoid.center();
-            spec.semiAxes = frame.semiAxes;
-            spec.rotationAxis = turn.axis;
-            spec.rotationAngleDeg = turn.angleDeg;
-            break;
-        }
-        case ShapeKind::Box: {
-            const auto& box = static_cast<const Box&>(shape);
-            spec.center = box.center();
-            spec.boxMin = box.lower();
-            spec.boxMax = box.upper();
-            break;
-        }
-        case ShapeKind::Parametric:
-        case ShapeKind::Implicit: {
-            const auto& general = static_cast<const GeneralShape&>(shape);
-            spec.center = general.transform().translation();
-            spec.general = std::shared_ptr<const GeneralShape>(general.withTransform(general.transform()));
-            break;
-        }
+    case ShapeKind::Sphere: {
+        const auto& sphere = static_cast<const Sphere&>(shape);
+        spec.center = sphere.center();
+        spec.radius = sphere.radius();
+        break;
+    }
+    case ShapeKind::Ellipsoid: {
+        const auto& ellipsoid = static_cast<const Ellipsoid&>(shape);
+        const EllipsoidFrame frame = ellipsoidFrame(ellipsoid);
+        const AxisAngle turn = axisAngleOf(frame.rotation);
+        spec.center = ellipsoid.center();
+        spec.semiAxes = frame.semiAxes;
+        spec.rotationAxis = turn.axis;
+        spec.rotationAngleDeg = turn.angleDeg;
+        break;
+    }
+    case ShapeKind::Box: {
+        const auto& box = static_cast<const Box&>(shape);
+        spec.center = box.center();
+        spec.boxMin = box.lower();
+        spec.boxMax = box.upper();
+        break;
+    }
+    case ShapeKind::Parametric:
+    case ShapeKind::Implicit: {
+        const auto& general = static_cast<const GeneralShape&>(shape);
+        spec.center = general.transform().translation();
+        spec.general = std::shared_ptr<const GeneralShape>(general.withTransform(general.transform()));
+        break;
+    }
     }
     return spec;
 }

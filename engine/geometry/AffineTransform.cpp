@@ -72,9 +72,7 @@ AffineTransform AffineTransform::uniformScaling(double factor) {
 
 AffineTransform AffineTransform::shear(const Eigen::Matrix<double, 6, 1>& offDiagonal) {
     Eigen::Matrix3d m;  // A.6
-    m << 1.0, offDiagonal[0], offDiagonal[1],
-         offDiagonal[2], 1.0, offDiagonal[3],
-         offDiagonal[4], offDiagonal[5], 1.0;
+    m << 1.0, offDiagonal[0], offDiagonal[1], offDiagonal[2], 1.0, offDiagonal[3], offDiagonal[4], offDiagonal[5], 1.0;
     return {m, Eigen::Vector3d::Zero()};
 }
 
@@ -86,9 +84,7 @@ AffineTransform AffineTransform::then(const AffineTransform& next) const {
     return {next.m_ * m_, next.m_ * r0_ + next.r0_};
 }
 
-bool AffineTransform::isIdentity() const {
-    return m_ == Eigen::Matrix3d::Identity() && r0_ == Eigen::Vector3d::Zero();
-}
+bool AffineTransform::isIdentity() const { return m_ == Eigen::Matrix3d::Identity() && r0_ == Eigen::Vector3d::Zero(); }
 
 Eigen::AlignedBox3d AffineTransform::applyToBox(const Eigen::AlignedBox3d& box) const {
     // The image's extent along each axis: centre mapped, half-widths through |M|.

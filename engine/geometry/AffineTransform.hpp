@@ -14,8 +14,8 @@ struct TransformClass {
     // Only rotations, reflections and one uniform scaling K (all singular values equal within
     // tolerance::kMatrixRelative): areas scale by K^2, volumes by K^3, shapes keep their form.
     bool isSimilarity = true;
-    double uniformScale = 1.0;   // K when isSimilarity (the mean singular value), else 0
-    bool reflects = false;       // det M < 0
+    double uniformScale = 1.0;  // K when isSimilarity (the mean singular value), else 0
+    bool reflects = false;      // det M < 0
 };
 
 // r -> M r + r0 with M invertible: how a parametric or implicit shape is placed relative to its
@@ -30,9 +30,9 @@ public:
 
     // Builders (seed A.1-A.6). Each throws std::invalid_argument on input that gives no valid M.
     static AffineTransform rotation(const Eigen::Vector3d& axis, double angleRadians);  // A.1, A.2
-    static AffineTransform reflection(const Eigen::Vector3d& planeNormal);               // A.3
-    static AffineTransform scaling(const Eigen::Vector3d& factors);                       // A.4
-    static AffineTransform uniformScaling(double factor);                                 // A.5
+    static AffineTransform reflection(const Eigen::Vector3d& planeNormal);              // A.3
+    static AffineTransform scaling(const Eigen::Vector3d& factors);                     // A.4
+    static AffineTransform uniformScaling(double factor);                               // A.5
     // A.6: the 3x3 with ones on the diagonal and the six off-diagonal factors
     // (xy, xz, yx, yz, zx, zy) row by row.
     static AffineTransform shear(const Eigen::Matrix<double, 6, 1>& offDiagonal);

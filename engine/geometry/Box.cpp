@@ -16,11 +16,11 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
 Box::Box(const Point& lower, const Point& upper)
-    : lower_(lower), upper_(upper),
+    : lower_(lower),
+      upper_(upper),
       band_(tolerance::surfaceBand((upper - lower).maxCoeff(),
                                    std::max(lower.cwiseAbs().maxCoeff(), upper.cwiseAbs().maxCoeff()))) {
-    if (!lower.allFinite() || !upper.allFinite())
-        throw std::invalid_argument("box corners must be finite");
+    if (!lower.allFinite() || !upper.allFinite()) throw std::invalid_argument("box corners must be finite");
     if (!(lower.array() < upper.array()).all())
         throw std::invalid_argument("box min must be < max in every coordinate");
 }
@@ -80,8 +80,7 @@ double Box::entryDistance(const Point& p, const Direction& d) const {
 double Box::distanceToSurface(const Point& p, const Direction& d) const {
     if (!d || !p.allFinite()) return kNaN;
     switch (locatePoint(p)) {
-    case PointLocation::Inside:
-        return exitDistance(p, d);
+    case PointLocation::Inside: return exitDistance(p, d);
     case PointLocation::OnSurface: {
         for (int i = 0; i < 3; ++i) {  // the seed's six "travelling away" conditions (1.1.7)
             if (std::abs(p[i] - lower_[i]) <= band_ && d[i] <= 0.0) return 0.0;
@@ -90,8 +89,7 @@ double Box::distanceToSurface(const Point& p, const Direction& d) const {
         const double farSide = exitDistance(p, d);
         return farSide > band_ ? farSide : 0.0;
     }
-    case PointLocation::Outside:
-        return entryDistance(p, d);
+    case PointLocation::Outside: return entryDistance(p, d);
     }
     return kNaN;
 }
@@ -101,8 +99,14 @@ Direction Box::normal(const Point& p) const {  // seed 1.1.8
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
     int faces = 0;
     for (int i = 0; i < 3; ++i) {
-        if (std::abs(p[i] - lower_[i]) <= band_) { n[i] = -1.0; ++faces; }
-        if (std::abs(p[i] - upper_[i]) <= band_) { n[i] = 1.0; ++faces; }
+        if (std::abs(p[i] - lower_[i]) <= band_) {
+            n[i] = -1.0;
+            ++faces;
+        }
+        if (std::abs(p[i] - upper_[i]) <= band_) {
+            n[i] = 1.0;
+            ++faces;
+        }
     }
     return faces == 1 ? Direction(n) : Direction::invalid();  // undefined on edges and vertices
 }

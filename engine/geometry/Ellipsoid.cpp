@@ -49,7 +49,7 @@ Ellipsoid Ellipsoid::fromMatrix(const Point& center, const Eigen::Matrix3d& m) {
 Ellipsoid::Ellipsoid(const Point& center, const Eigen::Matrix3d& m) : center_(center), m_(m) {
     if (!center.allFinite()) throw std::invalid_argument("ellipsoid centre must be finite");
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(m);  // M = E Lambda E^T, seed eq. 1.25
-    const Eigen::Vector3d lambda = eigen.eigenvalues();            // ascending: longest axis first
+    const Eigen::Vector3d lambda = eigen.eigenvalues();             // ascending: longest axis first
     if (eigen.info() != Eigen::Success || !(lambda.minCoeff() > 0.0))
         throw std::invalid_argument("ellipsoid matrix is not positive definite: " + describeMatrix(m));
     if (lambda.maxCoeff() > lambda.minCoeff() * tolerance::kMaxSemiAxisRatio * tolerance::kMaxSemiAxisRatio)

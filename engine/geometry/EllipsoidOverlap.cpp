@@ -29,8 +29,7 @@ constexpr int kMaxSearchSteps = 100;
 Eigen::LLT<Eigen::Matrix3d> factorise(const Eigen::Matrix3d& m) {
     Eigen::LLT<Eigen::Matrix3d> cholesky(m);
     if (cholesky.info() != Eigen::Success)
-        throw std::invalid_argument(
-            "gilitschenskiMaximum: shape matrices must be positive definite");
+        throw std::invalid_argument("gilitschenskiMaximum: shape matrices must be positive definite");
     return cholesky;
 }
 
@@ -66,8 +65,7 @@ public:
         double balanceSlope;  // dphi/dt
     };
 
-    GilitschenskiFunction(const Eigen::Vector3d& dr, const Eigen::Matrix3d& shapeA,
-                          const Eigen::Matrix3d& shapeB)
+    GilitschenskiFunction(const Eigen::Vector3d& dr, const Eigen::Matrix3d& shapeA, const Eigen::Matrix3d& shapeB)
         : dr_(dr), shapeA_(shapeA), shapeB_(shapeB) {}
 
     // [lo, hi] around the maximiser, widened by 1 against rounding in the traces.
@@ -80,8 +78,7 @@ public:
     Sample at(double t) const {
         const double eMinus = std::exp(-t);
         const double ePlus = std::exp(t);
-        const Eigen::LLT<Eigen::Matrix3d> cholesky =
-            factorise((1.0 + eMinus) * shapeA_ + (1.0 + ePlus) * shapeB_);
+        const Eigen::LLT<Eigen::Matrix3d> cholesky = factorise((1.0 + eMinus) * shapeA_ + (1.0 + ePlus) * shapeB_);
         const Eigen::Vector3d y = cholesky.matrixL().solve(dr_);
         const Eigen::Vector3d x = cholesky.matrixU().solve(y);
         const Eigen::Vector3d ax = shapeA_ * x;
@@ -89,8 +86,7 @@ public:
         const double a = x.dot(ax);
         const double b = x.dot(bx);
         const Eigen::Vector3d z = cholesky.solve(Eigen::Vector3d(ePlus * bx - eMinus * ax));
-        return {y.squaredNorm(), std::log(a) - std::log(b) - 2.0 * t,
-                -2.0 * z.dot(ax) / a + 2.0 * z.dot(bx) / b - 2.0};
+        return {y.squaredNorm(), std::log(a) - std::log(b) - 2.0 * t, -2.0 * z.dot(ax) / a + 2.0 * z.dot(bx) / b - 2.0};
     }
 
 private:
@@ -131,8 +127,7 @@ bool touchingScaleOverlaps(double maximum, double bandA, double bandB) {
     return std::sqrt(maximum) < 1.0 - 0.5 * (bandA + bandB);
 }
 
-double quadraticForm(const Eigen::Vector3d& x, const Eigen::Vector3d& center,
-                     const Eigen::Matrix3d& m) {
+double quadraticForm(const Eigen::Vector3d& x, const Eigen::Vector3d& center, const Eigen::Matrix3d& m) {
     const Eigen::Vector3d offset = x - center;
     return offset.dot(m * offset);
 }
@@ -146,8 +141,7 @@ Point vertex(const Box& box, int corner) {
 
 // Minimum of K(t) over the edge p0 + (p1 - p0) t when it lies strictly between the endpoints (they
 // are vertices, tested on their own); +inf otherwise.
-double edgeInteriorMinimum(const Point& p0, const Point& p1, const Eigen::Vector3d& center,
-                           const Eigen::Matrix3d& m) {
+double edgeInteriorMinimum(const Point& p0, const Point& p1, const Eigen::Vector3d& center, const Eigen::Matrix3d& m) {
     const Eigen::Vector3d edge = p1 - p0;
     const Eigen::Vector3d mEdge = m * edge;
     const double a = edge.dot(mEdge);         // seed 000 eq. 1.37
@@ -160,8 +154,8 @@ double edgeInteriorMinimum(const Point& p0, const Point& p1, const Eigen::Vector
 
 // Minimum of K(u,v) over the face p0 + (p1 - p0) u + (p2 - p0) v when it lies inside [0,1]^2
 // (otherwise it is on an edge or vertex of the face, tested on their own); +inf otherwise.
-double faceInteriorMinimum(const Point& p0, const Point& p1, const Point& p2,
-                           const Eigen::Vector3d& center, const Eigen::Matrix3d& m) {
+double faceInteriorMinimum(const Point& p0, const Point& p1, const Point& p2, const Eigen::Vector3d& center,
+                           const Eigen::Matrix3d& m) {
     const Eigen::Vector3d e1 = p1 - p0;
     const Eigen::Vector3d e2 = p2 - p0;
     const Eigen::Vector3d me1 = m * e1;
@@ -179,9 +173,8 @@ double faceInteriorMinimum(const Point& p0, const Point& p1, const Point& p2,
     const double determinant = b * b - a * c;
     const double u = (c * d - b * e) / determinant;
     const double v = (a * e - b * d) / determinant;
-    if (!(0.0 <= u && u <= 1.0 && 0.0 <= v && v <= 1.0))
-        return kInfinity;                                   // seed 000 eqs. 1.54-1.55
-    return quadraticForm(p0 + u * e1 + v * e2, center, m);  // seed 000 eq. 1.56
+    if (!(0.0 <= u && u <= 1.0 && 0.0 <= v && v <= 1.0)) return kInfinity;  // seed 000 eqs. 1.54-1.55
+    return quadraticForm(p0 + u * e1 + v * e2, center, m);                  // seed 000 eq. 1.56
 }
 
 }  // namespace
@@ -190,40 +183,34 @@ double gilitschenskiMaximum(const Eigen::Vector3d& centerA, const Eigen::Matrix3
                             const Eigen::Vector3d& centerB, const Eigen::Matrix3d& shapeB) {
     // Put the pair in a canonical order so that swapping the ellipsoids gives the bit-identical
     // result (equal shapes differ only in the sign of dr, which rounds symmetrically).
-    const bool swap = std::lexicographical_compare(shapeB.data(), shapeB.data() + shapeB.size(),
-                                                   shapeA.data(), shapeA.data() + shapeA.size());
+    const bool swap = std::lexicographical_compare(shapeB.data(), shapeB.data() + shapeB.size(), shapeA.data(),
+                                                   shapeA.data() + shapeA.size());
     const Eigen::Matrix3d& first = swap ? shapeB : shapeA;
     const Eigen::Matrix3d& second = swap ? shapeA : shapeB;
-    const Eigen::Vector3d dr =
-        swap ? Eigen::Vector3d(centerA - centerB) : Eigen::Vector3d(centerB - centerA);
+    const Eigen::Vector3d dr = swap ? Eigen::Vector3d(centerA - centerB) : Eigen::Vector3d(centerB - centerA);
     if (dr.isZero(0.0)) return 0.0;                             // f vanishes identically
     return maximise(GilitschenskiFunction(dr, first, second));  // seed 000 eq. 1.34
 }
 
 bool ellipsoidsOverlap(const Ellipsoid& a, const Ellipsoid& b) {
-    const double maximum =
-        gilitschenskiMaximum(a.center(), a.inverseMatrix(), b.center(), b.inverseMatrix());
+    const double maximum = gilitschenskiMaximum(a.center(), a.inverseMatrix(), b.center(), b.inverseMatrix());
     return touchingScaleOverlaps(maximum, a.normalisedBand(), b.normalisedBand());
 }
 
 bool ellipsoidOverlapsSphere(const Ellipsoid& ellipsoid, const Sphere& sphere) {
     // A sphere is the ellipsoid with M^{-1} = R^2 I (seed 000 section 1.3).
-    const Eigen::Matrix3d sphereShape =
-        sphere.radius() * sphere.radius() * Eigen::Matrix3d::Identity();
-    const double maximum = gilitschenskiMaximum(ellipsoid.center(), ellipsoid.inverseMatrix(),
-                                                sphere.center(), sphereShape);
+    const Eigen::Matrix3d sphereShape = sphere.radius() * sphere.radius() * Eigen::Matrix3d::Identity();
+    const double maximum =
+        gilitschenskiMaximum(ellipsoid.center(), ellipsoid.inverseMatrix(), sphere.center(), sphereShape);
     return touchingScaleOverlaps(maximum, ellipsoid.normalisedBand(), normalisedBand(sphere));
 }
 
-double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::Matrix3d& m,
-                                   const Box& box) {
+double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::Matrix3d& m, const Box& box) {
     // The ellipsoid centre in the box: the form's unconstrained minimum 0 is attained there. The
     // seed tests the box centroid instead, which misses a small ellipsoid inside a large box away
     // from its centroid; this is the complete test. Otherwise the minimum of the convex form lies
     // on the boundary, in the relative interior of exactly one vertex, edge or face.
-    if ((center.array() >= box.lower().array()).all() &&
-        (center.array() <= box.upper().array()).all())
-        return 0.0;
+    if ((center.array() >= box.lower().array()).all() && (center.array() <= box.upper().array()).all()) return 0.0;
     double minimum = kInfinity;
     for (int corner = 0; corner < 8; ++corner)  // the 8 vertices (seed 000 section 1.3.5)
         minimum = std::min(minimum, quadraticForm(vertex(box, corner), center, m));
@@ -234,15 +221,13 @@ double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::M
         // The 4 edges parallel to `axis` start at the corners with that bit clear.
         for (int corner = 0; corner < 8; ++corner) {
             if ((corner & along) != 0) continue;
-            minimum = std::min(
-                minimum,
-                edgeInteriorMinimum(vertex(box, corner), vertex(box, corner | along), center, m));
+            minimum =
+                std::min(minimum, edgeInteriorMinimum(vertex(box, corner), vertex(box, corner | along), center, m));
         }
         // The 2 faces normal to `axis`.
         for (const int side : {0, along}) {
-            minimum = std::min(minimum,
-                               faceInteriorMinimum(vertex(box, side), vertex(box, side | across1),
-                                                   vertex(box, side | across2), center, m));
+            minimum = std::min(minimum, faceInteriorMinimum(vertex(box, side), vertex(box, side | across1),
+                                                            vertex(box, side | across2), center, m));
         }
     }
     return minimum;
@@ -251,8 +236,7 @@ double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::M
 bool ellipsoidOverlapsBox(const Ellipsoid& ellipsoid, const Box& box) {
     const double minimum = minimumQuadraticFormOverBox(ellipsoid.center(), ellipsoid.matrix(), box);
     // The box band, in length units, moves sqrt(Q) by at least band / (longest semi-axis).
-    return std::sqrt(minimum) <
-           1.0 - ellipsoid.normalisedBand() - box.surfaceBand() / ellipsoid.semiAxes().maxCoeff();
+    return std::sqrt(minimum) < 1.0 - ellipsoid.normalisedBand() - box.surfaceBand() / ellipsoid.semiAxes().maxCoeff();
 }
 
 }  // namespace dropscope

@@ -14,17 +14,17 @@ namespace {
 bool mayMeetBox(const Shape& shape, const Eigen::AlignedBox3d& box) {
     if (!shape.bounds().intersects(box)) return false;
     switch (shape.kind()) {
-        case ShapeKind::Box: return true;  // the bounds are the box
-        case ShapeKind::Sphere: {
-            const auto& sphere = static_cast<const Sphere&>(shape);
-            return box.squaredExteriorDistance(sphere.center()) <= sphere.radius() * sphere.radius();
-        }
-        case ShapeKind::Ellipsoid: {
-            const auto& ellipsoid = static_cast<const Ellipsoid&>(shape);
-            return minimumQuadraticFormOverBox(ellipsoid.center(), ellipsoid.matrix(), Box(box.min(), box.max())) <= 1.0;
-        }
-        case ShapeKind::Parametric:
-        case ShapeKind::Implicit: break;
+    case ShapeKind::Box: return true;  // the bounds are the box
+    case ShapeKind::Sphere: {
+        const auto& sphere = static_cast<const Sphere&>(shape);
+        return box.squaredExteriorDistance(sphere.center()) <= sphere.radius() * sphere.radius();
+    }
+    case ShapeKind::Ellipsoid: {
+        const auto& ellipsoid = static_cast<const Ellipsoid&>(shape);
+        return minimumQuadraticFormOverBox(ellipsoid.center(), ellipsoid.matrix(), Box(box.min(), box.max())) <= 1.0;
+    }
+    case ShapeKind::Parametric:
+    case ShapeKind::Implicit: break;
     }
     const auto& general = static_cast<const GeneralShape&>(shape);
     if (general.anyCoverBox([&](const Eigen::AlignedBox3d& cell) { return cell.intersects(box); })) return true;

@@ -95,7 +95,8 @@ void GeneralShape::checkUsable() const {
                                     ", area " + std::to_string(s) + ")");
     }
     if (baseMesh().vertices.empty() || baseMesh().triangles.empty()) {
-        throw std::invalid_argument("its surface is too fine for the tessellation (a droplet far smaller than the shape?)");
+        throw std::invalid_argument(
+            "its surface is too fine for the tessellation (a droplet far smaller than the shape?)");
     }
 }
 

@@ -15,8 +15,8 @@ class Ellipsoid;
 bool shapesOverlap(const Shape& a, const Shape& b);
 
 bool boxesOverlap(const Box& a, const Box& b);
-bool spheresOverlap(const Sphere& a, const Sphere& b);           // seed eq. 1.6
-bool sphereOverlapsBox(const Sphere& sphere, const Box& box);    // seed eqs. 1.7-1.8
+bool spheresOverlap(const Sphere& a, const Sphere& b);         // seed eq. 1.6
+bool sphereOverlapsBox(const Sphere& sphere, const Box& box);  // seed eqs. 1.7-1.8
 
 // Gilitschenski's K(lambda) test (seed eq. 1.34) for the ellipsoids
 // (r - c_i) . inv(shape_i) (r - c_i) <= 1, i.e. shape_i = M_i^{-1}.
@@ -31,8 +31,7 @@ bool ellipsoidOverlapsSphere(const Ellipsoid& ellipsoid, const Sphere& sphere);
 // Minimum over the box of (x - c) . M (x - c), by Eberly's feature tests (seed eqs. 1.35-1.56):
 // 0 when the ellipsoid centre lies in the box (not the seed's box-centroid test, which is
 // incomplete), else the least over the 8 vertices, the 12 edges and the 6 faces.
-double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::Matrix3d& m,
-                                   const Box& box);
+double minimumQuadraticFormOverBox(const Eigen::Vector3d& center, const Eigen::Matrix3d& m, const Box& box);
 bool ellipsoidOverlapsBox(const Ellipsoid& ellipsoid, const Box& box);
 
 }  // namespace dropscope

@@ -36,7 +36,7 @@ inline double quadricDistance(const RayQuadratic& q, PointLocation start, double
     case PointLocation::Outside:
         if (q.b >= 0.0 || q.discriminant <= 0.0) return kNaN;  // moving away, or missing
         if (2.0 * root / q.a <= chordBand) return kNaN;        // grazing touch: never enters
-        return q.c / (-q.b + root);                              // nearer root, cancellation-free
+        return q.c / (-q.b + root);                            // nearer root, cancellation-free
     }
     return kNaN;
 }

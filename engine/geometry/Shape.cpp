@@ -9,8 +9,7 @@
 namespace dropscope {
 
 bool Shape::encloses(const Shape&) const {
-    throw std::logic_error("encloses(Shape) is defined for boxes only, not for a " +
-                           std::string(typeName()));
+    throw std::logic_error("encloses(Shape) is defined for boxes only, not for a " + std::string(typeName()));
 }
 
 Eigen::AlignedBox3d Shape::bounds() const {

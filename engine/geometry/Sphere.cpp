@@ -9,8 +9,7 @@ namespace dropscope {
 
 Sphere::Sphere(const Point& center, double radius) : geometry_(SphereGeometry::make(center, radius)) {
     if (!center.allFinite()) throw std::invalid_argument("sphere centre must be finite");
-    if (!std::isfinite(radius) || radius <= 0.0)
-        throw std::invalid_argument("sphere radius must be finite and > 0");
+    if (!std::isfinite(radius) || radius <= 0.0) throw std::invalid_argument("sphere radius must be finite and > 0");
 }
 
 double Sphere::surfaceArea() const { return 4.0 * std::numbers::pi * radius() * radius(); }
@@ -19,9 +18,7 @@ double Sphere::volume() const { return 4.0 / 3.0 * std::numbers::pi * radius() *
 
 PointLocation Sphere::locatePoint(const Point& p) const { return geometry_.locate(p); }
 
-double Sphere::distanceToSurface(const Point& p, const Direction& d) const {
-    return geometry_.distanceToSurface(p, d);
-}
+double Sphere::distanceToSurface(const Point& p, const Direction& d) const { return geometry_.distanceToSurface(p, d); }
 
 Direction Sphere::normal(const Point& p) const {
     if (!surfaceContains(p)) return Direction::invalid();

@@ -10,7 +10,7 @@ Refraction refract(const Direction& incident, const Direction& outwardNormal, do
     const double cosine = i.dot(n);
     if (cosine == 0.0) return {InterfaceOutcome::Tangent, Direction::invalid()};
     const Eigen::Vector3d c = (n1 / n2) * i.cross(n);  // seed eq. 4.2
-    const double sine = c.norm();                       // t_perp, seed eq. 4.6
+    const double sine = c.norm();                      // t_perp, seed eq. 4.6
     if (sine > 1.0) return {InterfaceOutcome::TotalInternalReflection, Direction::invalid()};
     const double parallel = std::copysign(std::sqrt((1.0 - sine) * (1.0 + sine)), cosine);
     // |c| (n x c^) = n x c, which also holds at normal incidence where c^ is undefined.

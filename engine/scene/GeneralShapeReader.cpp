@@ -51,7 +51,8 @@ std::vector<BezierNet> readPatchRow(const JsonReader& row) {
     std::vector<BezierNet> nets;
     for (const JsonReader& netJson : row.elements()) {
         const std::vector<JsonReader> netRows = netJson.elements();
-        if (netRows.size() != 4) netJson.fail("must be 4 rows of 4 control points, got " + std::to_string(netRows.size()) + " rows");
+        if (netRows.size() != 4)
+            netJson.fail("must be 4 rows of 4 control points, got " + std::to_string(netRows.size()) + " rows");
         BezierNet net;
         for (std::size_t i = 0; i < 4; ++i) {
             const std::vector<JsonReader> points = netRows[i].elements();
@@ -132,7 +133,8 @@ std::shared_ptr<const ParametricSurface> readSurface(const JsonReader& json, con
 
 std::vector<double> parameterNumbers(const std::vector<PresetParameter>& parameters) {
     std::vector<double> numbers;
-    for (const PresetParameter& parameter : parameters) numbers.insert(numbers.end(), parameter.values.begin(), parameter.values.end());
+    for (const PresetParameter& parameter : parameters)
+        numbers.insert(numbers.end(), parameter.values.begin(), parameter.values.end());
     return numbers;
 }
 
@@ -142,7 +144,8 @@ std::shared_ptr<const ImplicitFunction> readFunction(const JsonReader& json, con
         const Eigen::Vector3d semiAxes = json.member("semi_axes").positiveVector3();
         const JsonReader exponentsJson = json.member("exponents");
         const std::vector<JsonReader> values = exponentsJson.elements();
-        if (values.size() != 2) exponentsJson.fail("must be [e1, e2], got " + std::to_string(values.size()) + " numbers");
+        if (values.size() != 2)
+            exponentsJson.fail("must be [e1, e2], got " + std::to_string(values.size()) + " numbers");
         const Eigen::Vector2d exponents(values[0].positive(), values[1].positive());
         return exponentsJson.construct([&] { return makeSuperellipsoid(semiAxes, exponents); });
     }
@@ -160,7 +163,8 @@ std::shared_ptr<const ImplicitFunction> readFunction(const JsonReader& json, con
         const double blend = json.member("blend").positive();
         return json.member("centers").construct([&] { return makeBlob(centers, radii, blend); });
     }
-    json.member("preset").fail("unknown implicit preset " + jsonpath::quoted(preset) + " (known: superellipsoid, blob)");
+    json.member("preset").fail("unknown implicit preset " + jsonpath::quoted(preset) +
+                               " (known: superellipsoid, blob)");
 }
 
 AffineTransform readOptionalTransform(const JsonReader& json) {
@@ -189,7 +193,8 @@ std::unique_ptr<Shape> placeOnBase(const JsonReader& json, BaseCache& cache, std
 
 std::unique_ptr<Shape> readParametricShape(const JsonReader& json, BaseCache& cache) {
     const std::string preset = json.member("preset").string();
-    return placeOnBase<ParametricShape>(json, cache, "parametric", preset, readSurface(json, preset), makeParametricBase);
+    return placeOnBase<ParametricShape>(json, cache, "parametric", preset, readSurface(json, preset),
+                                        makeParametricBase);
 }
 
 std::unique_ptr<Shape> readImplicitShape(const JsonReader& json, BaseCache& cache) {

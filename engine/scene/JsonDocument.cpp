@@ -32,8 +32,8 @@ std::string lineAndColumn(std::string_view text, std::size_t position) {
 // prefix, whose position we print ourselves for every kind of parser error.
 std::string parserMessage(const std::string& what) {
     std::string message = what;
-    if (const auto bracket = message.find("] "); message.starts_with("[json.exception.") &&
-                                                  bracket != std::string::npos) {
+    if (const auto bracket = message.find("] ");
+        message.starts_with("[json.exception.") && bracket != std::string::npos) {
         message.erase(0, bracket + 2);
     }
     if (message.starts_with("parse error")) {

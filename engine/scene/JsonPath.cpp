@@ -11,8 +11,7 @@ namespace {
 
 bool isIdentifier(const std::string& key) {
     const auto identifierChar = [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-               c == '-';
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
     };
     return !key.empty() && std::all_of(key.begin(), key.end(), identifierChar);
 }
@@ -24,9 +23,7 @@ std::string member(const std::string& parent, const std::string& key) {
     return parent.empty() ? key : parent + "." + key;
 }
 
-std::string element(const std::string& parent, std::size_t index) {
-    return parent + "[" + std::to_string(index) + "]";
-}
+std::string element(const std::string& parent, std::size_t index) { return parent + "[" + std::to_string(index) + "]"; }
 
 std::string quoted(const std::string& text) {
     return nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);

@@ -15,7 +15,6 @@ std::uint64_t splitMix64(std::uint64_t x) {
 
 }  // namespace
 
-RandomStream::RandomStream(std::uint64_t seed, std::uint64_t stream)
-    : engine_(splitMix64(splitMix64(seed) ^ stream)) {}
+RandomStream::RandomStream(std::uint64_t seed, std::uint64_t stream) : engine_(splitMix64(splitMix64(seed) ^ stream)) {}
 
 }  // namespace dropscope

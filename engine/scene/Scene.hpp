@@ -16,18 +16,18 @@ namespace dropscope {
 // Everything a scene file describes (docs/scene-format.md). Shape ids are indices into `shapes`:
 // the explicit shapes of "shapes" first, then those of "generators", in generator order.
 struct Scene {
-    std::string origin;          // file the scene was read from, for messages
+    std::string origin;  // file the scene was read from, for messages
     int formatVersion = 1;
     std::string unit = "mm";
     double unitInMetres = 1e-3;
     double wavelengthNm = 532.0;
-    MediumId ambient = 0;        // index into media
+    MediumId ambient = 0;  // index into media
     std::vector<Medium> media;
     std::vector<std::unique_ptr<Shape>> shapes;
     std::vector<std::string> shapeNames;  // parallel to shapes; empty when unnamed (always for generated)
     std::size_t explicitShapeCount = 0;   // shapes[0, explicitShapeCount) come from "shapes"
     std::vector<Source> sources;
-    OctreeSettings octree;       // scene key "octree"
+    OctreeSettings octree;          // scene key "octree"
     std::optional<SceneView> view;  // scene key "view": the renderer's starting camera
 
     const Medium& mediumOf(const Shape& shape) const { return media.at(shape.mediumId()); }

@@ -117,7 +117,8 @@ void readView(const JsonReader& json, Scene& scene) {
     if ((view.eye - view.target).norm() == 0.0) json.member("target").fail("must differ from eye");
     if (const auto up = json.optionalMember("up")) {
         view.up = up->direction();
-        if ((view.target - view.eye).cross(view.up.vector()).norm() == 0.0) up->fail("must not be parallel to target - eye");
+        if ((view.target - view.eye).cross(view.up.vector()).norm() == 0.0)
+            up->fail("must not be parallel to target - eye");
     }
     if (const auto fov = json.optionalMember("fov_deg")) {
         view.fovDeg = fov->positive();
@@ -134,8 +135,8 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     Scene scene;
     scene.origin = origin;
     readFormatVersion(root, scene);
-    root.expectKeys(
-        {"dropscope", "unit", "wavelength_nm", "ambient", "media", "shapes", "sources", "octree", "generators", "view"});
+    root.expectKeys({"dropscope", "unit", "wavelength_nm", "ambient", "media", "shapes", "sources", "octree",
+                     "generators", "view"});
     readUnit(root, scene);
     if (const auto wavelength = root.optionalMember("wavelength_nm")) scene.wavelengthNm = wavelength->positive();
     if (const auto media = root.optionalMember("media")) {
@@ -155,8 +156,6 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     return scene;
 }
 
-Scene loadScene(const std::filesystem::path& file) {
-    return parseScene(readJsonFileText(file), file.string());
-}
+Scene loadScene(const std::filesystem::path& file) { return parseScene(readJsonFileText(file), file.string()); }
 
 }  // namespace dropscope

@@ -101,8 +101,8 @@ std::vector<SizeClass> sizeClasses(const std::vector<Bounds>& bounds, std::vecto
     std::vector<std::size_t> counts;
     for (std::size_t id = 0; id < bounds.size(); ++id) {
         const double width = bounds[id].sizes().maxCoeff();
-        const auto k = static_cast<std::size_t>(std::max(0.0, std::floor(std::log(width / smallest) /
-                                                                          std::log(kSizeClassRatio))));
+        const auto k =
+            static_cast<std::size_t>(std::max(0.0, std::floor(std::log(width / smallest) / std::log(kSizeClassRatio))));
         if (k >= domains.size()) {
             domains.resize(k + 1);
             widths.resize(k + 1, 0.0);

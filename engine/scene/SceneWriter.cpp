@@ -71,25 +71,23 @@ Json shapeJson(const Shape& shape, const std::string& name, const std::vector<Me
     json["type"] = std::string(shape.typeName());
     if (!name.empty()) json["name"] = name;
     switch (spec.kind) {
-        case ShapeKind::Sphere:
-            json["center"] = vector3(spec.center);
-            json["radius"] = spec.radius;
-            break;
-        case ShapeKind::Ellipsoid:
-            json["center"] = vector3(spec.center);
-            json["semi_axes"] = vector3(spec.semiAxes);
-            if (spec.rotationAngleDeg != 0.0) {
-                json["rotation"] = {{"axis", vector3(spec.rotationAxis)}, {"angle_deg", spec.rotationAngleDeg}};
-            }
-            break;
-        case ShapeKind::Box:
-            json["min"] = vector3(spec.boxMin);
-            json["max"] = vector3(spec.boxMax);
-            break;
-        case ShapeKind::Parametric:
-        case ShapeKind::Implicit:
-            writeGeneral(static_cast<const GeneralShape&>(shape), json);
-            break;
+    case ShapeKind::Sphere:
+        json["center"] = vector3(spec.center);
+        json["radius"] = spec.radius;
+        break;
+    case ShapeKind::Ellipsoid:
+        json["center"] = vector3(spec.center);
+        json["semi_axes"] = vector3(spec.semiAxes);
+        if (spec.rotationAngleDeg != 0.0) {
+            json["rotation"] = {{"axis", vector3(spec.rotationAxis)}, {"angle_deg", spec.rotationAngleDeg}};
+        }
+        break;
+    case ShapeKind::Box:
+        json["min"] = vector3(spec.boxMin);
+        json["max"] = vector3(spec.boxMax);
+        break;
+    case ShapeKind::Parametric:
+    case ShapeKind::Implicit: writeGeneral(static_cast<const GeneralShape&>(shape), json); break;
     }
     json["medium"] = media[shape.mediumId()].name;
     return json;
@@ -105,7 +103,9 @@ Json sourceJson(const Source& source) {
 }
 
 Json viewJson(const SceneView& view) {
-    return {{"eye", vector3(view.eye)}, {"target", vector3(view.target)}, {"up", vector3(view.up.vector())},
+    return {{"eye", vector3(view.eye)},
+            {"target", vector3(view.target)},
+            {"up", vector3(view.up.vector())},
             {"fov_deg", view.fovDeg}};
 }
 

@@ -50,9 +50,8 @@ std::unique_ptr<Shape> readEllipsoid(const JsonReader& json) {
     if (!semiAxesJson) json.fail("missing required key \"semi_axes\" or \"matrix\"");
     const Eigen::Vector3d semiAxes = semiAxesJson->positiveVector3();
     const Eigen::Matrix3d rotation = rotationJson ? readRotation(*rotationJson) : Eigen::Matrix3d::Identity();
-    return json.construct([&] {
-        return std::make_unique<Ellipsoid>(Ellipsoid::fromSemiAxes(center, semiAxes, rotation));
-    });
+    return json.construct(
+        [&] { return std::make_unique<Ellipsoid>(Ellipsoid::fromSemiAxes(center, semiAxes, rotation)); });
 }
 
 }  // namespace

@@ -16,8 +16,7 @@ constexpr int kOccupancyExtraBits = 2;
 
 }  // namespace
 
-SpatialHashGrid::SpatialHashGrid(const Bounds& domain, double cellSize, std::size_t expectedEntries)
-    : domain_(domain) {
+SpatialHashGrid::SpatialHashGrid(const Bounds& domain, double cellSize, std::size_t expectedEntries) : domain_(domain) {
     if (!(cellSize > 0.0) || domain.isEmpty()) throw std::invalid_argument("SpatialHashGrid: bad domain or cell size");
     const Eigen::Vector3d extent = domain.sizes();
     cellSize_ = std::max(cellSize, extent.maxCoeff() / (kMaxCellsPerAxis - 1));

@@ -18,7 +18,9 @@ std::vector<std::unique_ptr<Shape>> cloneShapes(const Scene& scene) {
 }  // namespace
 
 OpticalScene::OpticalScene(const Scene& scene)
-    : media_(scene.media), ambient_(scene.ambient), octree_(cloneShapes(scene), scene.octree),
+    : media_(scene.media),
+      ambient_(scene.ambient),
+      octree_(cloneShapes(scene), scene.octree),
       parents_(octree_.slotCount(), kAmbient) {
     for (ShapeId id = 0; id < octree_.slotCount(); ++id) {
         const Shape* inner = octree_.shape(id);
@@ -40,9 +42,7 @@ ShapeId OpticalScene::smallestContainer(const Shape& inner, ShapeId innerId) con
     return best;
 }
 
-ShapeId OpticalScene::regionAt(const Point& p) const {
-    return octree_.locate(p).value_or(kAmbient);
-}
+ShapeId OpticalScene::regionAt(const Point& p) const { return octree_.locate(p).value_or(kAmbient); }
 
 ShapeId OpticalScene::regionAt(const Point& p, const Direction& d) const {
     // One walk down the cells holding p: the smallest shape that encloses p, or whose surface band p is

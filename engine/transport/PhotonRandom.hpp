@@ -11,7 +11,8 @@ namespace dropscope {
 // index), so a trace is bit-identical whatever the thread count or the order photons are run in.
 class PhotonRandom {
 public:
-    PhotonRandom(std::uint64_t seed, std::uint64_t photon) : key_{{seed, 0x64726f7073636f70ULL}}, counter_{{photon, 0, 0, 0}} {}
+    PhotonRandom(std::uint64_t seed, std::uint64_t photon)
+        : key_{{seed, 0x64726f7073636f70ULL}}, counter_{{photon, 0, 0, 0}} {}
 
     std::uint64_t bits() {
         if (next_ == kBlockSize) refill();

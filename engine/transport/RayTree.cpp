@@ -61,8 +61,8 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
         pending.pop_back();
         const MediumId medium = scene.mediumIdOf(branch.region);
         const auto leaf = [&](EventType type, double leafWeight, LostReason reason = LostReason::EventCap) {
-            Event event{type, branch.position, branch.direction, OpticalScene::kAmbient, medium, medium,
-                        std::nan(""), leafWeight};
+            Event event{type,   branch.position, branch.direction, OpticalScene::kAmbient,
+                        medium, medium,          std::nan(""),     leafWeight};
             event.lostReason = reason;
             tree.nodes.push_back({event, branch.parent, branch.depth});
         };
@@ -102,8 +102,8 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
             continue;
         }
         if (crossing.kind == SurfaceCrossing::Kind::Tangent) {
-            pending.push_back({branch.position, branch.direction, branch.region, branch.weight, branch.parent,
-                               branch.depth + 1});
+            pending.push_back(
+                {branch.position, branch.direction, branch.region, branch.weight, branch.parent, branch.depth + 1});
             continue;
         }
 

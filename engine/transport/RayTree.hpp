@@ -17,9 +17,9 @@ struct RayTreeSettings {
 };
 
 struct RayTreeNode {
-    Event event;           // event.weight: the branch's weight leaving this event
-    std::int32_t parent;   // -1 for the emission (node 0)
-    int depth;             // interface events between the emission and this node
+    Event event;          // event.weight: the branch's weight leaving this event
+    std::int32_t parent;  // -1 for the emission (node 0)
+    int depth;            // interface events between the emission and this node
 };
 
 // Every branch of one ray, for the debugger: at each interface both the reflected (weight R) and the

@@ -17,10 +17,10 @@ struct SurfaceCrossing {
     ShapeId regionBeyond = OpticalScene::kAmbient;       // the region a transmitted ray enters
     MediumId from = 0;
     MediumId to = 0;
-    double reflectance = 1.0;   // unpolarised R, 1 on total internal reflection
+    double reflectance = 1.0;  // unpolarised R, 1 on total internal reflection
     bool totalInternalReflection = false;
     Direction reflected;
-    Direction transmitted;      // invalid on total internal reflection
+    Direction transmitted;  // invalid on total internal reflection
 };
 
 // The ray travelling along `direction` in `region` has reached `point` on `shape`'s surface (a hit

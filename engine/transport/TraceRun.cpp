@@ -52,9 +52,7 @@ constexpr std::uint64_t kChunk = 256;
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 }  // namespace
 
@@ -77,7 +75,8 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     std::exception_ptr failure;
     std::atomic<bool> failed{false};
     const auto stopRequested = [&] {
-        return failed.load(std::memory_order_relaxed) || (control.stop && control.stop->load(std::memory_order_relaxed));
+        return failed.load(std::memory_order_relaxed) ||
+               (control.stop && control.stop->load(std::memory_order_relaxed));
     };
 
     int threadsUsed = 1;

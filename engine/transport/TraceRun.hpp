@@ -16,16 +16,16 @@ namespace dropscope {
 struct TraceSettings {
     std::uint64_t photons = 0;
     std::uint64_t seed = 1;
-    int bins = 180;                // angular bins over 0-180 degrees
-    int threads = 0;               // 0: all the machine has (omp_get_max_threads)
-    std::uint64_t paths = 0;       // record every event of photons [0, paths)
+    int bins = 180;           // angular bins over 0-180 degrees
+    int threads = 0;          // 0: all the machine has (omp_get_max_threads)
+    std::uint64_t paths = 0;  // record every event of photons [0, paths)
     TransportSettings transport;
 };
 
 // What the photons of a run came to. Only integer counts, so merging the tallies of any number of
 // threads in any order gives the same numbers.
 struct TraceTally {
-    std::uint64_t photons = 0;      // traced to the end
+    std::uint64_t photons = 0;  // traced to the end
     std::uint64_t escaped = 0;
     std::uint64_t absorbed = 0;
     std::uint64_t lost = 0;
@@ -50,7 +50,7 @@ struct TraceResult {
     TraceTally tally;
     std::vector<PhotonPath> paths;  // the recorded photons that were traced, by photon index
     std::uint64_t requested = 0;
-    bool partial = false;           // stopped before every requested photon was traced
+    bool partial = false;  // stopped before every requested photon was traced
     int threads = 1;
     double seconds = 0.0;
 };

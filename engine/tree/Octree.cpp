@@ -15,9 +15,7 @@ namespace {
 // every shape's surface band (1e-9 of its size), and costs only a few extra shapes per cell.
 constexpr double kMarginRelative = 1e-8;
 
-CellBounds inflated(const CellBounds& b, double by) {
-    return CellBounds(b.min().array() - by, b.max().array() + by);
-}
+CellBounds inflated(const CellBounds& b, double by) { return CellBounds(b.min().array() - by, b.max().array() + by); }
 
 // A cube around all the shapes, so that cells are cubes too.
 CellBounds cubeAround(const std::vector<std::unique_ptr<Shape>>& shapes, const CellBounds& mustContain) {
@@ -56,7 +54,8 @@ std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 Octree::Octree(std::vector<std::unique_ptr<Shape>> shapes, OctreeSettings settings)
     : shapes_(std::move(shapes)), settings_(settings) {
-    if (settings_.maxDepth < 0 || settings_.maxDepth > 30) throw std::invalid_argument("octree max_depth must be in 0..30");
+    if (settings_.maxDepth < 0 || settings_.maxDepth > 30)
+        throw std::invalid_argument("octree max_depth must be in 0..30");
     if (settings_.maxShapesPerLeaf < 1) throw std::invalid_argument("octree max_shapes_per_leaf must be >= 1");
     rebuild(cubeAround(shapes_, CellBounds()));
 }
@@ -77,8 +76,8 @@ void Octree::rebuild(const CellBounds& bounds) {
     const Eigen::Array3d scale = 2097151.0 / rootBounds_.sizes().array();  // 21 bits per axis
     for (std::size_t id = 0; id < shapes_.size(); ++id) {
         if (!shapes_[id]) continue;
-        const Eigen::Array3d cell = ((shapes_[id]->bounds().center() - rootBounds_.min()).array() * scale)
-                                        .max(0.0).min(2097151.0);
+        const Eigen::Array3d cell =
+            ((shapes_[id]->bounds().center() - rootBounds_.min()).array() * scale).max(0.0).min(2097151.0);
         order.emplace_back(mortonCode(static_cast<std::uint32_t>(cell.x()), static_cast<std::uint32_t>(cell.y()),
                                       static_cast<std::uint32_t>(cell.z())),
                            static_cast<ShapeId>(id));
@@ -113,7 +112,8 @@ void Octree::thaw() {
         Node& node = building_[index];
         node.firstChild = cell.firstChild;
         node.level = static_cast<std::uint32_t>(level);
-        for (std::uint32_t k = 0; k < cell.sphereCount; ++k) node.sphereIds.push_back(spheres_[cell.firstSphere + k].id);
+        for (std::uint32_t k = 0; k < cell.sphereCount; ++k)
+            node.sphereIds.push_back(spheres_[cell.firstSphere + k].id);
         node.otherIds.assign(others_.begin() + cell.firstOther, others_.begin() + cell.firstOther + cell.otherCount);
         return true;
     });

@@ -178,8 +178,8 @@ void Octree::forEachNode(Visit&& visit) const {
         const Cell& cell = cells_[top.node];
         if (!visit(top.node, cell, top.bounds, top.level) || cell.isLeaf()) continue;
         for (int child = 7; child >= 0; --child) {
-            stack.push_back({cell.firstChild + static_cast<std::uint32_t>(child), childBounds(top.bounds, child),
-                             top.level + 1});
+            stack.push_back(
+                {cell.firstChild + static_cast<std::uint32_t>(child), childBounds(top.bounds, child), top.level + 1});
         }
     }
 }

@@ -33,9 +33,9 @@ std::unique_ptr<BoundingBox> Octree::referenceTree() const {
             tree.forEachShapeIn(cell, [&](ShapeId id) { items.push_back({tree.shapes_[id]->clone(), id}); });
             if (!cell.isLeaf()) {
                 for (int child = 0; child < 8; ++child) {
-                    items.push_back({(*this)(cell.firstChild + static_cast<std::uint32_t>(child),
-                                             tree.childBounds(bounds, child)),
-                                     BoundingBox::kNotTerminal});
+                    items.push_back(
+                        {(*this)(cell.firstChild + static_cast<std::uint32_t>(child), tree.childBounds(bounds, child)),
+                         BoundingBox::kNotTerminal});
                 }
             }
             return group(bounds, items);

@@ -53,8 +53,8 @@ struct Octree::Traversal {
         for (int axis = 0; axis < 3; ++axis) {
             planeCrossing[axis] = crossing(axis, mid[axis]);
             // The half the ray is in at tEnter: the far half along d once it has crossed the mid-plane.
-            const bool upper = d[axis] == 0.0 ? p[axis] >= mid[axis]
-                                              : (planeCrossing[axis] <= tEnter) == (d[axis] > 0.0);
+            const bool upper =
+                d[axis] == 0.0 ? p[axis] >= mid[axis] : (planeCrossing[axis] <= tEnter) == (d[axis] > 0.0);
             child |= (upper ? 1 : 0) << axis;
         }
         // The (at most 4) children the ray crosses, in order; each mid-plane crossing flips one bit.
@@ -88,8 +88,8 @@ struct Octree::Traversal {
         }
         for (int k = 0; k < count; ++k) {
             if (hit.distance < from[k]) return;  // nothing further on can be nearer
-            visit(cell.firstChild + static_cast<std::uint32_t>(order[k]), tree.childBounds(bounds, order[k]),
-                  level + 1, from[k], to[k]);
+            visit(cell.firstChild + static_cast<std::uint32_t>(order[k]), tree.childBounds(bounds, order[k]), level + 1,
+                  from[k], to[k]);
         }
     }
 

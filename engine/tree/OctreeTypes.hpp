@@ -39,9 +39,9 @@ struct LevelStatistics {
     int level = 0;
     std::size_t cells = 0;
     std::size_t leaves = 0;
-    std::size_t shapesStored = 0;             // references held by cells of this level
-    std::vector<std::size_t> shapesPerLeaf;   // histogram: [k] = leaves holding k shapes
-    std::size_t bytes = 0;                    // nodes and their shape lists
+    std::size_t shapesStored = 0;            // references held by cells of this level
+    std::vector<std::size_t> shapesPerLeaf;  // histogram: [k] = leaves holding k shapes
+    std::size_t bytes = 0;                   // nodes and their shape lists
 };
 
 }  // namespace dropscope

@@ -16,8 +16,9 @@ namespace fs = std::filesystem;
 class AtomicFile : public ::testing::Test {
 protected:
     void SetUp() override {
-        directory_ = fs::temp_directory_path() /
-                     ("dropscope-atomic-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        directory_ =
+            fs::temp_directory_path() /
+            ("dropscope-atomic-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(directory_);
         fs::create_directories(directory_);
     }

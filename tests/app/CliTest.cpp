@@ -29,7 +29,9 @@ TEST(Cli, BadArgumentsExitTwoWithOneLine) {
 TEST(Cli, UnknownCommandIsNamed) {
     const CliRun run = runDropscope({"render", kOneSphere});
     expectOneLineFailure(run);
-    EXPECT_EQ(run.err, "dropscope: unknown command \"render\" (known: inspect, query, trace, snapshot) (see dropscope --help)\n");
+    EXPECT_EQ(
+        run.err,
+        "dropscope: unknown command \"render\" (known: inspect, query, trace, snapshot) (see dropscope --help)\n");
 }
 
 TEST(Cli, NoCommandPrintsHelpAndExitsTwo) {

@@ -51,8 +51,8 @@ TEST(InspectCommand, ParametricAndImplicitShapesShowTheirPreset) {
     const std::string gallery = kSourceDir + "/assets/scenes/shapes_gallery.json";
     const CliRun table = runDropscope({"inspect", gallery});
     ASSERT_EQ(table.status, kExitSuccess) << table.err;
-    for (const char* type : {"parametric bezier", "parametric torus", "parametric sphere", "implicit blob",
-                             "implicit superellipsoid"}) {
+    for (const char* type :
+         {"parametric bezier", "parametric torus", "parametric sphere", "implicit blob", "implicit superellipsoid"}) {
         EXPECT_NE(table.out.find(type), std::string::npos) << type << "\n" << table.out;
     }
     const CliRun run = runDropscope({"inspect", gallery, "--json"});
@@ -109,7 +109,8 @@ TEST(InspectCommand, JsonHasEveryDocumentedKeyAndFullPrecision) {
     EXPECT_TRUE(source["radius"].is_null());
     const auto& totals = report["totals"];
     EXPECT_EQ(totals["shapes"], 1);
-    EXPECT_EQ(totals["shapes_by_type"], nlohmann::json({{"box", 0}, {"ellipsoid", 0}, {"implicit", 0}, {"parametric", 0}, {"sphere", 1}}));
+    EXPECT_EQ(totals["shapes_by_type"],
+              nlohmann::json({{"box", 0}, {"ellipsoid", 0}, {"implicit", 0}, {"parametric", 0}, {"sphere", 1}}));
     EXPECT_DOUBLE_EQ(totals["volume"].get<double>(), 4.0 / 3.0 * std::numbers::pi * 8.0);
     EXPECT_EQ(totals["bounds"], shape["bounds"]);
 }

@@ -27,8 +27,9 @@ const std::string kOneSphere = kDataDir + "/scenes/one_sphere.json";  // r = 2 a
 class QueryCommand : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("dropscope-query-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                            "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = fs::temp_directory_path() /
+               ("dropscope-query-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir_);
     }
     void TearDown() override { fs::remove_all(dir_); }
@@ -52,10 +53,10 @@ protected:
 TEST_F(QueryCommand, HitsMatchClosedFormsAndMissesAreMinusOneNan) {
     const std::string rays = write("rays.csv",
                                    "ox,oy,oz,dx,dy,dz\n"
-                                   "1,2,-10,0,0,2\n"       // along the axis: 13 - 2 = 11
-                                   "1,2,3,1,0,0\n"         // from the centre: the radius
-                                   "2,2,-10,0,0,1\n"       // 1 off the axis: 13 - sqrt(3)
-                                   "9,9,9,1,0,0\n");       // a miss
+                                   "1,2,-10,0,0,2\n"  // along the axis: 13 - 2 = 11
+                                   "1,2,3,1,0,0\n"    // from the centre: the radius
+                                   "2,2,-10,0,0,1\n"  // 1 off the axis: 13 - sqrt(3)
+                                   "9,9,9,1,0,0\n");  // a miss
     const CliRun run = runDropscope({"query", kOneSphere, "--rays", rays, "--out", path("hits.csv")});
     ASSERT_EQ(run.status, kExitSuccess) << run.err;
     std::istringstream lines(read(path("hits.csv")));

@@ -181,7 +181,8 @@ TEST_F(SnapshotCamera, LookingAlongUpStillGivesAPicture) {
 
 TEST_F(SnapshotCamera, PhotonCountsAreBounded) {
     expectOneLineFailure(runDropscope({"snapshot", kOneSphere, "--out", out, "--paths", "1", "--photons", "-1"}));
-    expectOneLineFailure(runDropscope({"snapshot", kOneSphere, "--out", out, "--paths", "1", "--photons", "100000001"}));
+    expectOneLineFailure(
+        runDropscope({"snapshot", kOneSphere, "--out", out, "--paths", "1", "--photons", "100000001"}));
     expectOneLineFailure(runDropscope({"snapshot", kOneSphere, "--out", out, "--paths", "1", "--seed", "-1"}));
     EXPECT_FALSE(fs::exists(out));
 }

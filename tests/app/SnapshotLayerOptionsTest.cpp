@@ -65,8 +65,8 @@ TEST(SnapshotLayerOptions, EachLayerAddsItsColour) {
         {{"--traversal"}, [](int r, int g, int b) { return r < 60 && g > 200 && b > 170; }, 20},    // cyan
         {{"--ray-tree"}, [](int r, int g, int b) { return r > 200 && g > 190 && b < 80; }, 10},     // weight 1
         {{"--sources"}, [](int r, int g, int b) { return r > 230 && g > 220 && b > 100 && b < 180; }, 10},
-        {{"--axes"}, [](int r, int g, int b) { return r > 200 && g < 100 && b < 100; }, 3},          // x red
-        {{"--grid"},  // grey
+        {{"--axes"}, [](int r, int g, int b) { return r > 200 && g < 100 && b < 100; }, 3},  // x red
+        {{"--grid"},                                                                         // grey
          [](int r, int g, int b) { return r > 70 && r < 95 && g > 75 && g < 100 && b > 85 && b < 110; },
          20},
         {{"--paths", "10", "--colour-by", "event"},  // emissions white

@@ -59,9 +59,8 @@ TEST(GeneralShapeEdit, MovingIsOneUndoStepAndTheOctreeFollows) {
 TEST(GeneralShapeEdit, AMoveIntoAnotherShapeIsRefused) {
     SceneDocument document(sceneWithGeneralShapes());
     const Snapshot before(document);
-    const std::string refusal = refusalOf([&] {
-        document.modifyShape(2, withCenter(describeShape(*document.shape(2)), Point(-0.8, 0, 0)));
-    });
+    const std::string refusal =
+        refusalOf([&] { document.modifyShape(2, withCenter(describeShape(*document.shape(2)), Point(-0.8, 0, 0))); });
     EXPECT_NE(refusal.find("implicit blob"), std::string::npos) << refusal;
     EXPECT_NE(refusal.find("overlap"), std::string::npos) << refusal;
     EXPECT_TRUE(Snapshot(document) == before);

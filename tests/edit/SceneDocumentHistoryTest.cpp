@@ -3,9 +3,9 @@
 #include "edit/SceneDocument.hpp"
 #include "edit/SceneDocumentTestSupport.hpp"
 
+#include "geometry/RandomGeometry.hpp"
 #include "geometry/Sphere.hpp"
 #include "scene/SceneOverlaps.hpp"
-#include "geometry/RandomGeometry.hpp"
 
 #include <gtest/gtest.h>
 
@@ -93,17 +93,21 @@ TEST(SceneDocument, RandomEditsKeepTheOctreeExact) {
             spec.medium = 1;
             try {
                 switch (rng() % 8) {
-                    case 0: case 1: case 2: document.addShape(spec); break;
-                    case 3: if (!live.empty()) document.removeShape(live[rng() % live.size()]); break;
-                    case 4: case 5:
-                        if (!live.empty()) document.modifyShape(live[rng() % live.size()], spec, rng() % 2 == 0);
-                        break;
-                    case 6: document.undo(); break;
-                    default: document.redo(); break;
+                case 0:
+                case 1:
+                case 2: document.addShape(spec); break;
+                case 3:
+                    if (!live.empty()) document.removeShape(live[rng() % live.size()]);
+                    break;
+                case 4:
+                case 5:
+                    if (!live.empty()) document.modifyShape(live[rng() % live.size()], spec, rng() % 2 == 0);
+                    break;
+                case 6: document.undo(); break;
+                default: document.redo(); break;
                 }
                 ++accepted;
-            } catch (const EditRefused&) {
-            }
+            } catch (const EditRefused&) {}
             if (step == 120) {  // a cloud in the middle of it all
                 DropletCloudSpec cloud;
                 cloud.region = Eigen::AlignedBox3d(Point(-12, -12, -12), Point(12, 12, 12));

@@ -28,17 +28,27 @@ TEST(SceneDocument, MediaEditsValidateComputeAbsorptionAndUndo) {
 
     const Snapshot before(document);
     EXPECT_EQ(refusalOf([&] { document.addMedium({"", 1.0, {}, {}, 0.0}); }), "a medium name must not be empty");
-    EXPECT_EQ(refusalOf([&] { document.addMedium({"glass", 1.0, {}, {}, 0.0}); }),
+    EXPECT_EQ(refusalOf([&] {
+                  document.addMedium({"glass", 1.0, {}, {}, 0.0});
+              }),
               "medium name \"glass\" is already used");
     EXPECT_EQ(refusalOf([&] { document.setMedium(1, {"water", 0.0, {}, {}, 0.0}); }), "n must be finite and > 0");
     EXPECT_EQ(refusalOf([&] { document.setMedium(1, {"water", kNan, {}, {}, 0.0}); }), "n must be finite and > 0");
-    EXPECT_EQ(refusalOf([&] { document.setMedium(1, {"water", 1.3, 1e-9, 0.1, 0.0}); }),
+    EXPECT_EQ(refusalOf([&] {
+                  document.setMedium(1, {"water", 1.3, 1e-9, 0.1, 0.0});
+              }),
               "give either kappa or sigma, not both");
-    EXPECT_EQ(refusalOf([&] { document.setMedium(1, {"water", 1.3, -1e-9, {}, 0.0}); }),
+    EXPECT_EQ(refusalOf([&] {
+                  document.setMedium(1, {"water", 1.3, -1e-9, {}, 0.0});
+              }),
               "kappa must be finite and >= 0");
-    EXPECT_EQ(refusalOf([&] { document.setMedium(1, {"water", 1.3, {}, -1.0, 0.0}); }),
+    EXPECT_EQ(refusalOf([&] {
+                  document.setMedium(1, {"water", 1.3, {}, -1.0, 0.0});
+              }),
               "sigma must be finite and >= 0");
-    EXPECT_EQ(refusalOf([&] { document.setMedium(1, {"air", 1.3, {}, {}, 0.0}); }),
+    EXPECT_EQ(refusalOf([&] {
+                  document.setMedium(1, {"air", 1.3, {}, {}, 0.0});
+              }),
               "medium name \"air\" is already used");
     EXPECT_EQ(refusalOf([&] { document.setMedium(9, {"x", 1.3, {}, {}, 0.0}); }), "medium 9 is not defined (4 media)");
     EXPECT_EQ(refusalOf([&] { document.setAmbient(9); }), "medium 9 is not defined (4 media)");

@@ -61,9 +61,9 @@ TEST(SceneDocument, OverlappingAddIsRefusedNamingTheOtherShapeAndChangesNothing)
 
 TEST(SceneDocument, TouchingAndNestingAreAcceptedOtherOverlapsAreNot) {
     SceneDocument document(smallScene());
-    EXPECT_NO_THROW(document.addShape(sphereAt(Point(0, 2, 0), 1.0)));           // touches d1
-    EXPECT_NO_THROW(document.addShape(sphereAt(Point(0, 0, 7), 1.0)));           // in the cell
-    EXPECT_NO_THROW(document.addShape(sphereAt(Point(0.2, 0, 0), 0.5)));         // in d1
+    EXPECT_NO_THROW(document.addShape(sphereAt(Point(0, 2, 0), 1.0)));    // touches d1
+    EXPECT_NO_THROW(document.addShape(sphereAt(Point(0, 0, 7), 1.0)));    // in the cell
+    EXPECT_NO_THROW(document.addShape(sphereAt(Point(0.2, 0, 0), 0.5)));  // in d1
     ShapeSpec box;
     box.kind = ShapeKind::Box;
     box.boxMin = Point(-0.3, -0.3, -0.3);

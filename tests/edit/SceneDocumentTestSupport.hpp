@@ -54,8 +54,12 @@ struct Snapshot {
     std::size_t redo;
     std::string text;
     explicit Snapshot(const SceneDocument& d)
-        : revision(d.revision()), shapes(d.shapeCount()), slots(d.slotCount()), undo(d.undoDepth()),
-          redo(d.redoDepth()), text(sceneToJson(d.toScene())) {}
+        : revision(d.revision()),
+          shapes(d.shapeCount()),
+          slots(d.slotCount()),
+          undo(d.undoDepth()),
+          redo(d.redoDepth()),
+          text(sceneToJson(d.toScene())) {}
     bool operator==(const Snapshot&) const = default;
 };
 

@@ -136,8 +136,8 @@ TEST(ShapeSpec, EllipsoidFrameIsAProperRotation) {
         const Ellipsoid e = testing::randomEllipsoid(rng, Point::Zero(), 1.0);
         const EllipsoidFrame frame = ellipsoidFrame(e);
         EXPECT_NEAR(frame.rotation.determinant(), 1.0, kRecoveredRelative) << "case " << i;
-        const Eigen::Matrix3d m = frame.rotation * frame.semiAxes.cwiseAbs2().cwiseInverse().asDiagonal() *
-                                  frame.rotation.transpose();
+        const Eigen::Matrix3d m =
+            frame.rotation * frame.semiAxes.cwiseAbs2().cwiseInverse().asDiagonal() * frame.rotation.transpose();
         EXPECT_LE((m - e.matrix()).cwiseAbs().maxCoeff(), kMatrixRelative * e.matrix().cwiseAbs().maxCoeff())
             << "case " << i;
     }

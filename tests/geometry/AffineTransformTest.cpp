@@ -108,9 +108,10 @@ TEST(AffineTransform, NormalsStayPerpendicularToMappedTangents) {
 TEST(AffineTransform, NormalsStayOutwardUnderReflections) {
     Rng rng(12);
     for (int i = 0; i < 50; ++i) {
-        const AffineTransform t = AffineTransform::reflection(testing::randomDirection(rng).vector())
-                                      .then(AffineTransform(testing::randomRotation(rng) * Eigen::Vector3d(1, 2, 0.5).asDiagonal(),
-                                                            testing::randomPoint(rng, 1.0)));
+        const AffineTransform t =
+            AffineTransform::reflection(testing::randomDirection(rng).vector())
+                .then(AffineTransform(testing::randomRotation(rng) * Eigen::Vector3d(1, 2, 0.5).asDiagonal(),
+                                      testing::randomPoint(rng, 1.0)));
         ASSERT_TRUE(t.classification().reflects);
         const Point onSurface = testing::randomPoint(rng, 1.0).cwiseProduct(Eigen::Vector3d(1, 1, 0));
         const Point inside = onSurface - Eigen::Vector3d::UnitZ();
@@ -124,7 +125,8 @@ TEST(AffineTransform, NormalsStayOutwardUnderReflections) {
 
 TEST(AffineTransform, BoxImageIsTheBoundsOfTheMappedCorners) {
     Rng rng(3);
-    const AffineTransform t(testing::randomRotation(rng) * Eigen::Vector3d(1, 2, 3).asDiagonal(), Eigen::Vector3d(4, 5, 6));
+    const AffineTransform t(testing::randomRotation(rng) * Eigen::Vector3d(1, 2, 3).asDiagonal(),
+                            Eigen::Vector3d(4, 5, 6));
     const Eigen::AlignedBox3d box(Point(-1, 0, 2), Point(1, 3, 2.5));
     Eigen::AlignedBox3d corners;
     for (int c = 0; c < 8; ++c) corners.extend(t.apply(box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c))));

@@ -37,17 +37,15 @@ std::string caseName(int i) { return "case " + std::to_string(i); }
 // Minimum of `form` over the surface of the ellipsoid center + rotation diag(semiAxes) s, |s| = 1:
 // a 400 x 400 grid of polar angles, then a pattern search around the best grid point.
 template <class Form>
-double surfaceMinimum(const Point& center, const Eigen::Vector3d& semiAxes,
-                      const Eigen::Matrix3d& rotation, const Form& form) {
+double surfaceMinimum(const Point& center, const Eigen::Vector3d& semiAxes, const Eigen::Matrix3d& rotation,
+                      const Form& form) {
     const Eigen::Matrix3d stretch = rotation * semiAxes.asDiagonal();
     const auto value = [&](double theta, double phi) {
-        const Eigen::Vector3d s(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                                std::cos(theta));
+        const Eigen::Vector3d s(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
         return form(Point(center + stretch * s));
     };
     constexpr int kGrid = 400;
-    constexpr std::array<std::array<double, 2>, 4> kMoves{
-        {{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}}};
+    constexpr std::array<std::array<double, 2>, 4> kMoves{{{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}}};
     const double thetaStep = kPi / kGrid;
     const double phiStep = 2.0 * kPi / kGrid;
     double best = std::numeric_limits<double>::infinity();
@@ -109,8 +107,7 @@ BoxMinimum boxMinimum(const Point& center, const Eigen::Matrix3d& m, const Box& 
         double largestMove = 0.0;
         for (int axis = 0; axis < 3; ++axis) {
             const double slope = (m * (x - center))[axis];
-            const double target =
-                std::clamp(x[axis] - slope / m(axis, axis), box.lower()[axis], box.upper()[axis]);
+            const double target = std::clamp(x[axis] - slope / m(axis, axis), box.lower()[axis], box.upper()[axis]);
             largestMove = std::max(largestMove, std::abs(target - x[axis]));
             x[axis] = target;
         }
@@ -131,16 +128,14 @@ double vertexMinimum(const Point& center, const Eigen::Matrix3d& m, const Box& b
     double minimum = std::numeric_limits<double>::infinity();
     for (int corner = 0; corner < 8; ++corner) {
         Point v;
-        for (int i = 0; i < 3; ++i)
-            v[i] = ((corner >> i) & 1) != 0 ? box.upper()[i] : box.lower()[i];
+        for (int i = 0; i < 3; ++i) v[i] = ((corner >> i) & 1) != 0 ? box.upper()[i] : box.lower()[i];
         minimum = std::min(minimum, (v - center).dot(m * (v - center)));
     }
     return minimum;
 }
 
 Eigen::Matrix3d randomShapeMatrix(Rng& rng) {
-    const Eigen::Vector3d semiAxes(uniform(rng, 0.2, 2.0), uniform(rng, 0.2, 2.0),
-                                   uniform(rng, 0.2, 2.0));
+    const Eigen::Vector3d semiAxes(uniform(rng, 0.2, 2.0), uniform(rng, 0.2, 2.0), uniform(rng, 0.2, 2.0));
     const Eigen::Matrix3d rotation = testing::randomRotation(rng);
     return rotation * semiAxes.cwiseAbs2().asDiagonal() * rotation.transpose();
 }
@@ -157,8 +152,8 @@ TEST(GilitschenskiMaximum, TwoSpheresGiveCentreDistanceOverRadiusSumSquared) {
         const double r1 = std::exp(uniform(rng, -3.0, 3.0));
         const double r2 = std::exp(uniform(rng, -3.0, 3.0));
         const double expected = (c2 - c1).squaredNorm() / ((r1 + r2) * (r1 + r2));
-        const double actual = gilitschenskiMaximum(c1, r1 * r1 * Eigen::Matrix3d::Identity(), c2,
-                                                   r2 * r2 * Eigen::Matrix3d::Identity());
+        const double actual =
+            gilitschenskiMaximum(c1, r1 * r1 * Eigen::Matrix3d::Identity(), c2, r2 * r2 * Eigen::Matrix3d::Identity());
         EXPECT_NEAR(actual, expected, 1e-13 * expected);
     }
 }
@@ -198,22 +193,18 @@ TEST(GilitschenskiMaximum, MatchesGridSearchForElongatedPairs) {
         const auto shape = [&] {
             const double size = std::exp(uniform(rng, -3.5, 3.5));
             const Eigen::Vector3d semiAxes =
-                size * Eigen::Vector3d(std::exp(uniform(rng, -4.5, 4.5)),
-                                       std::exp(uniform(rng, -4.5, 4.5)),
+                size * Eigen::Vector3d(std::exp(uniform(rng, -4.5, 4.5)), std::exp(uniform(rng, -4.5, 4.5)),
                                        std::exp(uniform(rng, -4.5, 4.5)));
             const Eigen::Matrix3d rotation = testing::randomRotation(rng);
-            return Eigen::Matrix3d(rotation * semiAxes.cwiseAbs2().asDiagonal() *
-                                   rotation.transpose());
+            return Eigen::Matrix3d(rotation * semiAxes.cwiseAbs2().asDiagonal() * rotation.transpose());
         };
         const Eigen::Matrix3d shape1 = shape();
         const Eigen::Matrix3d shape2 = shape();
         const Point c1 = testing::randomPoint(rng, 1.0);
-        const Point c2 =
-            c1 + std::exp(uniform(rng, -3.0, 3.0)) * testing::randomDirection(rng).vector();
+        const Point c2 = c1 + std::exp(uniform(rng, -3.0, 3.0)) * testing::randomDirection(rng).vector();
         const Eigen::Vector3d dr = c2 - c1;
         const auto f = [&](double t) {
-            const Eigen::Matrix3d sum =
-                shape1 * (1.0 + std::exp(-t)) + shape2 * (1.0 + std::exp(t));
+            const Eigen::Matrix3d sum = shape1 * (1.0 + std::exp(-t)) + shape2 * (1.0 + std::exp(t));
             return dr.dot(sum.ldlt().solve(dr));
         };
         constexpr int kGrid = 20000;
@@ -263,10 +254,8 @@ TEST(EllipsoidOverlap, AxisAlignedPairsTouchAtTheSumOfSemiAxes) {
         Rng rng(static_cast<Rng::result_type>(i));
         const int axis = i % 3;
         const Point centerA = testing::randomPoint(rng, 5.0);
-        const Eigen::Vector3d semiA(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0),
-                                    uniform(rng, 0.1, 2.0));
-        const Eigen::Vector3d semiB(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0),
-                                    uniform(rng, 0.1, 2.0));
+        const Eigen::Vector3d semiA(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0));
+        const Eigen::Vector3d semiB(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0));
         const double radius = uniform(rng, 0.1, 2.0);
         const Ellipsoid a = Ellipsoid::fromSemiAxes(centerA, semiA);
         const auto displaced = [&](double reach, double factor) {
@@ -278,8 +267,7 @@ TEST(EllipsoidOverlap, AxisAlignedPairsTouchAtTheSumOfSemiAxes) {
             {{1.0, false}, {1.0 - 1e-6, true}, {1.0 + 1e-6, false}}};
         for (const auto& [factor, overlapping] : kFactors) {
             SCOPED_TRACE("factor " + std::to_string(factor));
-            const Ellipsoid b =
-                Ellipsoid::fromSemiAxes(displaced(semiA[axis] + semiB[axis], factor), semiB);
+            const Ellipsoid b = Ellipsoid::fromSemiAxes(displaced(semiA[axis] + semiB[axis], factor), semiB);
             const Sphere s(displaced(semiA[axis] + radius, factor), radius);
             EXPECT_EQ(a.overlaps(b), overlapping);
             EXPECT_EQ(a.overlaps(s), overlapping);
@@ -295,13 +283,11 @@ TEST(EllipsoidOverlap, RotatedPairsMatchBruteForce) {
         SCOPED_TRACE(caseName(i));
         Rng rng(static_cast<Rng::result_type>(i));
         const Point centerA = testing::randomPoint(rng, 3.0);
-        const Eigen::Vector3d semiA(uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5),
-                                    uniform(rng, 0.3, 1.5));
+        const Eigen::Vector3d semiA(uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5));
         const Eigen::Matrix3d rotationA =
             rotationAboutAxis(testing::randomDirection(rng), uniform(rng, 0.0, 2.0 * kPi));
         const Ellipsoid a = Ellipsoid::fromSemiAxes(centerA, semiA, rotationA);
-        const Eigen::Vector3d semiB(uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5),
-                                    uniform(rng, 0.3, 1.5));
+        const Eigen::Vector3d semiB(uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5), uniform(rng, 0.3, 1.5));
         const double reach = uniform(rng, 0.0, 1.1 * (semiA.maxCoeff() + semiB.maxCoeff()));
         const Point centerB = centerA + reach * testing::randomDirection(rng).vector();
         std::unique_ptr<Shape> b;
@@ -316,8 +302,8 @@ TEST(EllipsoidOverlap, RotatedPairsMatchBruteForce) {
             const Eigen::Matrix3d rotationB =
                 rotationAboutAxis(testing::randomDirection(rng), uniform(rng, 0.0, 2.0 * kPi));
             const Ellipsoid ellipsoid = Ellipsoid::fromSemiAxes(centerB, semiB, rotationB);
-            minimum = surfaceMinimum(centerA, semiA, rotationA,
-                                     [&](const Point& x) { return ellipsoid.quadraticForm(x); });
+            minimum =
+                surfaceMinimum(centerA, semiA, rotationA, [&](const Point& x) { return ellipsoid.quadraticForm(x); });
             b = std::make_unique<Ellipsoid>(ellipsoid);
         }
         // A's surface enters B, or B lies inside A and so does its centre.
@@ -344,8 +330,8 @@ TEST(EllipsoidOverlap, IsSymmetric) {
         Rng rng(static_cast<Rng::result_type>(i));
         const Ellipsoid a = testing::randomEllipsoid(rng, Point::Zero(), 1.0);
         const Ellipsoid b = testing::randomEllipsoid(rng, Point::Zero(), 1.0);
-        const double scale = std::sqrt(
-            gilitschenskiMaximum(a.center(), a.inverseMatrix(), b.center(), b.inverseMatrix()));
+        const double scale =
+            std::sqrt(gilitschenskiMaximum(a.center(), a.inverseMatrix(), b.center(), b.inverseMatrix()));
         // Both scaled by sqrt(max f) about their centres (M -> M / max f) touch.
         const Ellipsoid aTouching = Ellipsoid::fromMatrix(a.center(), a.matrix() / (scale * scale));
         const Ellipsoid bTouching = Ellipsoid::fromMatrix(b.center(), b.matrix() / (scale * scale));
@@ -390,9 +376,8 @@ TEST(EllipsoidBoxOverlap, CentreInsideTheBoxGivesZero) {
 // faces are all outside the ellipsoid.
 TEST(EllipsoidBoxOverlap, SmallEllipsoidInsideLargeBoxAwayFromItsCentroid) {
     const Box box(Point(0.0, 0.0, 0.0), Point(10.0, 10.0, 10.0));
-    const Ellipsoid e =
-        Ellipsoid::fromSemiAxes(Point(2.0, 3.0, 7.0), Eigen::Vector3d(0.5, 0.3, 0.2),
-                                rotationAboutAxis(Direction(1.0, 2.0, 3.0), 0.7));
+    const Ellipsoid e = Ellipsoid::fromSemiAxes(Point(2.0, 3.0, 7.0), Eigen::Vector3d(0.5, 0.3, 0.2),
+                                                rotationAboutAxis(Direction(1.0, 2.0, 3.0), 0.7));
     EXPECT_GT(e.quadraticForm(box.center()), 1.0);
     EXPECT_EQ(minimumQuadraticFormOverBox(e.center(), e.matrix(), box), 0.0);
     EXPECT_TRUE(e.overlaps(box));
@@ -402,9 +387,8 @@ TEST(EllipsoidBoxOverlap, SmallEllipsoidInsideLargeBoxAwayFromItsCentroid) {
 TEST(EllipsoidBoxOverlap, CrossingOnlyOneEdge) {
     const Box box(Point(0.0, 0.0, 0.0), Point(2.0, 2.0, 2.0));
     // Long axis along (1,1,0), pointing at the edge x = y = 0 and crossing it at z = 1.
-    const Ellipsoid e =
-        Ellipsoid::fromSemiAxes(Point(-0.3, -0.3, 1.0), Eigen::Vector3d(0.8, 0.3, 0.6),
-                                rotationAboutAxis(Direction(0.0, 0.0, 1.0), kPi / 4.0));
+    const Ellipsoid e = Ellipsoid::fromSemiAxes(Point(-0.3, -0.3, 1.0), Eigen::Vector3d(0.8, 0.3, 0.6),
+                                                rotationAboutAxis(Direction(0.0, 0.0, 1.0), kPi / 4.0));
     const BoxMinimum reference = boxMinimum(e.center(), e.matrix(), box);
     EXPECT_EQ(boundCount(reference.at, box), 2);  // the closest point is inside an edge
     EXPECT_GT(vertexMinimum(e.center(), e.matrix(), box), 1.0);
@@ -416,9 +400,8 @@ TEST(EllipsoidBoxOverlap, CrossingOnlyOneEdge) {
 
 TEST(EllipsoidBoxOverlap, CrossingOnlyOneFaceInterior) {
     const Box box(Point(0.0, 0.0, 0.0), Point(2.0, 2.0, 2.0));
-    const Ellipsoid e =
-        Ellipsoid::fromSemiAxes(Point(1.2, 0.9, -0.2), Eigen::Vector3d(0.5, 0.4, 0.3),
-                                rotationAboutAxis(Direction(1.0, -1.0, 2.0), 0.4));
+    const Ellipsoid e = Ellipsoid::fromSemiAxes(Point(1.2, 0.9, -0.2), Eigen::Vector3d(0.5, 0.4, 0.3),
+                                                rotationAboutAxis(Direction(1.0, -1.0, 2.0), 0.4));
     const BoxMinimum reference = boxMinimum(e.center(), e.matrix(), box);
     EXPECT_EQ(boundCount(reference.at, box), 1);  // the closest point is inside a face
     EXPECT_GT(vertexMinimum(e.center(), e.matrix(), box), 1.0);
@@ -429,8 +412,7 @@ TEST(EllipsoidBoxOverlap, CrossingOnlyOneFaceInterior) {
 
     // Axis-aligned: the closest point is straight above the centre, at Q = (0.2 / 0.3)^2.
     const Ellipsoid aligned = Ellipsoid::fromSemiAxes(e.center(), Eigen::Vector3d(0.5, 0.4, 0.3));
-    EXPECT_NEAR(minimumQuadraticFormOverBox(aligned.center(), aligned.matrix(), box), 4.0 / 9.0,
-                1e-15);
+    EXPECT_NEAR(minimumQuadraticFormOverBox(aligned.center(), aligned.matrix(), box), 4.0 / 9.0, 1e-15);
 }
 
 TEST(EllipsoidBoxOverlap, TouchingAFaceIsNotOverlapping) {
@@ -442,11 +424,9 @@ TEST(EllipsoidBoxOverlap, TouchingAFaceIsNotOverlapping) {
     EXPECT_NEAR(minimumQuadraticFormOverBox(touching.center(), touching.matrix(), box), 1.0, 1e-15);
     EXPECT_FALSE(touching.overlaps(box));
     EXPECT_FALSE(box.overlaps(touching));
-    const Ellipsoid closer =
-        Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5 * (1.0 - 1e-6)), semiAxes, rotation);
+    const Ellipsoid closer = Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5 * (1.0 - 1e-6)), semiAxes, rotation);
     EXPECT_TRUE(closer.overlaps(box));
-    const Ellipsoid further =
-        Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5 * (1.0 + 1e-6)), semiAxes, rotation);
+    const Ellipsoid further = Ellipsoid::fromSemiAxes(Point(1.0, 1.0, -0.5 * (1.0 + 1e-6)), semiAxes, rotation);
     EXPECT_FALSE(further.overlaps(box));
 }
 
@@ -471,10 +451,8 @@ TEST(EllipsoidOverlap, SampledVolumeAgreesWithVerdict) {
         Rng rng(static_cast<Rng::result_type>(i));
         const Ellipsoid a = testing::randomEllipsoid(rng, Point::Zero(), 1.0);
         const std::unique_ptr<Shape> b = testing::randomShape(rng, i, Point::Zero(), 1.0);
-        const Point lower(std::max(a.xMin(), b->xMin()), std::max(a.yMin(), b->yMin()),
-                          std::max(a.zMin(), b->zMin()));
-        const Point upper(std::min(a.xMax(), b->xMax()), std::min(a.yMax(), b->yMax()),
-                          std::min(a.zMax(), b->zMax()));
+        const Point lower(std::max(a.xMin(), b->xMin()), std::max(a.yMin(), b->yMin()), std::max(a.zMin(), b->zMin()));
+        const Point upper(std::min(a.xMax(), b->xMax()), std::min(a.yMax(), b->yMax()), std::min(a.zMax(), b->zMax()));
         const bool overlaps = a.overlaps(*b);
         if (!(lower.array() < upper.array()).all()) {
             EXPECT_FALSE(overlaps);  // disjoint bounding boxes

@@ -1,9 +1,9 @@
 #include "geometry/Ellipsoid.hpp"
 
+#include <gtest/gtest.h>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
-#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,8 +30,8 @@ double seedOctantIntegral(double a, double b, double c) {
 
 // Seed eq. 1.30 (Legendre form), valid for a > b > c.
 double seedLegendreForm(double a, double b, double c) {
-    const double delta = 1.0 - c * c / (a * a);   // eq. 1.31
-    const double epsilon = 1.0 - c * c / (b * b); // eq. 1.32
+    const double delta = 1.0 - c * c / (a * a);    // eq. 1.31
+    const double epsilon = 1.0 - c * c / (b * b);  // eq. 1.32
     const double phi = std::asin(std::sqrt(delta));
     const double k = std::sqrt(epsilon / delta);
     const double f = boost::math::ellint_1(k, phi);

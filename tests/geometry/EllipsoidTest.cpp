@@ -101,8 +101,7 @@ TEST(Ellipsoid, NormalMatchesSeedEq163ForAxisAligned) {
     const Ellipsoid e = Ellipsoid::fromSemiAxes(Point::Zero(), Eigen::Vector3d(a, b, c));
     const double theta = 0.7, phi = 1.1;
     const Point p(a * std::sin(theta) * std::cos(phi), b * std::sin(theta) * std::sin(phi), c * std::cos(theta));
-    const Eigen::Vector3d expected =
-        Eigen::Vector3d(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c)).normalized();
+    const Eigen::Vector3d expected = Eigen::Vector3d(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c)).normalized();
     const Direction n = e.normal(p);
     ASSERT_TRUE(n);
     EXPECT_TRUE(n.vector().isApprox(expected, 1e-14));
@@ -116,8 +115,7 @@ TEST(Ellipsoid, EqualAxesBehaveLikeASphere) {
         const double r = testing::uniform(rng, 0.1, 2.0);
         const Point c = testing::randomPoint(rng, 3.0);
         const Sphere sphere(c, r);
-        const Ellipsoid ellipsoid =
-            Ellipsoid::fromSemiAxes(c, Eigen::Vector3d(r, r, r), testing::randomRotation(rng));
+        const Ellipsoid ellipsoid = Ellipsoid::fromSemiAxes(c, Eigen::Vector3d(r, r, r), testing::randomRotation(rng));
         EXPECT_NEAR(ellipsoid.surfaceArea(), sphere.surfaceArea(), 1e-13 * sphere.surfaceArea());
         const Point p = testing::randomPoint(rng, 3.0, c);
         const Direction d = testing::randomDirection(rng);

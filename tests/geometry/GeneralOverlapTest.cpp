@@ -61,9 +61,10 @@ TEST(GeneralOverlap, NeverMissesAnOverlapWithRandomSpheres) {
 
 TEST(GeneralOverlap, TwoGeneralShapes) {
     const ParametricShape a = torus();
-    const ParametricShape linked = ParametricShape(makeParametricBase(makeTorusSurface(2.0, 0.5)),
-                                                   AffineTransform::rotation(Eigen::Vector3d(1, 0, 0), 1.5707963267948966)
-                                                       .then(AffineTransform::translation(Eigen::Vector3d(2, 0, 0))));
+    const ParametricShape linked =
+        ParametricShape(makeParametricBase(makeTorusSurface(2.0, 0.5)),
+                        AffineTransform::rotation(Eigen::Vector3d(1, 0, 0), 1.5707963267948966)
+                            .then(AffineTransform::translation(Eigen::Vector3d(2, 0, 0))));
     EXPECT_FALSE(a.overlaps(linked));  // two links of a chain: interlocked, yet apart
     const ImplicitShape blob(makeImplicitBase(makeBlob({Point(2, 0, 0.9), Point(2, 0, 2)}, {0.5, 0.5}, 0.05)),
                              AffineTransform());
@@ -78,8 +79,8 @@ TEST(GeneralOverlap, TwoGeneralShapes) {
 // thin. A box far larger than the shape that cuts into such a face (a substrate under a sessile drop)
 // must still be found, though its surface band is thicker than those cells.
 TEST(GeneralOverlap, AHugeBoxCuttingAFlatFaceIsFound) {
-    const ImplicitShape block(makeImplicitBase(makeSuperellipsoid(Eigen::Vector3d(1, 1, 0.6), Eigen::Vector2d(0.2, 0.2))),
-                              AffineTransform());
+    const ImplicitShape block(
+        makeImplicitBase(makeSuperellipsoid(Eigen::Vector3d(1, 1, 0.6), Eigen::Vector2d(0.2, 0.2))), AffineTransform());
     for (const double depth : {1e1, 1e4, 1e6}) {
         EXPECT_TRUE(block.overlaps(Box(Point(-0.3, -0.3, -depth), Point(0.3, 0.3, -0.5)))) << depth;
         EXPECT_TRUE(Box(Point(-depth, -depth, -depth), Point(depth, depth, -0.55)).overlaps(block)) << depth;
@@ -92,13 +93,15 @@ TEST(GeneralOverlap, AHugeBoxCuttingAFlatFaceIsFound) {
 TEST(GeneralOverlap, APieceOfABlobInsideAnotherShapeIsFoundInEitherOrder) {
     const ImplicitShape pieces(makeImplicitBase(makeBlob({Point(0, 0, 0), Point(20, 0, 0)}, {1.0, 1.0}, 0.05)),
                                AffineTransform());
-    const ParametricShape big(makeParametricBase(makeSphereSurface(5.0)), AffineTransform::translation(Eigen::Vector3d(20, 0, 0)));
+    const ParametricShape big(makeParametricBase(makeSphereSurface(5.0)),
+                              AffineTransform::translation(Eigen::Vector3d(20, 0, 0)));
     EXPECT_TRUE(big.overlaps(pieces));
     EXPECT_TRUE(pieces.overlaps(big));
     const Sphere sphere(Point(20, 0, 0), 5.0);
     EXPECT_TRUE(sphere.overlaps(pieces));
     EXPECT_TRUE(pieces.overlaps(sphere));
-    const ParametricShape apart(makeParametricBase(makeSphereSurface(5.0)), AffineTransform::translation(Eigen::Vector3d(10, 0, 0)));
+    const ParametricShape apart(makeParametricBase(makeSphereSurface(5.0)),
+                                AffineTransform::translation(Eigen::Vector3d(10, 0, 0)));
     EXPECT_FALSE(apart.overlaps(pieces));  // between the droplets, 4 clear of each
     EXPECT_FALSE(pieces.overlaps(apart));
 }

@@ -79,7 +79,7 @@ TEST_P(ShapeProperties, FromInsideBothWaysReachTheSurface) {
             ASSERT_TRUE(std::isfinite(s));
             const Point hit = p + s * way.vector();
             EXPECT_TRUE(shape->surfaceContains(hit));
-            EXPECT_EQ(shape->distanceToSurface(hit, way), 0.0);  // leaving
+            EXPECT_EQ(shape->distanceToSurface(hit, way), 0.0);                              // leaving
             EXPECT_GT(shape->distanceToSurface(hit, -way), s - 1e3 * shape->surfaceBand());  // re-entering crosses back
         }
     }

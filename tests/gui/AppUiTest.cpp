@@ -1,8 +1,8 @@
 #include "AppHarness.hpp"
 
 #include "edit/ShapeSpec.hpp"
-#include "gui/Actions.hpp"
 #include "geometry/Sphere.hpp"
+#include "gui/Actions.hpp"
 #include "snapshot/Image.hpp"
 #include "transport/OpticalScene.hpp"
 #include "transport/TraceRun.hpp"
@@ -265,7 +265,8 @@ constexpr const char* kCloudScene = R"({
 
 std::size_t differingPixels(const snapshot::Image& a, const snapshot::Image& b) {
     std::size_t count = 0;
-    for (std::size_t k = 0; k < a.rgba.size(); k += 4) count += a.rgba[k] != b.rgba[k] || a.rgba[k + 1] != b.rgba[k + 1];
+    for (std::size_t k = 0; k < a.rgba.size(); k += 4)
+        count += a.rgba[k] != b.rgba[k] || a.rgba[k + 1] != b.rgba[k + 1];
     return count;
 }
 
@@ -397,7 +398,8 @@ TEST_F(AppScreenshot, ExportedPathsAreTheTraceFilesJsonLinesOnePerPhoton) {
 
 TEST_F(AppScreenshot, ASceneThatDoesNotOpenLeavesTheCurrentOneAndSaysWhy) {
     AppHarness harness(kTopDownScene);
-    std::ofstream(directory_ / "bad.json") << R"({"dropscope": 1, "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]})";
+    std::ofstream(directory_ / "bad.json")
+        << R"({"dropscope": 1, "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]})";
     EXPECT_FALSE(openScene(harness.state(), directory_ / "bad.json"));
     EXPECT_TRUE(harness.state().status.error);
     EXPECT_NE(harness.state().status.text.find("shapes[0].radius"), std::string::npos) << harness.state().status.text;

@@ -148,9 +148,10 @@ TEST_F(ImGuiRendererTest, PanelHasItsBackgroundAndTextOverTheClearColour) {
     EXPECT_TRUE(everyPixel(image, {0, window.maxY + 1, kWidth, kHeight}, isClear)) << "below the panel";
     EXPECT_TRUE(everyPixel(image, {0, 0, window.minX - 1, kHeight}, isClear)) << "left of the panel";
     EXPECT_TRUE(everyPixel(image, {window.maxX + 1, 0, kWidth, kHeight}, isClear)) << "right of the panel";
-    EXPECT_TRUE(everyPixel(image, {window.minX + kEdgeMargin, text.maxY + kEdgeMargin, window.maxX - kEdgeMargin,
-                                   window.maxY - kEdgeMargin},
-                           isPanel))
+    EXPECT_TRUE(everyPixel(
+        image,
+        {window.minX + kEdgeMargin, text.maxY + kEdgeMargin, window.maxX - kEdgeMargin, window.maxY - kEdgeMargin},
+        isPanel))
         << "inside the panel, below the text";
 
     int textPixels = 0;

@@ -16,7 +16,8 @@ TEST(ShapeDescription, NumbersVectorsAndShortPointListsAreShownWhole) {
 TEST(ShapeDescription, LongListsAreSummarised) {
     EXPECT_EQ(presetParameterText({"centers", {5, 3}, std::vector<double>(15, 0.0)}), "5 points");
     EXPECT_EQ(presetParameterText({"radii", {7}, std::vector<double>(7, 1.0)}), "7 numbers");
-    EXPECT_EQ(presetParameterText({"patches", {2, 4, 16, 3}, std::vector<double>(2 * 4 * 16 * 3, 0.0)}), "2 x 4 patches");
+    EXPECT_EQ(presetParameterText({"patches", {2, 4, 16, 3}, std::vector<double>(2 * 4 * 16 * 3, 0.0)}),
+              "2 x 4 patches");
     EXPECT_EQ(presetParameterText({"patches", {3, 16, 3}, std::vector<double>(3 * 16 * 3, 0.0)}), "3 patches");
     EXPECT_EQ(presetParameterText({"grid", {2, 2}, {1, 2, 3, 4}}), "2 x 2 numbers");
     // Values that do not fill the extents are counted, not indexed past their end.

@@ -73,7 +73,7 @@ TEST(Refract, VectorFormMatchesScalarSnellEverywhere) {
         ++refracted;
         const Eigen::Vector3d& t = r.transmitted.vector();
         EXPECT_NEAR(t.norm(), 1.0, 1e-14);
-        EXPECT_NEAR(t.dot(i.vector().cross(n.vector())), 0.0, 1e-14);             // coplanar
+        EXPECT_NEAR(t.dot(i.vector().cross(n.vector())), 0.0, 1e-14);                 // coplanar
         EXPECT_EQ(std::signbit(t.dot(n.vector())), std::signbit(i.dot(n.vector())));  // crosses over
         EXPECT_NEAR(n1 * sinI, n2 * t.cross(n.vector()).norm(), 1e-13);
     }

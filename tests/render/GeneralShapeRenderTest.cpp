@@ -23,8 +23,8 @@
 namespace dropscope {
 namespace {
 
-using test::DirectRenderer;
 using test::coveredPixels;
+using test::DirectRenderer;
 using test::isBlack;
 using test::oneShape;
 using test::TestOctahedron;
@@ -41,7 +41,8 @@ constexpr int kChannelLevels = 2;
 AffineTransform randomPlacement(std::mt19937_64& rng, const Point& r0) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     std::uniform_real_distribution<double> scale(0.6, 1.4);
-    const Eigen::Matrix3d rotation = rotationAboutAxis(Direction(unit(rng), unit(rng), unit(rng)), std::numbers::pi * unit(rng));
+    const Eigen::Matrix3d rotation =
+        rotationAboutAxis(Direction(unit(rng), unit(rng), unit(rng)), std::numbers::pi * unit(rng));
     Eigen::Matrix3d shear = Eigen::Matrix3d::Identity();
     shear(0, 1) = 0.3 * unit(rng);
     const Eigen::Matrix3d m = rotation * shear * Eigen::Vector3d(scale(rng), scale(rng), scale(rng)).asDiagonal();
@@ -60,7 +61,8 @@ TEST(MeshSilhouette, PlacedMeshesCoverExactlyThePixelsWhoseRaysHitTheShape) {
         const Point r0(50.0 * unit(rng), 50.0 * unit(rng), 50.0 * unit(rng));
         const Eigen::Vector3d from(unit(rng), unit(rng), unit(rng));
         const auto shapes = oneShape(std::make_unique<TestOctahedron>(1.0, randomPlacement(rng, r0)));
-        const render::Camera camera = test::cameraLookingAt(r0 + 6.0 * from.normalized(), r0, 40.0, shapes[0]->bounds());
+        const render::Camera camera =
+            test::cameraLookingAt(r0 + 6.0 * from.normalized(), r0, 40.0, shapes[0]->bounds());
         const render::Anchor anchor{r0 + Point(3.0, -40.0, 7.0)};
         const snapshot::Image image =
             renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
@@ -106,8 +108,8 @@ render::Camera diagonalView(const Point& target, const Eigen::AlignedBox3d& boun
 // it; the upload path (uploadScene) applies the plane.
 TEST(MeshSlice, AMeshIsKeptOrHiddenByTheCentreOfItsBounds) {
     const Point r0(10.0, 0.0, 0.0);
-    auto octahedron = std::make_unique<TestOctahedron>(0.8, AffineTransform(Eigen::Matrix3d::Identity(), r0),
-                                                       Point(2.0, 0.0, 0.0));
+    auto octahedron =
+        std::make_unique<TestOctahedron>(0.8, AffineTransform(Eigen::Matrix3d::Identity(), r0), Point(2.0, 0.0, 0.0));
     const auto shapes = oneShape(std::move(octahedron));
     const Point centre = shapes[0]->bounds().center();
     ASSERT_NEAR((centre - Point(12.0, 0.0, 0.0)).norm(), 0.0, 1e-12);
@@ -147,7 +149,8 @@ TEST(MeshShading, LitBlendedAndHighlightedLikeADroplet) {
     std::vector<std::unique_ptr<Shape>> sphere = oneShape(std::make_unique<Sphere>(target, 1.0));
     octahedron[0]->setMediumId(1);
     sphere[0]->setMediumId(1);
-    const render::Camera camera = diagonalView(target, Eigen::AlignedBox3d(Point::Constant(-1.0), Point::Constant(1.0)));
+    const render::Camera camera =
+        diagonalView(target, Eigen::AlignedBox3d(Point::Constant(-1.0), Point::Constant(1.0)));
     const render::Anchor anchor{Point(0.5, -0.25, 2.0)};
     SceneRenderer renderer;
     render::LayerOptions options;  // the usual, not black, background: blending shows against it
@@ -182,7 +185,8 @@ TEST(MeshShading, LitBlendedAndHighlightedLikeADroplet) {
 // mesh again; another matrix is another geometry; a geometry no shape uses any more is dropped.
 TEST(MeshCache, AMovedShapeIsDrawnAtItsNewPlaceFromTheSameGeometry) {
     const Eigen::Matrix3d m = Eigen::Vector3d(1.0, 0.5, 0.8).asDiagonal();
-    std::vector<std::unique_ptr<Shape>> shapes = oneShape(std::make_unique<TestOctahedron>(1.0, AffineTransform(m, Point(-1.5, 0.0, 0.0))));
+    std::vector<std::unique_ptr<Shape>> shapes =
+        oneShape(std::make_unique<TestOctahedron>(1.0, AffineTransform(m, Point(-1.5, 0.0, 0.0))));
     const auto& first = static_cast<const TestOctahedron&>(*shapes[0]);
     const Eigen::AlignedBox3d bounds(Point(-3.0, -1.0, -1.0), Point(3.0, 1.0, 1.0));
     const render::Camera camera = test::cameraLookingAt(Point(0.0, 0.0, 8.0), Point::Zero(), 40.0, bounds);
@@ -210,8 +214,10 @@ TEST(MeshCache, AMovedShapeIsDrawnAtItsNewPlaceFromTheSameGeometry) {
     EXPECT_EQ(cache.size(), 1u);
 
     // Two shapes of one base and matrix share a geometry; another matrix is another one.
-    shapes.push_back(static_cast<const TestOctahedron&>(*shapes[0]).withTransform(AffineTransform(m, Point(-1.5, 0.0, 0.0))));
-    shapes.push_back(static_cast<const TestOctahedron&>(*shapes[0]).withTransform(AffineTransform(0.5 * m, Point(0.0, 0.0, 0.0))));
+    shapes.push_back(
+        static_cast<const TestOctahedron&>(*shapes[0]).withTransform(AffineTransform(m, Point(-1.5, 0.0, 0.0))));
+    shapes.push_back(
+        static_cast<const TestOctahedron&>(*shapes[0]).withTransform(AffineTransform(0.5 * m, Point(0.0, 0.0, 0.0))));
     const snapshot::Image three = renderer.draw(shapes, camera, blackBackground(), anchor);
     EXPECT_TRUE(covered(three, Point(-1.5, 0.0, 0.0)));
     EXPECT_TRUE(covered(three, Point(0.0, 0.0, 0.0)));
@@ -247,7 +253,8 @@ TEST(MeshCache, GeometryAndInstanceAddUpToThePlacedMesh) {
         const auto& v = drawn.geometry->vertices[k];
         const Point world = anchor.origin + centre + Point(v.position[0], v.position[1], v.position[2]);
         EXPECT_NEAR((world - mesh.vertices[k]).norm(), 0.0, kFloatRounding) << "vertex " << k;
-        EXPECT_NEAR((Eigen::Vector3d(v.normal[0], v.normal[1], v.normal[2]) - mesh.normals[k]).norm(), 0.0, kFloatRounding);
+        EXPECT_NEAR((Eigen::Vector3d(v.normal[0], v.normal[1], v.normal[2]) - mesh.normals[k]).norm(), 0.0,
+                    kFloatRounding);
     }
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(drawn.geometry->indices[3 * t + c], mesh.triangles[t][c]);
@@ -262,8 +269,9 @@ TEST(MeshNormals, ANormalAcrossTheSurfaceIsReplacedByItsTrianglesMean) {
     mesh.vertices = {Point(0, 0, 1), Point(1, 1, 0), Point(-1, 1, 0), Point(-1, -1, 0), Point(1, -1, 0)};
     mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
     const Eigen::Vector3d corner = Eigen::Vector3d(1, 1, 0).normalized();
-    for (const Eigen::Vector3d& apex : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 0),
-                                        Eigen::Vector3d(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()))}) {
+    for (const Eigen::Vector3d& apex :
+         {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 0),
+          Eigen::Vector3d(Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()))}) {
         mesh.normals = {apex, corner, Eigen::Vector3d(-1, 1, 0).normalized(), Eigen::Vector3d(-1, -1, 0).normalized(),
                         Eigen::Vector3d(1, -1, 0).normalized()};
         const std::vector<Eigen::Vector3d> drawn = render::drawnNormals(mesh);

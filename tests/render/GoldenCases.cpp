@@ -40,8 +40,9 @@ std::vector<GoldenCase> readGoldenCases(const std::filesystem::path& file) {
             throw std::runtime_error(where + "case name \"" + golden.name + "\" is not [A-Za-z0-9_]+");
         if (!names.insert(golden.name).second) throw std::runtime_error(where + "case \"" + golden.name + "\" repeats");
         if (!(words >> golden.scene) || !isSceneName(golden.scene)) {
-            throw std::runtime_error(where + "expected a scene file name (*.json in tests/data/scenes/golden, or "
-                                             "../*.json in tests/data/scenes) after the name");
+            throw std::runtime_error(where +
+                                     "expected a scene file name (*.json in tests/data/scenes/golden, or "
+                                     "../*.json in tests/data/scenes) after the name");
         }
         for (std::string argument; words >> argument;) golden.arguments.push_back(argument);
         cases.push_back(std::move(golden));

@@ -1,7 +1,7 @@
 // The draw layers (render/Layers.hpp) as data, no GL: which cells, segments and markers each one adds,
 // where, and in which colour (docs/rendering.md).
-#include "render/Layers.hpp"
 #include "geometry/Sphere.hpp"
+#include "render/Layers.hpp"
 #include "scene/SceneLoader.hpp"
 #include "transport/OpticalScene.hpp"
 
@@ -224,8 +224,8 @@ TEST(Guides, AxesAreRedGreenBlueFromTheOrigin) {
 
 TEST(Guides, GroundGridLiesUnderTheBoundsAcrossTheUpAxis) {
     const Eigen::AlignedBox3d bounds(Point(-3, -2, -1), Point(5, 4, 1));
-    for (const auto& [up, axis, below] : {std::tuple{Eigen::Vector3d(0.1, 1.0, 0.2), 1, true},
-                                          std::tuple{Eigen::Vector3d(0.0, 0.0, -1.0), 2, false}}) {
+    for (const auto& [up, axis, below] :
+         {std::tuple{Eigen::Vector3d(0.1, 1.0, 0.2), 1, true}, std::tuple{Eigen::Vector3d(0.0, 0.0, -1.0), 2, false}}) {
         LineBatch lines{render::Anchor{}};
         render::addGroundGrid(lines, bounds, up);
         ASSERT_FALSE(lines.empty());

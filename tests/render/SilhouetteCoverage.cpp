@@ -77,7 +77,8 @@ CoverageAgreement compareCoverage(const snapshot::Image& image, const ExactCover
         return {};
     }
     return compareCoverage(
-        image, [&](int x, int y) { return coverage.hit(x, y); }, [&](int x, int y) { return coverage.onBoundary(x, y); },
+        image, [&](int x, int y) { return coverage.hit(x, y); },
+        [&](int x, int y) { return coverage.onBoundary(x, y); },
         [](int, int) { return std::string(" (by the shape's exact ray test)"); });
 }
 

@@ -138,7 +138,7 @@ TEST(SliceLines, ACutSegmentEndsOnThePlaneWithItsColourInterpolated) {
     const Colour black{0.0f, 0.0f, 0.0f, 1.0f};
     const Colour white{1.0f, 1.0f, 1.0f, 1.0f};
     lines.add(Point(-1.5, 0.0, 0.0), Point(2.5, 0.0, 0.0), black, white);  // cut at 1/2
-    lines.add(Point(1.0, 1.0, 0.0), Point(3.0, 1.0, 0.0), white);           // hidden
+    lines.add(Point(1.0, 1.0, 0.0), Point(3.0, 1.0, 0.0), white);          // hidden
     lines.add(Point(0.0, 2.0, 0.0), Point(-2.0, 2.0, 0.0), white, black);  // kept
 
     LineBatch cut(anchor);

@@ -45,11 +45,15 @@ public:
         const SurfaceMesh placed = mesh();
         double area = 0.0;
         for (const auto& t : placed.triangles) {
-            area += 0.5 * (placed.vertices[t[1]] - placed.vertices[t[0]]).cross(placed.vertices[t[2]] - placed.vertices[t[0]]).norm();
+            area += 0.5 * (placed.vertices[t[1]] - placed.vertices[t[0]])
+                              .cross(placed.vertices[t[2]] - placed.vertices[t[0]])
+                              .norm();
         }
         return area;
     }
-    double volume() const override { return 4.0 / 3.0 * std::pow(base_->size, 3) * std::abs(transform().determinant()); }
+    double volume() const override {
+        return 4.0 / 3.0 * std::pow(base_->size, 3) * std::abs(transform().determinant());
+    }
 
     PointLocation locatePoint(const Point& p) const override {
         const double f = (transform().applyInverse(p) - base_->centre).lpNorm<1>() - base_->size;
@@ -73,8 +77,10 @@ public:
                 continue;
             }
             const double t = slack / along;
-            if (along > 0.0) leave = std::min(leave, t);
-            else enter = std::max(enter, t);
+            if (along > 0.0)
+                leave = std::min(leave, t);
+            else
+                enter = std::max(enter, t);
         }
         if (!(enter < leave) || leave <= 0.0) return std::numeric_limits<double>::quiet_NaN();
         return enter > 0.0 ? enter : leave;
@@ -110,7 +116,8 @@ private:
         mutable int meshCalls = 0;
         Base(double a, const Point& c) : size(a), centre(c) {
             for (const Eigen::Vector3d& s : signs()) {
-                std::array<Point, 3> corners{c + Point(a * s.x(), 0, 0), c + Point(0, a * s.y(), 0), c + Point(0, 0, a * s.z())};
+                std::array<Point, 3> corners{c + Point(a * s.x(), 0, 0), c + Point(0, a * s.y(), 0),
+                                             c + Point(0, 0, a * s.z())};
                 if (s.x() * s.y() * s.z() < 0.0) std::swap(corners[1], corners[2]);  // counter-clockwise outside
                 const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
                 for (const Point& corner : corners) {
@@ -128,7 +135,8 @@ private:
 
     static std::array<Eigen::Vector3d, 8> signs() {
         std::array<Eigen::Vector3d, 8> out;
-        for (int k = 0; k < 8; ++k) out[static_cast<std::size_t>(k)] = {k & 1 ? -1.0 : 1.0, k & 2 ? -1.0 : 1.0, k & 4 ? -1.0 : 1.0};
+        for (int k = 0; k < 8; ++k)
+            out[static_cast<std::size_t>(k)] = {k & 1 ? -1.0 : 1.0, k & 2 ? -1.0 : 1.0, k & 4 ? -1.0 : 1.0};
         return out;
     }
 

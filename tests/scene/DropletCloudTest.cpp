@@ -18,7 +18,8 @@ using test::sceneErrorOf;
 // A scene with media "air" (ambient) and "water", the given explicit shapes and generators.
 std::string sceneWith(const std::string& shapes, const std::string& generators) {
     return R"({"dropscope": 1, "ambient": "air", "media": {"air": {"n": 1.0003}, "water": {"n": 1.333}},)"
-           R"( "shapes": [)" + shapes + R"(], "generators": [)" + generators + "]}";
+           R"( "shapes": [)" +
+           shapes + R"(], "generators": [)" + generators + "]}";
 }
 
 // One droplet_cloud over the cube [0, 1]^3 (or `region`), with `amount` ("count": n or
@@ -63,17 +64,16 @@ TEST(DropletCloud, DifferentSeedsGiveDifferentClouds) {
 // seeding, the 53-bit conversion and the placement arithmetic. If this fails after a deliberate change
 // of the sampler, clouds of existing scene files change too: say so in the change.
 TEST(DropletCloud, FixedRadiusCloudIsPinnedBitForBit) {
-    const Scene scene = parseScene(sceneWith("", cloud(R"("count": 3)", R"({"distribution": "fixed", "value": 0.1})")),
-                                   "scene.json");
+    const Scene scene =
+        parseScene(sceneWith("", cloud(R"("count": 3)", R"({"distribution": "fixed", "value": 0.1})")), "scene.json");
     ASSERT_EQ(scene.shapes.size(), 3u);
-    const std::vector<Point> expected{
-        {0x1.23217710ddffp-1, 0x1.0f58ea17c9babp-1, 0x1.7326950b5c666p-2},
-        {0x1.bccd9ab3e2052p-1, 0x1.dfd9d8c0b784p-3, 0x1.6642de6fc2d75p-1},
-        {0x1.9d404bde09108p-2, 0x1.5dcc2bce5c7fp-1, 0x1.3b22699b38a2ap-3}};
+    const std::vector<Point> expected{{0x1.23217710ddffp-1, 0x1.0f58ea17c9babp-1, 0x1.7326950b5c666p-2},
+                                      {0x1.bccd9ab3e2052p-1, 0x1.dfd9d8c0b784p-3, 0x1.6642de6fc2d75p-1},
+                                      {0x1.9d404bde09108p-2, 0x1.5dcc2bce5c7fp-1, 0x1.3b22699b38a2ap-3}};
     for (std::size_t id = 0; id < 3; ++id) {
         EXPECT_EQ(sphereAt(scene, id).radius(), 0.1);
-        EXPECT_EQ(sphereAt(scene, id).center(), expected[id]) << "droplet " << id << ": "
-                                                               << sphereAt(scene, id).center().transpose();
+        EXPECT_EQ(sphereAt(scene, id).center(), expected[id])
+            << "droplet " << id << ": " << sphereAt(scene, id).center().transpose();
     }
 }
 
@@ -81,10 +81,9 @@ TEST(DropletCloud, CountIsHonouredAndIdsFollowTheExplicitShapes) {
     const std::string shapes =
         R"({"type": "sphere", "name": "big", "center": [5, 5, 5], "radius": 1, "medium": "water"},
            {"type": "box", "min": [-3, -3, -3], "max": [-2, -2, -2], "medium": "air"})";
-    const std::string generators =
-        cloud(R"("count": 300)", kLognormal) + ", " +
-        cloud(R"("count": 200)", R"({"distribution": "fixed", "value": 0.02})", 3,
-              R"({"min": [2, 0, 0], "max": [3, 1, 1]})");
+    const std::string generators = cloud(R"("count": 300)", kLognormal) + ", " +
+                                   cloud(R"("count": 200)", R"({"distribution": "fixed", "value": 0.02})", 3,
+                                         R"({"min": [2, 0, 0], "max": [3, 1, 1]})");
     const Scene scene = parseScene(sceneWith(shapes, generators), "scene.json");
     ASSERT_EQ(scene.shapes.size(), 502u);
     ASSERT_EQ(scene.shapeNames.size(), 502u);
@@ -108,10 +107,10 @@ TEST(DropletCloud, ZeroCountMakesNoDroplets) {
 }
 
 TEST(DropletCloud, EveryDropletLiesInsideTheRegion) {
-    const Scene scene = parseScene(
-        sceneWith("", cloud(R"("count": 2000)", R"({"distribution": "uniform", "min": 0.01, "max": 0.04})", 11,
-                            R"({"min": [-1, 2, 0.5], "max": [0.5, 2.8, 1.7]})")),
-        "scene.json");
+    const Scene scene =
+        parseScene(sceneWith("", cloud(R"("count": 2000)", R"({"distribution": "uniform", "min": 0.01, "max": 0.04})",
+                                       11, R"({"min": [-1, 2, 0.5], "max": [0.5, 2.8, 1.7]})")),
+                   "scene.json");
     const Point lower(-1, 2, 0.5);
     const Point upper(0.5, 2.8, 1.7);
     for (std::size_t id = 0; id < scene.shapes.size(); ++id) {
@@ -137,23 +136,23 @@ void expectNoOverlaps(const Scene& scene) {
 }
 
 TEST(DropletCloud, DropletsNeverOverlapEvenWhenDense) {
-    expectNoOverlaps(parseScene(
-        sceneWith("", cloud(R"("volume_fraction": 0.25)", R"({"distribution": "fixed", "value": 0.04})")),
-        "scene.json"));
+    expectNoOverlaps(
+        parseScene(sceneWith("", cloud(R"("volume_fraction": 0.25)", R"({"distribution": "fixed", "value": 0.04})")),
+                   "scene.json"));
     expectNoOverlaps(parseScene(
         sceneWith("", cloud(R"("count": 20000)", R"({"distribution": "lognormal", "median": 0.005, "sigma": 0.8,)"
-                                                  R"( "max": 0.1})")),
+                                                 R"( "max": 0.1})")),
         "scene.json"));
 }
 
 // Earlier droplets of about this cloud's size sit in its grid; much larger ones are checked one by one.
 TEST(DropletCloud, DropletsOfLaterGeneratorsAvoidEarlierOnes) {
-    const std::string similar = cloud(R"("volume_fraction": 0.15)", R"({"distribution": "fixed", "value": 0.05})",
-                                      1) + ", " + cloud(R"("count": 3000)", kLognormal, 2);
+    const std::string similar = cloud(R"("volume_fraction": 0.15)", R"({"distribution": "fixed", "value": 0.05})", 1) +
+                                ", " + cloud(R"("count": 3000)", kLognormal, 2);
     expectNoOverlaps(parseScene(sceneWith("", similar), "scene.json"));
-    const std::string mistAfterDrops =
-        cloud(R"("count": 10)", R"({"distribution": "fixed", "value": 0.15})", 1) + ", " +
-        cloud(R"("count": 5000)", R"({"distribution": "fixed", "value": 0.004})", 2);
+    const std::string mistAfterDrops = cloud(R"("count": 10)", R"({"distribution": "fixed", "value": 0.15})", 1) +
+                                       ", " +
+                                       cloud(R"("count": 5000)", R"({"distribution": "fixed", "value": 0.004})", 2);
     const Scene scene = parseScene(sceneWith("", mistAfterDrops), "scene.json");
     ASSERT_EQ(scene.shapes.size(), 5010u);
     expectNoOverlaps(scene);
@@ -193,10 +192,10 @@ TEST(DropletCloud, DropletsRespectExplicitShapesAndMayNestInBoxesAndSpheres) {
 // [target, target + one droplet's volume) (up to the rounding of the sums: 1e-12 relative).
 TEST(DropletCloud, VolumeFractionIsReachedWithinOneDroplet) {
     for (const double target : {0.001, 0.05, 0.3}) {
-        const Scene scene = parseScene(
-            sceneWith("", cloud(R"("volume_fraction": )" + std::to_string(target),
-                                R"({"distribution": "lognormal", "median": 0.02, "sigma": 0.4})")),
-            "scene.json");
+        const Scene scene =
+            parseScene(sceneWith("", cloud(R"("volume_fraction": )" + std::to_string(target),
+                                           R"({"distribution": "lognormal", "median": 0.02, "sigma": 0.4})")),
+                       "scene.json");
         double volume = 0.0;
         double largest = 0.0;
         for (const auto& shape : scene.shapes) {
@@ -244,14 +243,14 @@ TEST(DropletCloudErrors, CountAndVolumeFraction) {
 }
 
 TEST(DropletCloudErrors, BadDistributionParameters) {
-    EXPECT_EQ(generatorError(cloud(R"("count": 10)",
-                                   R"({"distribution": "lognormal", "median": 0.01, "sigma": -0.3})")),
-              "scene.json: generators[0].radius.sigma: must be >= 0");
+    EXPECT_EQ(
+        generatorError(cloud(R"("count": 10)", R"({"distribution": "lognormal", "median": 0.01, "sigma": -0.3})")),
+        "scene.json: generators[0].radius.sigma: must be >= 0");
     EXPECT_EQ(generatorError(cloud(R"("count": 10)", R"({"distribution": "uniform", "min": 0.02, "max": 0.01})")),
               "scene.json: generators[0].radius.max: must be > \"min\"");
-    EXPECT_EQ(generatorError(cloud(R"("count": 10)",
-                                   R"({"distribution": "rosin_rammler", "scale": 0.01, "shape": 0})")),
-              "scene.json: generators[0].radius.shape: must be > 0");
+    EXPECT_EQ(
+        generatorError(cloud(R"("count": 10)", R"({"distribution": "rosin_rammler", "scale": 0.01, "shape": 0})")),
+        "scene.json: generators[0].radius.shape: must be > 0");
     EXPECT_EQ(generatorError(cloud(R"("count": 10)",
                                    R"({"distribution": "lognormal", "median": 0.01, "sigma": 0.1, "min": 0.1})")),
               "scene.json: generators[0].radius: [\"min\", \"max\"] keeps less than 1e-06 of the distribution; "

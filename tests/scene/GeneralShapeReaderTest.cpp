@@ -24,7 +24,8 @@ constexpr double kNumericRelative = 1e-8;
 
 TEST(GeneralShapeReader, ReadsTheIssueExample) {
     const Scene scene = parseScene(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": 1,
-        "transform": {"scale": [2, 1, 1], "translation": [0, 0, 5]}, "medium": "water"})"), "scene.json");
+        "transform": {"scale": [2, 1, 1], "translation": [0, 0, 5]}, "medium": "water"})"),
+                                   "scene.json");
     ASSERT_EQ(scene.shapes.size(), 1u);
     const Shape& shape = *scene.shapes[0];
     EXPECT_EQ(shape.kind(), ShapeKind::Parametric);
@@ -42,7 +43,8 @@ TEST(GeneralShapeReader, AppliesTheTransformStepsInTheDocumentedOrder) {
     const Scene scene = parseScene(sceneWithShapes(R"({"type": "implicit", "preset": "superellipsoid",
         "semi_axes": [1, 1, 1], "exponents": [1, 1], "medium": "water", "transform": {
         "translation": [0, 0, 10], "matrix": [[1, 2, 0], [0, 1, 0], [0, 0, 1]], "reflection": {"normal": [1, 1, 0]},
-        "shear": {"xz": 0.5}, "rotation": {"axis": [0, 0, 1], "angle_deg": 90}, "scale": [3, 1, 2]}})"), "scene.json");
+        "shear": {"xz": 0.5}, "rotation": {"axis": [0, 0, 1], "angle_deg": 90}, "scale": [3, 1, 2]}})"),
+                                   "scene.json");
     const auto& shape = static_cast<const GeneralShape&>(*scene.shapes[0]);
     Eigen::Matrix3d matrix, reflection, shear, rotation;
     matrix << 1, 2, 0, 0, 1, 0, 0, 0, 1;
@@ -64,7 +66,8 @@ TEST(GeneralShapeReader, EqualPresetsShareOneBase) {
         {"type": "implicit", "preset": "blob", "centers": [[0, 0, 5], [1, 0, 5]], "radii": [0.6, 0.6], "blend": 0.1,
          "medium": "water"},
         {"type": "implicit", "preset": "blob", "centers": [[0, 0, 5], [1, 0, 5]], "radii": [0.6, 0.6], "blend": 0.1,
-         "medium": "water", "transform": {"translation": [0, 0, 5]}})"), "scene.json");
+         "medium": "water", "transform": {"translation": [0, 0, 5]}})"),
+                                   "scene.json");
     ASSERT_EQ(scene.shapes.size(), 5u);
     const auto parametric = [&](std::size_t i) { return static_cast<const ParametricShape&>(*scene.shapes[i]).base(); };
     const auto implicit = [&](std::size_t i) { return static_cast<const ImplicitShape&>(*scene.shapes[i]).base(); };
@@ -90,48 +93,69 @@ TEST(GeneralShapeReader, ReadsBezierPatchesFromAnAssetFile) {
 }
 
 TEST(GeneralShapeReader, ErrorsNameTheValue) {
-    EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "cube", "medium": "water"})")),
-              R"(scene.json: shapes[0].preset: unknown parametric preset "cube" (known: sphere, ellipsoid, torus, bezier))");
+    EXPECT_EQ(
+        sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "cube", "medium": "water"})")),
+        R"(scene.json: shapes[0].preset: unknown parametric preset "cube" (known: sphere, ellipsoid, torus, bezier))");
     EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "torus", "medium": "water"})")),
               R"(scene.json: shapes[0].preset: unknown implicit preset "torus" (known: superellipsoid, blob))");
-    EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": -1, "medium": "water"})")),
-              "scene.json: shapes[0].radius: must be > 0");
+    EXPECT_EQ(
+        sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": -1, "medium": "water"})")),
+        "scene.json: shapes[0].radius: must be > 0");
     EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "torus", "major_radius": 1,
-        "minor_radius": 2, "medium": "water"})")).find("scene.json: shapes[0].minor_radius: "), std::string::npos);
-    EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": 1, "medium": "water",
-        "transform": {"scale": [1, 0, 1]}})")).find("scene.json: shapes[0].transform.scale: scale factors must be"),
+        "minor_radius": 2, "medium": "water"})"))
+                  .find("scene.json: shapes[0].minor_radius: "),
               std::string::npos);
     EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": 1, "medium": "water",
-        "transform": {"shear": {"xy": 1, "yx": 1}}})")).find("scene.json: shapes[0].transform.shear: transformation matrix is singular"),
+        "transform": {"scale": [1, 0, 1]}})"))
+                  .find("scene.json: shapes[0].transform.scale: scale factors must be"),
+              std::string::npos);
+    EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": 1, "medium": "water",
+        "transform": {"shear": {"xy": 1, "yx": 1}}})"))
+                  .find("scene.json: shapes[0].transform.shear: transformation matrix is singular"),
               std::string::npos);
     EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": 1, "medium": "water",
-        "transform": {"scael": 2}})")), R"(scene.json: shapes[0].transform: unknown key "scael" (did you mean "scale"?))");
+        "transform": {"scael": 2}})")),
+              R"(scene.json: shapes[0].transform: unknown key "scael" (did you mean "scale"?))");
     EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "blob", "centers": [[0, 0, 0], [1, 0, 0]],
         "radii": [1], "blend": 0.1, "medium": "water"})")),
               "scene.json: shapes[0].radii: must give one radius per center (2 centers, 1 radii)");
     EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "bezier", "patches": "no/such.json",
-        "medium": "water"})")), "scene.json: shapes[0].patches: in the patches file: no/such.json: no such file");
+        "medium": "water"})")),
+              "scene.json: shapes[0].patches: in the patches file: no/such.json: no such file");
     EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "bezier", "patches": "",
-        "medium": "water"})")), R"(scene.json: shapes[0].patches: must be the patches or the name of a file holding them, not "")");
+        "medium": "water"})")),
+              R"(scene.json: shapes[0].patches: must be the patches or the name of a file holding them, not "")");
     EXPECT_EQ(sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "blob", "centers": [[0, 0, 0]],
-        "radii": [1], "blend": 0.1, "medium": "water"})")).rfind("scene.json: shapes[0].centers: ", 0), 0u);
+        "radii": [1], "blend": 0.1, "medium": "water"})"))
+                  .rfind("scene.json: shapes[0].centers: ", 0),
+              0u);
     // Parameters at the edge of the double range give no usable shape: refused, not NaN volumes.
-    EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "superellipsoid", "semi_axes": [1e300, 1, 1],
-        "exponents": [1, 1], "medium": "water"})")).find("scene.json: shapes[0]: "), std::string::npos);
+    EXPECT_NE(
+        sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "superellipsoid", "semi_axes": [1e300, 1, 1],
+        "exponents": [1, 1], "medium": "water"})"))
+            .find("scene.json: shapes[0]: "),
+        std::string::npos);
     EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": 1, "medium": "water",
-        "transform": {"scale": 1e200}})")).find("scene.json: shapes[0]"), std::string::npos);
+        "transform": {"scale": 1e200}})"))
+                  .find("scene.json: shapes[0]"),
+              std::string::npos);
     // Droplets far below the tessellation's resolution leave no surface to draw or to test overlaps with.
     EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "implicit", "preset": "blob", "centers": [[0, 0, 0], [1, 1, 1]],
-        "radii": [0.001, 0.001], "blend": 0.0001, "medium": "water"})")).find("scene.json: shapes[0]"), std::string::npos);
+        "radii": [0.001, 0.001], "blend": 0.0001, "medium": "water"})"))
+                  .find("scene.json: shapes[0]"),
+              std::string::npos);
     EXPECT_NE(sceneErrorOf(sceneWithShapes(R"({"type": "parametric", "preset": "bezier", "patches": [[[[[0, 0, 0]]]]],
-        "medium": "water"})")).find("scene.json: shapes[0].patches[0][0]: must be 4 rows"), std::string::npos);
+        "medium": "water"})"))
+                  .find("scene.json: shapes[0].patches[0][0]: must be 4 rows"),
+              std::string::npos);
 }
 
 TEST(GeneralShapeReader, OverlappingShapesAreRefusedAndAShapeInATorusHoleIsNot) {
     const std::string torus = R"({"type": "parametric", "preset": "torus", "major_radius": 2, "minor_radius": 0.5,
         "medium": "water", "name": "ring"})";
     EXPECT_EQ(sceneErrorOf(sceneWithShapes(torus + R"(, {"type": "sphere", "center": [0, 0, 0], "radius": 1,
-        "medium": "water"})")), "no error");
+        "medium": "water"})")),
+              "no error");
     const std::string error = sceneErrorOf(sceneWithShapes(torus + R"(, {"type": "sphere", "center": [2, 0, 0.6],
         "radius": 0.3, "medium": "water"})"));
     EXPECT_NE(error.find("shapes[1]"), std::string::npos) << error;

@@ -64,7 +64,7 @@ TEST(RandomStream, ConversionsAreExactAndInRange) {
         ASSERT_GT(v, 0.0);
         ASSERT_LT(v, 1.0);
         ASSERT_EQ(std::fmod(std::ldexp(v, 53), 2.0), 1.0);  // an odd multiple of 2^-53
-        ASSERT_EQ(1.0 - (1.0 - v), v);                     // so 1 - v is exact too
+        ASSERT_EQ(1.0 - (1.0 - v), v);                      // so 1 - v is exact too
     }
 }
 

@@ -64,10 +64,12 @@ TEST(SceneError, DirectoryInsteadOfFile) {
 TEST(SceneError, MalformedJsonGivesLineAndColumn) {
     const std::string file = kDataDir + "/scenes/malformed.json";
     EXPECT_EQ(loadError(file),
-              file + ": line 4, column 10: syntax error while parsing object - unexpected string literal; "
-                     "expected '}'");
-    EXPECT_EQ(sceneErrorOf(""), "scene.json: line 1, column 1: syntax error while parsing value - unexpected end "
-                                "of input; expected '[', '{', or a literal");
+              file +
+                  ": line 4, column 10: syntax error while parsing object - unexpected string literal; "
+                  "expected '}'");
+    EXPECT_EQ(sceneErrorOf(""),
+              "scene.json: line 1, column 1: syntax error while parsing value - unexpected end "
+              "of input; expected '[', '{', or a literal");
     EXPECT_EQ(sceneErrorOf("{\"dropscope\": 1} x"),
               "scene.json: line 1, column 18: syntax error while parsing value - invalid literal; last read: "
               "'1} x'; expected end of input");
@@ -90,9 +92,7 @@ TEST(SceneError, NestingIsLimited) {
     EXPECT_TRUE(message.ends_with(": nested more than 64 levels deep")) << message;
 }
 
-TEST(SceneError, RootMustBeAnObject) {
-    EXPECT_EQ(sceneErrorOf("[1, 2]"), "scene.json: expected an object, got array");
-}
+TEST(SceneError, RootMustBeAnObject) { EXPECT_EQ(sceneErrorOf("[1, 2]"), "scene.json: expected an object, got array"); }
 
 TEST(SceneError, FormatVersion) {
     EXPECT_EQ(sceneErrorOf(R"({"unit": "mm"})"), R"(scene.json: missing required key "dropscope")");
@@ -118,8 +118,9 @@ TEST(SceneError, UnknownKeyWithoutANearOneListsTheValidKeys) {
 }
 
 TEST(SceneError, UnknownTypes) {
-    EXPECT_EQ(shapeError(R"({"type": "cube", "medium": "water"})"),
-              R"(scene.json: shapes[0].type: unknown shape type "cube" (known: sphere, ellipsoid, box, parametric, implicit))");
+    EXPECT_EQ(
+        shapeError(R"({"type": "cube", "medium": "water"})"),
+        R"(scene.json: shapes[0].type: unknown shape type "cube" (known: sphere, ellipsoid, box, parametric, implicit))");
     EXPECT_EQ(sourceError(R"({"type": "laser", "origin": [0, 0, 0]})"),
               R"(scene.json: sources[0].type: unknown source type "laser" (known: beam, ray, point))");
     EXPECT_EQ(shapeError(R"({"center": [0, 0, 0], "radius": 1, "medium": "water"})"),

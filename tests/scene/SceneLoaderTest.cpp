@@ -134,8 +134,7 @@ TEST(SceneLoader, AFileMediumNamedVacuumIsTheDefaultAmbient) {
 TEST(SceneLoader, UnitsConvertToMetres) {
     const std::pair<const char*, double> units[] = {{"m", 1.0}, {"cm", 1e-2}, {"mm", 1e-3}, {"um", 1e-6}, {"nm", 1e-9}};
     for (const auto& [unit, metres] : units) {
-        const Scene scene =
-            parseScene(std::string(R"({"dropscope": 1, "unit": ")") + unit + R"("})", "scene.json");
+        const Scene scene = parseScene(std::string(R"({"dropscope": 1, "unit": ")") + unit + R"("})", "scene.json");
         EXPECT_EQ(scene.unitInMetres, metres) << unit;
     }
 }

@@ -27,9 +27,8 @@ TEST(SceneView, IsReadWithDefaults) {
 }
 
 TEST(SceneView, UpIsNormalisedAndFovKept) {
-    const Scene scene =
-        parseScene(withView(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 0.5, 0.5], "fov_deg": 179.5})"),
-                   "scene.json");
+    const Scene scene = parseScene(
+        withView(R"({"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 0.5, 0.5], "fov_deg": 179.5})"), "scene.json");
     ASSERT_TRUE(scene.view.has_value());
     EXPECT_NEAR(scene.view->up.y(), std::sqrt(0.5), 1e-15);
     EXPECT_NEAR(scene.view->up.z(), std::sqrt(0.5), 1e-15);

@@ -37,40 +37,40 @@ void expectSameShape(const Shape& actual, const Shape& expected, std::size_t id)
     ASSERT_EQ(actual.kind(), expected.kind());
     EXPECT_EQ(actual.mediumId(), expected.mediumId());
     switch (expected.kind()) {
-        case ShapeKind::Sphere: {
-            const auto& a = static_cast<const Sphere&>(actual);
-            const auto& e = static_cast<const Sphere&>(expected);
-            EXPECT_EQ(a.center(), e.center());
-            EXPECT_EQ(a.radius(), e.radius());
-            break;
-        }
-        case ShapeKind::Box: {
-            const auto& a = static_cast<const Box&>(actual);
-            const auto& e = static_cast<const Box&>(expected);
-            EXPECT_EQ(a.lower(), e.lower());
-            EXPECT_EQ(a.upper(), e.upper());
-            break;
-        }
-        case ShapeKind::Ellipsoid: {
-            const auto& a = static_cast<const Ellipsoid&>(actual);
-            const auto& e = static_cast<const Ellipsoid&>(expected);
-            EXPECT_EQ(a.center(), e.center());
-            const double scale = e.matrix().cwiseAbs().maxCoeff();
-            EXPECT_LE((a.matrix() - e.matrix()).cwiseAbs().maxCoeff(), kEllipsoidMatrixRelative * scale)
-                << "written " << e.matrix() << "\nread back " << a.matrix();
-            break;
-        }
-        case ShapeKind::Parametric:
-        case ShapeKind::Implicit: {
-            // Written as the composed matrix and translation: the same transform, bit for bit.
-            const auto& a = static_cast<const GeneralShape&>(actual);
-            const auto& e = static_cast<const GeneralShape&>(expected);
-            EXPECT_EQ(a.presetName(), e.presetName());
-            EXPECT_TRUE(a.presetParameters() == e.presetParameters());
-            EXPECT_EQ(a.transform().matrix(), e.transform().matrix());
-            EXPECT_EQ(a.transform().translation(), e.transform().translation());
-            break;
-        }
+    case ShapeKind::Sphere: {
+        const auto& a = static_cast<const Sphere&>(actual);
+        const auto& e = static_cast<const Sphere&>(expected);
+        EXPECT_EQ(a.center(), e.center());
+        EXPECT_EQ(a.radius(), e.radius());
+        break;
+    }
+    case ShapeKind::Box: {
+        const auto& a = static_cast<const Box&>(actual);
+        const auto& e = static_cast<const Box&>(expected);
+        EXPECT_EQ(a.lower(), e.lower());
+        EXPECT_EQ(a.upper(), e.upper());
+        break;
+    }
+    case ShapeKind::Ellipsoid: {
+        const auto& a = static_cast<const Ellipsoid&>(actual);
+        const auto& e = static_cast<const Ellipsoid&>(expected);
+        EXPECT_EQ(a.center(), e.center());
+        const double scale = e.matrix().cwiseAbs().maxCoeff();
+        EXPECT_LE((a.matrix() - e.matrix()).cwiseAbs().maxCoeff(), kEllipsoidMatrixRelative * scale)
+            << "written " << e.matrix() << "\nread back " << a.matrix();
+        break;
+    }
+    case ShapeKind::Parametric:
+    case ShapeKind::Implicit: {
+        // Written as the composed matrix and translation: the same transform, bit for bit.
+        const auto& a = static_cast<const GeneralShape&>(actual);
+        const auto& e = static_cast<const GeneralShape&>(expected);
+        EXPECT_EQ(a.presetName(), e.presetName());
+        EXPECT_TRUE(a.presetParameters() == e.presetParameters());
+        EXPECT_EQ(a.transform().matrix(), e.transform().matrix());
+        EXPECT_EQ(a.transform().translation(), e.transform().translation());
+        break;
+    }
     }
 }
 
@@ -167,7 +167,8 @@ TEST(SceneWriter, RoundTripsTheFullExampleOfTheFormatDocument) {
 
 TEST(SceneWriter, WritesTheBuiltInVacuumSoMediumIdsStay) {
     const Scene scene = parseScene(R"({"dropscope": 1, "media": {"water": {"n": 1.333}},
-        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "vacuum"}]})", "scene.json");
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "vacuum"}]})",
+                                   "scene.json");
     ASSERT_EQ(scene.media.size(), 2u);  // water, then the built-in vacuum
     expectRoundTrip(scene);
 }
@@ -191,7 +192,8 @@ TEST(SceneWriter, RandomRotatedEllipsoidsKeepTheirMatrices) {
 
 TEST(SceneWriter, AnUnrotatedEllipsoidHasNoRotationKey) {
     const Scene scene = parseScene(R"({"dropscope": 1, "shapes": [{"type": "ellipsoid", "center": [0, 0, 0],
-        "semi_axes": [0.5, 1, 1.5], "medium": "vacuum"}]})", "scene.json");
+        "semi_axes": [0.5, 1, 1.5], "medium": "vacuum"}]})",
+                                   "scene.json");
     const std::string text = sceneToJson(scene);
     EXPECT_EQ(text.find("rotation"), std::string::npos) << text;
     expectRoundTrip(scene);

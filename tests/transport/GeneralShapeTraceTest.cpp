@@ -1,8 +1,8 @@
 // Photons through parametric and implicit shapes: the same droplet written as a Sphere, a parametric
 // sphere, a scaled parametric sphere and an implicit superellipsoid with exponents 1 gives the same
 // tally, photon for photon; every preset of the gallery scene loses no photon to geometry.
-#include "TransportFixtures.hpp"
 #include "TallyExpectations.hpp"
+#include "TransportFixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,27 +22,33 @@ TraceSettings settingsFor(std::uint64_t photons) {
 }
 
 TraceTally traceDroplet(const std::string& droplet) {
-    const Scene scene = sceneFromJson(R"("air": {"n": 1.0}, "water": {"n": 1.3337, "kappa": 2e-4})", droplet,
-                                      R"({"type": "beam", "origin": [0, 0, -5], "direction": [0, 0, 1], "radius": 0.9})");
+    const Scene scene =
+        sceneFromJson(R"("air": {"n": 1.0}, "water": {"n": 1.3337, "kappa": 2e-4})", droplet,
+                      R"({"type": "beam", "origin": [0, 0, -5], "direction": [0, 0, 1], "radius": 0.9})");
     return runTrace(OpticalScene(scene), scene.sources, settingsFor(4000)).tally;
 }
 
 TEST(GeneralShapeTrace, EveryFormOfTheSameDropletTracesTheSame) {
     // Hit points agree with the sphere's to ~1e-12, far below anything that could turn a photon's
     // random choice (Fresnel draw, absorption) or its escape bin.
-    const TraceTally sphere = traceDroplet(R"({"type": "sphere", "center": [0.1, 0, 0], "radius": 0.8, "medium": "water"})");
+    const TraceTally sphere =
+        traceDroplet(R"({"type": "sphere", "center": [0.1, 0, 0], "radius": 0.8, "medium": "water"})");
     EXPECT_GT(sphere.events.refract, 2500u);  // most photons cross the droplet
     expectSameTally(traceDroplet(R"({"type": "parametric", "preset": "sphere", "radius": 0.8,
-        "transform": {"translation": [0.1, 0, 0]}, "medium": "water"})"), sphere);
+        "transform": {"translation": [0.1, 0, 0]}, "medium": "water"})"),
+                    sphere);
     expectSameTally(traceDroplet(R"({"type": "parametric", "preset": "sphere", "radius": 2,
         "transform": {"scale": 0.4, "rotation": {"axis": [1, 2, 3], "angle_deg": 70}, "translation": [0.1, 0, 0]},
-        "medium": "water"})"), sphere);
+        "medium": "water"})"),
+                    sphere);
     expectSameTally(traceDroplet(R"({"type": "implicit", "preset": "superellipsoid", "semi_axes": [0.8, 0.8, 0.8],
-        "exponents": [1, 1], "transform": {"translation": [0.1, 0, 0]}, "medium": "water"})"), sphere);
+        "exponents": [1, 1], "transform": {"translation": [0.1, 0, 0]}, "medium": "water"})"),
+                    sphere);
 }
 
 TEST(GeneralShapeTrace, AStretchedParametricSphereTracesAsTheEllipsoid) {
-    const TraceTally ellipsoid = traceDroplet(R"({"type": "ellipsoid", "center": [0, 0.1, 0], "semi_axes": [1.2, 0.8, 0.5],
+    const TraceTally ellipsoid =
+        traceDroplet(R"({"type": "ellipsoid", "center": [0, 0.1, 0], "semi_axes": [1.2, 0.8, 0.5],
         "rotation": {"axis": [0, 1, 1], "angle_deg": 35}, "medium": "water"})");
     expectSameTally(traceDroplet(R"({"type": "parametric", "preset": "ellipsoid", "semi_axes": [1.2, 0.8, 0.5],
         "transform": {"rotation": {"axis": [0, 1, 1], "angle_deg": 35}, "translation": [0, 0.1, 0]}, "medium": "water"})"),

@@ -33,9 +33,11 @@ TEST(PhotonTracer, RecordsEveryEventWithItsMediaReflectanceAndWeight) {
         for (std::size_t k = 1; k + 1 < path.size(); ++k) {
             const Event& event = path[k];
             EXPECT_EQ(event.from, current);
-            const double cosine = std::abs(path[k - 1].direction.dot(optical.octree().shape(event.shape)->normal(event.position)));
-            EXPECT_DOUBLE_EQ(event.reflectance,
-                             fresnelReflectance(cosine, scene.media[event.from].n, scene.media[event.to].n).unpolarised());
+            const double cosine =
+                std::abs(path[k - 1].direction.dot(optical.octree().shape(event.shape)->normal(event.position)));
+            EXPECT_DOUBLE_EQ(
+                event.reflectance,
+                fresnelReflectance(cosine, scene.media[event.from].n, scene.media[event.to].n).unpolarised());
             if (event.type == EventType::Refract) {
                 current = event.to;
                 ++refractions;
@@ -77,9 +79,9 @@ namespace {
 TEST(PhotonTracer, TheEventCapEndsAPhotonAfterExactlyThatManyInterfaceEvents) {
     // Inside a glass cube, a direction whose cosines are all below cos(theta_c) = sqrt(1 - 1/n^2)
     // reflects totally on every face for ever.
-    const Scene scene = testing::sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5})",
-                                               R"({"type": "box", "min": [-1, -1, -1], "max": [1, 1, 1], "medium": "glass"})",
-                                               "");
+    const Scene scene =
+        testing::sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5})",
+                               R"({"type": "box", "min": [-1, -1, -1], "max": [1, 1, 1], "medium": "glass"})", "");
     const OpticalScene optical(scene);
     for (std::uint32_t cap : {1U, 7U, 500U}) {
         PhotonRandom random(1, 0);
@@ -103,9 +105,10 @@ TEST(PhotonTracer, APhotonEmittedOnASurfaceIsInsideTheShapeWhenItHeadsInward) {
     // chord of a sphere meets the wall at the angle it started with), a share
     // 1/2 cos(theta_c) = 1/2 sqrt(1 - 1/n^2) of all photons, and end at the event cap; none is lost
     // for any other reason.
-    const Scene scene = testing::sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337})",
-                                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
-                                               R"({"type": "point", "origin": [0, 0, 1]})");
+    const Scene scene =
+        testing::sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337})",
+                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
+                               R"({"type": "point", "origin": [0, 0, 1]})");
     TraceSettings settings;
     settings.photons = 20000;
     settings.paths = 200;
@@ -127,10 +130,11 @@ TEST(PhotonTracer, ADistantSourceHitsATinyDropletAsWellAsANearOne) {
     // A 5 um droplet under a beam of twice its radius: a quarter of the photons hit it, whether the
     // beam starts 1 mm or 1e8 mm away (hit points are computed from the scene, not the source).
     for (double distance : {1.0, 1e5, 1e8}) {
-        const Scene scene = testing::sceneFromJson(
-            R"("air": {"n": 1}, "water": {"n": 1.3337})",
-            R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.005, "medium": "water"})",
-            R"({"type": "beam", "origin": [0, 0, )" + std::to_string(-distance) + R"(], "direction": [0, 0, 1], "radius": 0.01})");
+        const Scene scene =
+            testing::sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337})",
+                                   R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.005, "medium": "water"})",
+                                   R"({"type": "beam", "origin": [0, 0, )" + std::to_string(-distance) +
+                                       R"(], "direction": [0, 0, 1], "radius": 0.01})");
         TraceSettings settings;
         settings.photons = 40000;
         const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
@@ -143,9 +147,10 @@ TEST(PhotonTracer, ADistantSourceHitsATinyDropletAsWellAsANearOne) {
 
 TEST(PhotonTracer, AbsorptionOnTheWayFromADistantSourceIsStillSampled) {
     // An absorbing ambient, a source 10 mm before the scene: exp(-sigma * 10) of the photons arrive.
-    const Scene scene = testing::sceneFromJson(R"("air": {"n": 1, "sigma": 0.1}, "water": {"n": 1})",
-                                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
-                                               R"({"type": "ray", "origin": [0, 0, -11], "direction": [0, 0, 1]})");
+    const Scene scene =
+        testing::sceneFromJson(R"("air": {"n": 1, "sigma": 0.1}, "water": {"n": 1})",
+                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
+                               R"({"type": "ray", "origin": [0, 0, -11], "direction": [0, 0, 1]})");
     TraceSettings settings;
     settings.photons = 40000;
     settings.paths = 2000;

@@ -41,9 +41,9 @@ TEST(RayTree, LeafWeightsPlusAbsorptionAddUpToTheInputWeight) {
 
 TEST(RayTree, StrongAbsorptionStillBalancesTheWeights) {
     // exp(-sigma s) underflows to 0 inside this drop: the branch ends in an absorb leaf of weight 0.
-    const Scene scene = testing::sceneFromJson(R"("air": {"n": 1}, "ink": {"n": 1.5, "sigma": 1000})",
-                                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "ink"})",
-                                               "");
+    const Scene scene =
+        testing::sceneFromJson(R"("air": {"n": 1}, "ink": {"n": 1.5, "sigma": 1000})",
+                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "ink"})", "");
     const OpticalScene optical(scene);
     for (const Ray& ray : {Ray{Point(0.2, 0, -3), Direction(0, 0, 1)}, Ray{Point(0.2, 0, 0), Direction(0, 0, 1)}}) {
         const RayTree tree = traceRayTree(optical, ray, 1.0, {});

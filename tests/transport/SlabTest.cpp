@@ -35,10 +35,10 @@ SlabExpectation closedForm(double sigma) {
 }
 
 Scene slab(double sigma, double index = kIndex) {
-    return sceneFromJson(R"("air": {"n": 1}, "glass": {"n": )" + std::to_string(index) + R"(, "sigma": )" +
-                             std::to_string(sigma) + "}",
-                         R"({"type": "box", "min": [-50, -50, 0], "max": [50, 50, 2], "medium": "glass"})",
-                         R"({"type": "ray", "origin": [0.25, -0.5, -1], "direction": [0, 0, 1]})");
+    return sceneFromJson(
+        R"("air": {"n": 1}, "glass": {"n": )" + std::to_string(index) + R"(, "sigma": )" + std::to_string(sigma) + "}",
+        R"({"type": "box", "min": [-50, -50, 0], "max": [50, 50, 2], "medium": "glass"})",
+        R"({"type": "ray", "origin": [0.25, -0.5, -1], "direction": [0, 0, 1]})");
 }
 
 class SlabAtNormalIncidence : public ::testing::TestWithParam<double> {};
@@ -88,7 +88,7 @@ TEST_P(SlabAtNormalIncidence, RayTreeReproducesTheClosedFormToRounding) {
         }
     }
     const SlabExpectation expected = closedForm(sigma);
-    constexpr double kSeriesRounding = 1e-14;  // a few ulps per term of a geometric series of ~40 terms
+    constexpr double kSeriesRounding = 1e-14;       // a few ulps per term of a geometric series of ~40 terms
     EXPECT_LT(truncated, 10 * settings.minWeight);  // only the last few branches of the series are cut
     EXPECT_NEAR(forward, expected.transmitted, kSeriesRounding);
     EXPECT_NEAR(backward, expected.reflected, kSeriesRounding);

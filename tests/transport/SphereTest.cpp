@@ -60,9 +60,10 @@ SphereReference reference(double sigma) {
 }
 
 TraceResult traceSphere(double sigma, std::uint64_t photons) {
-    const Scene scene = sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337, "sigma": )" + std::to_string(sigma) + "}",
-                                      R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
-                                      R"({"type": "beam", "origin": [0, 0, -3], "direction": [0, 0, 1], "radius": 1.25})");
+    const Scene scene =
+        sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337, "sigma": )" + std::to_string(sigma) + "}",
+                      R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
+                      R"({"type": "beam", "origin": [0, 0, -3], "direction": [0, 0, 1], "radius": 1.25})");
     TraceSettings settings;
     settings.photons = photons;
     settings.bins = kBins;
@@ -81,8 +82,7 @@ TEST_P(SphereUnderABeam, AngularDistributionAndAbsorptionMatchTheRayOrderReferen
     const double n = static_cast<double>(kPhotons);
 
     EXPECT_EQ(tally.lost, 0U);
-    EXPECT_NEAR(fraction(tally.unscattered, tally), 1 - 1 / (kBeamRadius * kBeamRadius),
-                monteCarloTolerance(0.36, n));
+    EXPECT_NEAR(fraction(tally.unscattered, tally), 1 - 1 / (kBeamRadius * kBeamRadius), monteCarloTolerance(0.36, n));
     EXPECT_NEAR(fraction(tally.absorbed, tally), expected.absorbed, monteCarloTolerance(expected.absorbed, n));
     for (int bin = 0; bin < kBins; ++bin) {
         const double p = expected.angular[static_cast<std::size_t>(bin)];

@@ -1,7 +1,7 @@
 #include "TransportFixtures.hpp"
 
-#include "optics/Fresnel.hpp"
 #include "geometry/Sphere.hpp"
+#include "optics/Fresnel.hpp"
 #include "transport/SurfaceCrossing.hpp"
 
 #include <gtest/gtest.h>
@@ -80,12 +80,12 @@ TEST(SurfaceCrossing, NamesTheMediaOnBothSidesWhenEnteringAndLeavingNestedShapes
         ShapeId beyond;
     };
     const Case cases[] = {
-        {OpticalScene::kAmbient, 0, Point(0, 0, 3), air, glass, 0},  // into the cell
-        {0, 1, Point(0, 0, 2), glass, water, 1},                     // into the drop
-        {1, 2, Point(0, 0, 1.5), water, air, 2},                     // into the bubble
-        {2, 2, Point(0, 0, 0.5), air, water, 1},                     // out of the bubble
-        {1, 1, Point(0, 0, -2), water, glass, 0},                    // out of the drop
-        {0, 0, Point(0, 0, -3), glass, air, OpticalScene::kAmbient}, // out of the cell
+        {OpticalScene::kAmbient, 0, Point(0, 0, 3), air, glass, 0},   // into the cell
+        {0, 1, Point(0, 0, 2), glass, water, 1},                      // into the drop
+        {1, 2, Point(0, 0, 1.5), water, air, 2},                      // into the bubble
+        {2, 2, Point(0, 0, 0.5), air, water, 1},                      // out of the bubble
+        {1, 1, Point(0, 0, -2), water, glass, 0},                     // out of the drop
+        {0, 0, Point(0, 0, -3), glass, air, OpticalScene::kAmbient},  // out of the cell
     };
     for (const Case& c : cases) {
         const SurfaceCrossing crossing = crossSurface(scene, c.region, c.shape, c.point, down, FresnelModel::Exact);

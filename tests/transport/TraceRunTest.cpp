@@ -1,5 +1,5 @@
-#include "TransportFixtures.hpp"
 #include "TallyExpectations.hpp"
+#include "TransportFixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -85,10 +85,10 @@ TEST(TraceRun, RecordedPathsAreTheFirstPhotonsAndEndTheWayTheyWereCounted) {
 
 TEST(TraceRun, PhotonsTakeTurnsBetweenSources) {
     // Two pencils, one hitting nothing (unscattered) and one hitting a sphere: half the photons each.
-    const Scene scene = testing::sceneFromJson(
-        R"("air": {"n": 1}, "water": {"n": 1.3337})",
-        R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
-        R"({"type": "ray", "origin": [5, 5, -3], "direction": [0, 0, 1]},
+    const Scene scene =
+        testing::sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337})",
+                               R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
+                               R"({"type": "ray", "origin": [5, 5, -3], "direction": [0, 0, 1]},
            {"type": "ray", "origin": [0.3, 0, -3], "direction": [0, 0, 1]})");
     const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(1001, 2));
     EXPECT_EQ(result.tally.unscattered, 501U);

@@ -21,9 +21,7 @@ inline Scene sceneFromJson(const std::string& media, const std::string& shapes, 
 // Tolerance for a Monte Carlo fraction against its expectation p after n photons: five binomial
 // standard deviations, so a correct tracer fails about once in 3.5 million runs (the seeds are fixed,
 // so in practice never), while a physics error of a few tenths of a percent at 1e5 photons is caught.
-inline double monteCarloTolerance(double p, double n) {
-    return 5.0 * std::sqrt(std::max(p * (1.0 - p), 1.0 / n) / n);
-}
+inline double monteCarloTolerance(double p, double n) { return 5.0 * std::sqrt(std::max(p * (1.0 - p), 1.0 / n) / n); }
 
 // The share of isotropic photons from a point at r0 radii from the centre of a sphere of index n (in
 // a medium of index 1) that an event cap of `cap` ends. A ray at angle alpha to the radius meets the

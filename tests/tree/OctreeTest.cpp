@@ -131,8 +131,8 @@ TEST(Octree, ContentsOverlapFindsStoredShapes) {
     const auto reference = tree.referenceTree();
     for (int i = 0; i < 200; ++i) {
         const Sphere probe(testing::randomPoint(rng, 5.0), testing::uniform(rng, 0.05, 0.5));
-        const bool expected = std::any_of(tree.shapes().begin(), tree.shapes().end(),
-                                          [&](const auto& s) { return s->overlaps(probe); });
+        const bool expected =
+            std::any_of(tree.shapes().begin(), tree.shapes().end(), [&](const auto& s) { return s->overlaps(probe); });
         EXPECT_EQ(reference->contentsOverlap(probe), expected);
     }
 }
@@ -157,7 +157,8 @@ TEST(Octree, OverlappingEqualsBruteForce) {
     Rng rng(10);
     const Octree tree(randomScene(rng, 800, 4.0));
     for (int i = 0; i < 300; ++i) {
-        const auto probe = testing::randomShape(rng, i, testing::randomPoint(rng, 4.5), testing::uniform(rng, 0.05, 1.0));
+        const auto probe =
+            testing::randomShape(rng, i, testing::randomPoint(rng, 4.5), testing::uniform(rng, 0.05, 1.0));
         std::vector<ShapeId> expected;
         for (ShapeId id = 0; id < tree.slotCount(); ++id) {
             if (tree.shape(id)->overlaps(*probe)) expected.push_back(id);

@@ -47,7 +47,7 @@ enum Key : int {
 // tests by hand; applyInput (ImGuiInput.hpp) hands it to ImGui the same way for both.
 struct InputFrame {
     double deltaSeconds = 1.0 / 60.0;
-    int windowWidth = 1280;   // logical pixels (the mouse's coordinates)
+    int windowWidth = 1280;  // logical pixels (the mouse's coordinates)
     int windowHeight = 800;
     int framebufferWidth = 1280;  // device pixels (what is rendered)
     int framebufferHeight = 800;
@@ -55,7 +55,7 @@ struct InputFrame {
     float mouseX = 0.0f;       // logical pixels from the top-left corner
     float mouseY = 0.0f;
     std::array<bool, 3> mouseDown{};  // left, right, middle
-    float wheelX = 0.0f;  // scroll since the last frame, in lines
+    float wheelX = 0.0f;              // scroll since the last frame, in lines
     float wheelY = 0.0f;
     std::bitset<kKeyCount> keysDown;
     bool ctrl = false;

@@ -15,11 +15,21 @@ struct NamedKey {
 };
 
 constexpr NamedKey kNamedKeys[] = {
-    {GLFW_KEY_TAB, kKeyTab},           {GLFW_KEY_LEFT, kKeyLeft},          {GLFW_KEY_RIGHT, kKeyRight},
-    {GLFW_KEY_UP, kKeyUp},             {GLFW_KEY_DOWN, kKeyDown},          {GLFW_KEY_PAGE_UP, kKeyPageUp},
-    {GLFW_KEY_PAGE_DOWN, kKeyPageDown}, {GLFW_KEY_HOME, kKeyHome},         {GLFW_KEY_END, kKeyEnd},
-    {GLFW_KEY_INSERT, kKeyInsert},     {GLFW_KEY_DELETE, kKeyDelete},      {GLFW_KEY_BACKSPACE, kKeyBackspace},
-    {GLFW_KEY_ENTER, kKeyEnter},       {GLFW_KEY_ESCAPE, kKeyEscape},      {GLFW_KEY_KP_ENTER, kKeyKeypadEnter},
+    {GLFW_KEY_TAB, kKeyTab},
+    {GLFW_KEY_LEFT, kKeyLeft},
+    {GLFW_KEY_RIGHT, kKeyRight},
+    {GLFW_KEY_UP, kKeyUp},
+    {GLFW_KEY_DOWN, kKeyDown},
+    {GLFW_KEY_PAGE_UP, kKeyPageUp},
+    {GLFW_KEY_PAGE_DOWN, kKeyPageDown},
+    {GLFW_KEY_HOME, kKeyHome},
+    {GLFW_KEY_END, kKeyEnd},
+    {GLFW_KEY_INSERT, kKeyInsert},
+    {GLFW_KEY_DELETE, kKeyDelete},
+    {GLFW_KEY_BACKSPACE, kKeyBackspace},
+    {GLFW_KEY_ENTER, kKeyEnter},
+    {GLFW_KEY_ESCAPE, kKeyEscape},
+    {GLFW_KEY_KP_ENTER, kKeyKeypadEnter},
 };
 
 bool isPrintable(int glfwKey) {

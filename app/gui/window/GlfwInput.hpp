@@ -41,7 +41,7 @@ private:
         bool seen() const { return down || downSinceFrame; }
         void set(bool pressed);
     };
-    static constexpr int kGlfwKeyCount = 349;  // GLFW_KEY_LAST + 1, checked in the .cpp
+    static constexpr int kGlfwKeyCount = 349;   // GLFW_KEY_LAST + 1, checked in the .cpp
     static constexpr int kGlfwButtonCount = 8;  // GLFW_MOUSE_BUTTON_LAST + 1, checked in the .cpp
 
     static GlfwInput& of(GLFWwindow* window);

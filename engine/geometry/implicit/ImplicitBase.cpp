@@ -28,10 +28,13 @@ using tolerance::implicit::kRefineBands;
 class TetrahedronMesher {
 public:
     TetrahedronMesher(const ImplicitFunction& f, const Eigen::AlignedBox3d& bounds, double band, int cells)
-        : f_(f), n_(cells), origin_(bounds.min()), step_(bounds.sizes() / static_cast<double>(cells)),
+        : f_(f),
+          n_(cells),
+          origin_(bounds.min()),
+          step_(bounds.sizes() / static_cast<double>(cells)),
           refineBand_(kRefineBands * band) {
-        const std::size_t nodes = static_cast<std::size_t>(n_ + 1) * static_cast<std::size_t>(n_ + 1) *
-                                  static_cast<std::size_t>(n_ + 1);
+        const std::size_t nodes =
+            static_cast<std::size_t>(n_ + 1) * static_cast<std::size_t>(n_ + 1) * static_cast<std::size_t>(n_ + 1);
         values_.resize(nodes);
         for (int k = 0; k <= n_; ++k)
             for (int j = 0; j <= n_; ++j)
@@ -69,9 +72,7 @@ private:
         const auto n = static_cast<std::size_t>(n_ + 1);
         return node(static_cast<int>(idx % n), static_cast<int>((idx / n) % n), static_cast<int>(idx / (n * n)));
     }
-    Point node(int i, int j, int k) const {
-        return origin_ + Eigen::Vector3d(i, j, k).cwiseProduct(step_);
-    }
+    Point node(int i, int j, int k) const { return origin_ + Eigen::Vector3d(i, j, k).cwiseProduct(step_); }
 
     // The mesh vertex on edge (a, b), a inside and b outside: one per edge, shared by its tetrahedra.
     std::uint32_t edgeVertex(std::size_t a, std::size_t b) {
@@ -124,8 +125,7 @@ private:
             }
         }
         if (nIn == 0 || nOut == 0) return;
-        const Eigen::Vector3d outward =
-            outSum / static_cast<double>(nOut) - inSum / static_cast<double>(nIn);
+        const Eigen::Vector3d outward = outSum / static_cast<double>(nOut) - inSum / static_cast<double>(nIn);
         if (nIn == 1) {
             addTriangle(edgeVertex(in[0], out[0]), edgeVertex(in[0], out[1]), edgeVertex(in[0], out[2]), outward);
         } else if (nOut == 1) {
@@ -171,8 +171,8 @@ std::array<Eigen::AlignedBox3d, 8> octants(const Eigen::AlignedBox3d& box) {
 
 std::vector<Eigen::AlignedBox3d> lipschitzCover(const ImplicitFunction& f, const Eigen::AlignedBox3d& bounds) {
     std::vector<Eigen::AlignedBox3d> kept{bounds};
-    for (int depth = 0; depth < tolerance::implicit::kCoverMaxDepth && kept.size() < tolerance::implicit::kCoverMinBoxes;
-         ++depth) {
+    for (int depth = 0;
+         depth < tolerance::implicit::kCoverMaxDepth && kept.size() < tolerance::implicit::kCoverMinBoxes; ++depth) {
         std::vector<Eigen::AlignedBox3d> next;
         for (const Eigen::AlignedBox3d& box : kept)
             for (const Eigen::AlignedBox3d& child : octants(box))

@@ -48,8 +48,10 @@ const std::array<double, 6>& ImplicitShape::extremes() const {
             const Eigen::Vector3d ell = transform().matrix().row(k).transpose();
             const double offset = transform().translation()[k];
             // The outward side of each certified interval, so that bounds() contains the shape.
-            derived_->extremes[static_cast<std::size_t>(2 * k)] = offset - maximumOverBody(function(), bounds, -ell, tol).upper;
-            derived_->extremes[static_cast<std::size_t>(2 * k + 1)] = offset + maximumOverBody(function(), bounds, ell, tol).upper;
+            derived_->extremes[static_cast<std::size_t>(2 * k)] =
+                offset - maximumOverBody(function(), bounds, -ell, tol).upper;
+            derived_->extremes[static_cast<std::size_t>(2 * k + 1)] =
+                offset + maximumOverBody(function(), bounds, ell, tol).upper;
         }
     });
     return derived_->extremes;
@@ -71,7 +73,8 @@ IntegralEstimate ImplicitShape::areaEstimate() const {
     std::call_once(derived_->areaOnce, [this] {
         if (const std::optional<Point> centre = function().convexCentre()) {
             derived_->area = convexBodyIntegrals(function(), *centre, base_->bounds(), transform(), base_->band(),
-                                                 kConvexIntegralOrder).area;
+                                                 kConvexIntegralOrder)
+                                 .area;
             return;
         }
         // Over the certified (outward) bounds, padded like the base's, so the ends of every line are outside.
@@ -159,8 +162,8 @@ double ImplicitShape::lipschitzDistance(PointLocation start, const Point& origin
         wantEntering = function().gradient(origin).dot(direction) >= 0.0;
         ownCrossing = kSelfCrossingBands * band_;
     }
-    RayRootFinder finder(function(), origin, direction, std::max(0.0, range.first), range.second,
-                         kMinStepBands * band_, kRefineBands * band_);
+    RayRootFinder finder(function(), origin, direction, std::max(0.0, range.first), range.second, kMinStepBands * band_,
+                         kRefineBands * band_);
     while (const auto crossing = finder.next()) {
         if (crossing->t <= ownCrossing || crossing->entering != wantEntering) continue;
         // An entry that is out again within the band is a grazing touch, not a hit.
@@ -177,7 +180,6 @@ Direction ImplicitShape::normal(const Point& p) const {
     if (!(std::abs(function().value(r)) <= kNormalBands * band_ * g.norm())) return Direction::invalid();
     return Direction(g);  // invalid when the gradient vanishes
 }
-
 
 std::unique_ptr<GeneralShape> ImplicitShape::withTransform(const AffineTransform& transform) const {
     auto shape = std::make_unique<ImplicitShape>(base_, transform);

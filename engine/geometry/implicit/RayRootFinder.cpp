@@ -17,8 +17,14 @@ bool inside(double g) { return g < 0.0; }
 
 RayRootFinder::RayRootFinder(const ImplicitFunction& f, const Point& origin, const Eigen::Vector3d& direction,
                              double tBegin, double tEnd, double minStep, double refineTolerance)
-    : f_(f), origin_(origin), direction_(direction), tEnd_(tEnd), minStep_(minStep),
-      refineTolerance_(refineTolerance), lipschitz_(f.lipschitzAlong(direction)), t_(tBegin),
+    : f_(f),
+      origin_(origin),
+      direction_(direction),
+      tEnd_(tEnd),
+      minStep_(minStep),
+      refineTolerance_(refineTolerance),
+      lipschitz_(f.lipschitzAlong(direction)),
+      t_(tBegin),
       g_(valueAt(tBegin)) {}
 
 std::optional<RayCrossing> RayRootFinder::next() {
@@ -88,8 +94,8 @@ RayCrossing refineCrossing(const ImplicitFunction& f, const Point& origin, const
 }
 
 std::vector<RayCrossing> findRayCrossings(const ImplicitFunction& f, const Point& origin,
-                                          const Eigen::Vector3d& direction, double tBegin, double tEnd,
-                                          double minStep, double refineTolerance) {
+                                          const Eigen::Vector3d& direction, double tBegin, double tEnd, double minStep,
+                                          double refineTolerance) {
     RayRootFinder finder(f, origin, direction, tBegin, tEnd, minStep, refineTolerance);
     std::vector<RayCrossing> crossings;
     while (const std::optional<RayCrossing> crossing = finder.next()) crossings.push_back(*crossing);

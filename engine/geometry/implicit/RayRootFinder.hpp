@@ -10,7 +10,7 @@ namespace dropscope {
 // One sign change of g(t) = f(origin + t direction).
 struct RayCrossing {
     double t = 0.0;
-    bool entering = false;  // f goes from >= 0 to < 0: the ray enters the body
+    bool entering = false;                               // f goes from >= 0 to < 0: the ray enters the body
     Eigen::Vector3d gradient = Eigen::Vector3d::Zero();  // grad f at the refined crossing
 };
 
@@ -61,8 +61,8 @@ RayCrossing refineCrossing(const ImplicitFunction& f, const Point& origin, const
 
 // All crossings in [tBegin, tEnd] (see RayRootFinder).
 std::vector<RayCrossing> findRayCrossings(const ImplicitFunction& f, const Point& origin,
-                                          const Eigen::Vector3d& direction, double tBegin, double tEnd,
-                                          double minStep, double refineTolerance);
+                                          const Eigen::Vector3d& direction, double tBegin, double tEnd, double minStep,
+                                          double refineTolerance);
 
 // The parameter interval [tEnter, tExit] of origin + t direction inside `box` (slab test), or nothing
 // when the line misses it.

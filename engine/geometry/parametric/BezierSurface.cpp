@@ -61,9 +61,7 @@ std::string name(std::size_t row, std::size_t column) {
 
 }  // namespace
 
-BezierSurface::BezierSurface(std::vector<std::vector<BezierNet>> patches) : patches_(std::move(patches)) {
-    validate();
-}
+BezierSurface::BezierSurface(std::vector<std::vector<BezierNet>> patches) : patches_(std::move(patches)) { validate(); }
 
 void BezierSurface::validate() {
     if (patches_.empty() || patches_.front().empty())
@@ -74,7 +72,8 @@ void BezierSurface::validate() {
     for (std::size_t r = 0; r < nr; ++r) {
         if (patches_[r].size() != nc)
             throw std::invalid_argument("patches[" + std::to_string(r) + "] has " + std::to_string(patches_[r].size()) +
-                                        " patches, patches[0] has " + std::to_string(nc) + ": rows must be equally long");
+                                        " patches, patches[0] has " + std::to_string(nc) +
+                                        ": rows must be equally long");
         for (std::size_t c = 0; c < nc; ++c)
             for (std::size_t i = 0; i < 4; ++i)
                 for (std::size_t j = 0; j < 4; ++j) {
@@ -122,8 +121,8 @@ void BezierSurface::validate() {
                "'s top edge (u = " + std::to_string(nr) + ")";
     };
     const auto topMessage = [&](std::size_t c) {
-        return name(nr - 1, c) + ": its top edge (u = " + std::to_string(nr) + ") is neither a single point (a pole) nor " +
-               name(0, c) + "'s bottom edge (u = 0)";
+        return name(nr - 1, c) + ": its top edge (u = " + std::to_string(nr) +
+               ") is neither a single point (a pole) nor " + name(0, c) + "'s bottom edge (u = 0)";
     };
     for (std::size_t c = 0; c < nc; ++c) {
         if (!bottomIsPole && !topIsPole) {

@@ -52,9 +52,7 @@ SurfaceHessians EllipsoidSurface::hessians(double u, double v) const {
 
 double EllipsoidSurface::characteristicLength() const { return 2.0 * semiAxes_.maxCoeff(); }
 
-std::string_view EllipsoidSurface::presetName() const {
-    return preset_ == Preset::Sphere ? "sphere" : "ellipsoid";
-}
+std::string_view EllipsoidSurface::presetName() const { return preset_ == Preset::Sphere ? "sphere" : "ellipsoid"; }
 
 std::vector<PresetParameter> EllipsoidSurface::presetParameters() const {
     if (preset_ == Preset::Sphere) return {{"radius", {}, {semiAxes_.x()}}};

@@ -199,7 +199,8 @@ ParametricBase::ParametricBase(std::shared_ptr<const ParametricSurface> surface)
                                     std::to_string(signedVolume_) + ")");
     orientation_ = signedVolume_ > 0.0 ? 1.0 : -1.0;
     area_ = surfaceAreaIntegral(*surface_, Eigen::Matrix3d::Identity(), tp::kIntegralRelative).value;
-    for (int k = 0; k < 3; ++k) extremes_[static_cast<std::size_t>(k)] = extremeRange(*surface_, Eigen::Vector3d::Unit(k));
+    for (int k = 0; k < 3; ++k)
+        extremes_[static_cast<std::size_t>(k)] = extremeRange(*surface_, Eigen::Vector3d::Unit(k));
 
     poleAtU0_ = !surface_->periodicInU() && collapsedEdge(true, domain_.u0);
     poleAtU1_ = !surface_->periodicInU() && collapsedEdge(true, domain_.u1);
@@ -223,7 +224,8 @@ std::int32_t ParametricBase::buildNode(std::size_t slot, const ParameterCell& ce
                         node.patch.box.diagonal().norm() > leafSize);
     if (split) {
         // At the minimum depth always into quarters, so that the top of the tree is balanced.
-        const auto [alongU, alongV] = depth < tp::kLeafMinDepth ? std::pair{true, true} : splitDirections(node.patch.corners);
+        const auto [alongU, alongV] =
+            depth < tp::kLeafMinDepth ? std::pair{true, true} : splitDirections(node.patch.corners);
         const CellSplit parts = splitCell(cell, alongU, alongV);
         const std::size_t count = static_cast<std::size_t>(parts.count);
         const std::size_t first = nodes_.size();
@@ -242,8 +244,10 @@ std::int32_t ParametricBase::buildNode(std::size_t slot, const ParameterCell& ce
 }
 
 Eigen::Vector2d ParametricBase::wrap(double u, double v) const {
-    const double wu = surface_->periodicInU() ? foldPeriodic(u, domain_.u0, domain_.u1) : std::clamp(u, domain_.u0, domain_.u1);
-    const double wv = surface_->periodicInV() ? foldPeriodic(v, domain_.v0, domain_.v1) : std::clamp(v, domain_.v0, domain_.v1);
+    const double wu =
+        surface_->periodicInU() ? foldPeriodic(u, domain_.u0, domain_.u1) : std::clamp(u, domain_.u0, domain_.u1);
+    const double wv =
+        surface_->periodicInV() ? foldPeriodic(v, domain_.v0, domain_.v1) : std::clamp(v, domain_.v0, domain_.v1);
     return {wu, wv};
 }
 
@@ -277,11 +281,10 @@ Direction ParametricBase::outwardNormal(double u, double v) const {
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
         for (int k = 0; k < tp::kPoleRingSamples; ++k) {
             const double t = (static_cast<double>(k) + 0.5) / tp::kPoleRingSamples;
-            const SurfaceJet r =
-                uEdge ? surface_->jet(edge + inward * tp::kPoleRingStep * (domain_.u1 - domain_.u0),
-                                      domain_.v0 + t * (domain_.v1 - domain_.v0))
-                      : surface_->jet(domain_.u0 + t * (domain_.u1 - domain_.u0),
-                                      edge + inward * tp::kPoleRingStep * (domain_.v1 - domain_.v0));
+            const SurfaceJet r = uEdge ? surface_->jet(edge + inward * tp::kPoleRingStep * (domain_.u1 - domain_.u0),
+                                                       domain_.v0 + t * (domain_.v1 - domain_.v0))
+                                       : surface_->jet(domain_.u0 + t * (domain_.u1 - domain_.u0),
+                                                       edge + inward * tp::kPoleRingStep * (domain_.v1 - domain_.v0));
             if (!isDegenerate(r)) sum += r.ru.cross(r.rv).normalized();
         }
         return Direction(orientation_ * sum);
@@ -325,15 +328,14 @@ void ParametricBase::buildMesh() {
     for (int i = 0; i < rows; ++i) {
         const double u = i == nu ? domain_.u1 : domain_.u0 + (domain_.u1 - domain_.u0) * i / static_cast<double>(nu);
         for (int j = 0; j < columns; ++j) {
-            const double v = j == nv ? domain_.v1 : domain_.v0 + (domain_.v1 - domain_.v0) * j / static_cast<double>(nv);
+            const double v =
+                j == nv ? domain_.v1 : domain_.v0 + (domain_.v1 - domain_.v0) * j / static_cast<double>(nv);
             mesh_.vertices.push_back(s.point(u, v));
             const Direction n = outwardNormal(u, v);
             mesh_.normals.push_back(n ? n.vector() : Eigen::Vector3d::UnitZ());
         }
     }
-    const auto index = [&](int i, int j) {
-        return static_cast<std::uint32_t>((i % rows) * columns + (j % columns));
-    };
+    const auto index = [&](int i, int j) { return static_cast<std::uint32_t>((i % rows) * columns + (j % columns)); };
     const double collapsed = tp::kMeshCollapsedRelative * s.characteristicLength();
     const auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         const Point& pa = mesh_.vertices[a];
@@ -341,8 +343,10 @@ void ParametricBase::buildMesh() {
         const Point& pc = mesh_.vertices[c];
         if ((pa - pb).norm() <= collapsed || (pb - pc).norm() <= collapsed || (pc - pa).norm() <= collapsed) return;
         // Counter-clockwise seen from outside: (b - a) x (c - a) ~ r_u x r_v, outward when orientation > 0.
-        if (orientation_ > 0.0) mesh_.triangles.push_back({a, b, c});
-        else mesh_.triangles.push_back({a, c, b});
+        if (orientation_ > 0.0)
+            mesh_.triangles.push_back({a, b, c});
+        else
+            mesh_.triangles.push_back({a, c, b});
     };
     for (int i = 0; i < nu; ++i) {
         for (int j = 0; j < nv; ++j) {

@@ -79,8 +79,8 @@ SurfaceProjection leastSquares(const ParametricBase& base, const AffineTransform
         Eigen::Matrix2d hessian;
         hessian << a.dot(a) - pulled.dot(h.ruu), a.dot(b) - pulled.dot(h.ruv), a.dot(b) - pulled.dot(h.ruv),
             b.dot(b) - pulled.dot(h.rvv);
-        const double scale = std::max({a.squaredNorm() + b.squaredNorm(), std::abs(hessian.trace()),
-                                       std::numeric_limits<double>::min()});
+        const double scale = std::max(
+            {a.squaredNorm() + b.squaredNorm(), std::abs(hessian.trace()), std::numeric_limits<double>::min()});
         // Marquardt's damping, per parameter (|M r_u|^2, |M r_v|^2) rather than one scale for both: next to a pole
         // |r_v| is ~ the distance to it, and a damping sized by |r_u| would freeze v there (steps in v below the
         // rounding of r), leaving the iterate far above the surface band from the true nearest point.

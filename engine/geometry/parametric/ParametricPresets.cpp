@@ -11,7 +11,8 @@ namespace dropscope {
 
 std::shared_ptr<const ParametricSurface> makeSphereSurface(double radius) {
     if (!(std::isfinite(radius) && radius > 0.0)) throw std::invalid_argument("radius must be finite and > 0");
-    return std::make_shared<const EllipsoidSurface>(Eigen::Vector3d::Constant(radius), EllipsoidSurface::Preset::Sphere);
+    return std::make_shared<const EllipsoidSurface>(Eigen::Vector3d::Constant(radius),
+                                                    EllipsoidSurface::Preset::Sphere);
 }
 
 std::shared_ptr<const ParametricSurface> makeEllipsoidSurface(const Eigen::Vector3d& semiAxes) {

@@ -108,8 +108,8 @@ private:
         const auto [alongU, alongV] = splitDirections(patch.corners);
         const CellSplit parts = splitCell(patch.cell, alongU, alongV);
         for (int k = 0; k < parts.count; ++k) {
-            const CellPatch child =
-                describeSubCell(base_.surface(), parts.parts[static_cast<std::size_t>(k)], curvature, base_.boxPadding());
+            const CellPatch child = describeSubCell(base_.surface(), parts.parts[static_cast<std::size_t>(k)],
+                                                    curvature, base_.boxPadding());
             if (meets(child)) processCell(child, curvature, depth + 1);
         }
     }
@@ -218,10 +218,16 @@ private:
             const auto limit = [&](double x, double dx, double lo, double hi, bool loEdge, bool hiEdge) {
                 if (x + dx < lo && dx < 0.0) {
                     const double tb = 0.5 * (lo - x) / dx;
-                    if (tb < t) { t = tb; atEdge = loEdge; }
+                    if (tb < t) {
+                        t = tb;
+                        atEdge = loEdge;
+                    }
                 } else if (x + dx > hi && dx > 0.0) {
                     const double tb = 0.5 * (hi - x) / dx;
-                    if (tb < t) { t = tb; atEdge = hiEdge; }
+                    if (tb < t) {
+                        t = tb;
+                        atEdge = hiEdge;
+                    }
                 }
             };
             limit(u, step[0], region.u0, region.u1, region.u0Edge, region.u1Edge);

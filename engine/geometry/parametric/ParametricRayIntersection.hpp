@@ -10,12 +10,12 @@ namespace dropscope {
 
 // One crossing of a ray with a placed parametric surface.
 struct RayCrossing {
-    double s = 0.0;            // distance along the (unit) ray direction
-    double u = 0.0;            // where on the base surface, folded into the domain
+    double s = 0.0;  // distance along the (unit) ray direction
+    double u = 0.0;  // where on the base surface, folded into the domain
     double v = 0.0;
-    double cosine = 0.0;       // ray direction . outward unit normal (placed frame): < 0 entering, > 0 leaving
-    bool degenerate = false;   // at a degenerate point of the parametrisation (a pole): cosine from the normal
-                               // ParametricBase::outwardNormal finds there (0 if none), less reliable
+    double cosine = 0.0;      // ray direction . outward unit normal (placed frame): < 0 entering, > 0 leaving
+    bool degenerate = false;  // at a degenerate point of the parametrisation (a pole): cosine from the normal
+                              // ParametricBase::outwardNormal finds there (0 if none), less reliable
 };
 
 // Every crossing with s >= sMin of the ray p + s d (d unit) with the surface M r(u, v) + r0 of `base` placed by

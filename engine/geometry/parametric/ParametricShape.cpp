@@ -76,7 +76,8 @@ double ParametricShape::surfaceArea() const {
     const TransformClass& c = transform().classification();
     if (c.isSimilarity) return c.uniformScale * c.uniformScale * base_->area();
     std::call_once(area_->once, [&] {
-        area_->value = surfaceAreaIntegral(surface(), transform().matrix(), tp::kTransformedAreaRelative).value;  // 1.68
+        area_->value =
+            surfaceAreaIntegral(surface(), transform().matrix(), tp::kTransformedAreaRelative).value;  // 1.68
     });
     return area_->value;
 }
@@ -144,7 +145,6 @@ Direction ParametricShape::normal(const Point& p) const {
     if (!baseNormal) return Direction::invalid();
     return transform().applyToNormal(baseNormal.vector());
 }
-
 
 std::unique_ptr<GeneralShape> ParametricShape::withTransform(const AffineTransform& transform) const {
     auto shape = std::make_unique<ParametricShape>(base_, transform);

@@ -130,7 +130,8 @@ private:
         } else {
             for (int k = 0; k < 2; ++k) {
                 if (!free[static_cast<std::size_t>(k)] || g[k] == 0.0) continue;
-                const double curvature = hessian(k, k) + damping(hessian(k, k), std::abs(hessian(k, k)), std::abs(g[k]));
+                const double curvature =
+                    hessian(k, k) + damping(hessian(k, k), std::abs(hessian(k, k)), std::abs(g[k]));
                 if (curvature > 0.0) step[k] = -g[k] / curvature;
             }
         }

@@ -7,9 +7,7 @@ namespace dropscope {
 
 TorusSurface::TorusSurface(double majorRadius, double minorRadius) : major_(majorRadius), minor_(minorRadius) {}
 
-ParameterDomain TorusSurface::domain() const {
-    return {0.0, 2.0 * std::numbers::pi, 0.0, 2.0 * std::numbers::pi};
-}
+ParameterDomain TorusSurface::domain() const { return {0.0, 2.0 * std::numbers::pi, 0.0, 2.0 * std::numbers::pi}; }
 
 Point TorusSurface::point(double u, double v) const {
     const double rho = major_ + minor_ * std::cos(v);  // distance from the z axis

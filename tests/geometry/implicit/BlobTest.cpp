@@ -102,7 +102,8 @@ TEST(Blob, ThinNeckIsFoundAlongRaysThroughIt) {
     for (int i = 0; i < 100; ++i) {
         // Rays crossing the neck region across the x axis.
         const Point target(uniform(rng, -0.02, 0.02), uniform(rng, -0.05, 0.05), uniform(rng, -0.05, 0.05));
-        const Point origin = target + 3.0 * Eigen::Vector3d(uniform(rng, -0.2, 0.2), 1.0, uniform(rng, -1, 1)).normalized();
+        const Point origin =
+            target + 3.0 * Eigen::Vector3d(uniform(rng, -0.2, 0.2), 1.0, uniform(rng, -1, 1)).normalized();
         expectNoMissedCrossing(*f, origin, Direction(target - origin), band, "neck ray " + std::to_string(i));
     }
 }

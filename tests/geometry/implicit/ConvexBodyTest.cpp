@@ -46,8 +46,8 @@ TEST(ConvexBody, SphereAreaAndVolumeOffCentre) {
     // The centre need not be the middle of the bounds: a unit sphere seen from an off-centre point.
     const Superellipsoid f(Eigen::Vector3d(1.0, 1.0, 1.0), Eigen::Vector2d(1.0, 1.0));
     const Eigen::AlignedBox3d bounds(Eigen::Vector3d::Constant(-1.01), Eigen::Vector3d::Constant(1.01));
-    const BodyIntegrals integrals =
-        convexBodyIntegrals(f, Point(0.3, -0.5, 0.2), bounds, AffineTransform(), 1e-9, tolerance::implicit::kConvexIntegralOrder);
+    const BodyIntegrals integrals = convexBodyIntegrals(f, Point(0.3, -0.5, 0.2), bounds, AffineTransform(), 1e-9,
+                                                        tolerance::implicit::kConvexIntegralOrder);
     EXPECT_NEAR(integrals.volume.value, 4.0 / 3.0 * std::numbers::pi, 1e-6);
     EXPECT_NEAR(integrals.area.value, 4.0 * std::numbers::pi, 1e-6);
     EXPECT_LE(std::abs(integrals.volume.value - 4.0 / 3.0 * std::numbers::pi), integrals.volume.errorEstimate);

@@ -214,9 +214,10 @@ TEST(ConvexRay, GrazingAndParallelRaysMissOutsideAndHitInsideInFewEvaluations) {
             }
         }
     }
-    std::printf("worst: %ld evaluations per query, %.3g bands from the bisection reference; %d of 480 tangent rays "
-                "from the surface exit within its band\n",
-                worstEvaluations, worstBands, tangentExits);
+    std::printf(
+        "worst: %ld evaluations per query, %.3g bands from the bisection reference; %d of 480 tangent rays "
+        "from the surface exit within its band\n",
+        worstEvaluations, worstBands, tangentExits);
 }
 
 TEST(ConvexRay, RaysThroughTheNonSmoothPlanesConverge) {
@@ -226,7 +227,7 @@ TEST(ConvexRay, RaysThroughTheNonSmoothPlanesConverge) {
     long worstEvaluations = 0;
     int index = 0;
     for (const Eigen::Vector2d& exponents : {Eigen::Vector2d(2.0, 2.0), Eigen::Vector2d(1.99, 2.0),
-                                            Eigen::Vector2d(2.0, 0.3), Eigen::Vector2d(0.3, 1.9)}) {
+                                             Eigen::Vector2d(2.0, 0.3), Eigen::Vector2d(0.3, 1.9)}) {
         Rng rng(800 + static_cast<unsigned>(index++));
         Placed s = place(Eigen::Vector3d(1.0, 0.7, 0.5), exponents, placement(rng, index % 2 == 0));
         const AffineTransform& t = s.convex.transform();

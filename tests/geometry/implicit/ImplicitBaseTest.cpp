@@ -68,7 +68,8 @@ TEST(ImplicitBase, TransformedShapeScalesTheBase) {
     const SurfaceMesh mesh = stretched.mesh();
     double meshArea = 0.0;
     for (const auto& t : mesh.triangles)
-        meshArea += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+        meshArea +=
+            0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
     EXPECT_NEAR(stretched.surfaceArea(), meshArea, 3e-3 * meshArea);  // the mesh's chordal error ~1e-3
     EXPECT_NEAR(stretched.volume(), 1.05 * base.volume(), 1e-12);
 }

@@ -11,10 +11,10 @@
 
 #include <cmath>
 #include <functional>
-#include <stdexcept>
-#include <string>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace dropscope::testing {
@@ -27,7 +27,8 @@ inline Eigen::Matrix3d randomMatrix(Rng& rng) {
 }
 
 inline AffineTransform randomPlacement(Rng& rng, bool similarity = false) {
-    const Eigen::Matrix3d m = similarity ? Eigen::Matrix3d(uniform(rng, 0.5, 2.0) * randomRotation(rng)) : randomMatrix(rng);
+    const Eigen::Matrix3d m =
+        similarity ? Eigen::Matrix3d(uniform(rng, 0.5, 2.0) * randomRotation(rng)) : randomMatrix(rng);
     return {m, randomPoint(rng, 5.0)};
 }
 
@@ -55,9 +56,7 @@ public:
     }
     double lipschitzBound() const override { return f_->lipschitzBound(); }
     double lipschitzAlong(const Eigen::Vector3d& d) const override { return f_->lipschitzAlong(d); }
-    std::optional<Point> convexCentre() const override {
-        return convex_ ? f_->convexCentre() : std::nullopt;
-    }
+    std::optional<Point> convexCentre() const override { return convex_ ? f_->convexCentre() : std::nullopt; }
     Eigen::AlignedBox3d bounds() const override { return f_->bounds(); }
     double characteristicLength() const override { return f_->characteristicLength(); }
     std::string_view presetName() const override { return f_->presetName(); }

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <string>
 #include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace dropscope::testing {
 namespace {
@@ -119,8 +119,9 @@ TEST(Superellipsoid, PrintsOneLineWithPresetAndPlacement) {
     const ImplicitShape shape(base, AffineTransform::translation(Eigen::Vector3d(4, 5, 6)));
     std::ostringstream os;
     shape.print(os);
-    EXPECT_EQ(os.str(), "implicit superellipsoid {semi_axes: [1, 2, 3], exponents: [0.5, 1]} "
-                        "M=[[1, 0, 0], [0, 1, 0], [0, 0, 1]] r0=(4, 5, 6)");
+    EXPECT_EQ(os.str(),
+              "implicit superellipsoid {semi_axes: [1, 2, 3], exponents: [0.5, 1]} "
+              "M=[[1, 0, 0], [0, 1, 0], [0, 0, 1]] r0=(4, 5, 6)");
     EXPECT_EQ(shape.kind(), ShapeKind::Implicit);
     EXPECT_EQ(shape.typeName(), "implicit");
 }

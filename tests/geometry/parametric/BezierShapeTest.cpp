@@ -105,9 +105,8 @@ public:
                 for (int j = bj * kBlock; j < (bj + 1) * kBlock; ++j) {
                     const double du = kURange / kU, dv = kVRange / kV;
                     hitQuad(vertex(i, j), vertex(i + 1, j), vertex(i + 1, (j + 1) % kV), vertex(i, (j + 1) % kV),
-                            uAt(i), vAt(j), du, dv, p, d, [&](double s, double u, double v) {
-                                found.push_back(refine(p, d, s, u, v, du, dv));
-                            });
+                            uAt(i), vAt(j), du, dv, p, d,
+                            [&](double s, double u, double v) { found.push_back(refine(p, d, s, u, v, du, dv)); });
                 }
         }
         std::sort(found.begin(), found.end(), [](const Root& a, const Root& b) { return a.s < b.s; });
@@ -190,11 +189,13 @@ private:
     Root refine(const Point& p, const Eigen::Vector3d& d, double s, double u, double v, double du, double dv) const {
         const double u0 = u, v0 = v;
         for (int iteration = 0; iteration < 40; ++iteration) {
-            const SurfaceJet jet = surface_.jet(std::clamp(u, 0.0, kURange), std::fmod(std::fmod(v, kVRange) + kVRange, kVRange));
+            const SurfaceJet jet =
+                surface_.jet(std::clamp(u, 0.0, kURange), std::fmod(std::fmod(v, kVRange) + kVRange, kVRange));
             const Eigen::Vector3d f = p + s * d - jet.r;
             if (f.norm() <= 1e-14 * (1.0 + p.norm() + std::abs(s) * d.norm())) {
                 // Converged near where the triangulation met the ray: the same root.
-                if (std::abs(u - u0) <= 2.0 * du && std::abs(v - v0) <= 2.0 * dv) return {s, std::clamp(u, 0.0, kURange), v};
+                if (std::abs(u - u0) <= 2.0 * du && std::abs(v - v0) <= 2.0 * dv)
+                    return {s, std::clamp(u, 0.0, kURange), v};
                 break;
             }
             Eigen::Matrix3d jacobian;
@@ -225,7 +226,8 @@ private:
                     const double vc = vStart + k * fv;
                     const double u1 = std::min(uc + fu, kURange);
                     hitQuad(surface_.point(uc, vc), surface_.point(u1, vc), surface_.point(u1, vc + fv),
-                            surface_.point(uc, vc + fv), uc, vc, u1 - uc, fv, p, d, [&](double hs, double hu, double hv) {
+                            surface_.point(uc, vc + fv), uc, vc, u1 - uc, fv, p, d,
+                            [&](double hs, double hu, double hv) {
                                 if (!found || std::abs(hs - s) < std::abs(best.s - s)) best = {hs, hu, hv};
                                 found = true;
                             });
@@ -262,8 +264,9 @@ TEST(BezierShape, MeshNormalsAgreeWithFacesAtEveryVertex) {
         ASSERT_EQ(mesh.vertices.size(), mesh.normals.size());
         std::vector<Eigen::Vector3d> faceSum(mesh.vertices.size(), Eigen::Vector3d::Zero());
         for (const auto& t : mesh.triangles) {
-            const Eigen::Vector3d n =
-                (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).normalized();
+            const Eigen::Vector3d n = (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                                          .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
+                                          .normalized();
             for (std::uint32_t k : t) faceSum[k] += n;
         }
         const Point north = transform.apply(kNorthPole), south = transform.apply(kSouthPole);
@@ -276,13 +279,12 @@ TEST(BezierShape, MeshNormalsAgreeWithFacesAtEveryVertex) {
             const double cosine = mesh.normals[k].dot(faceSum[k].normalized());
             leastCosine = std::min(leastCosine, cosine);
             EXPECT_GT(cosine, 0.9) << "vertex " << k << " at " << mesh.vertices[k].transpose();
-            const bool atPole = (mesh.vertices[k] - north).norm() < 1e-12 * size ||
-                                (mesh.vertices[k] - south).norm() < 1e-12 * size;
+            const bool atPole =
+                (mesh.vertices[k] - north).norm() < 1e-12 * size || (mesh.vertices[k] - south).norm() < 1e-12 * size;
             if (atPole) {
                 ++poleVertices;
                 const Eigen::Vector3d exact =
-                    transform.applyToNormal((mesh.vertices[k] - north).norm() < 1e-12 * size ? kUp : kDown)
-                        .vector();
+                    transform.applyToNormal((mesh.vertices[k] - north).norm() < 1e-12 * size ? kUp : kDown).vector();
                 EXPECT_GT(mesh.normals[k].dot(exact), 1.0 - 1e-12) << "pole vertex " << k;
             }
         }
@@ -357,7 +359,8 @@ TEST(BezierShape, ClosestPointsAndRaysAtThePoles) {
                 const double t = uniform(rng, 0.01, 1.0) * size;
                 const Direction in(-w);
                 // From outside: the first crossing is the target, entering.
-                EXPECT_NEAR(shape.distanceToSurface(target + t * w, in), t, 1e-9 * size) << "pole " << pole << " ray " << k;
+                EXPECT_NEAR(shape.distanceToSurface(target + t * w, in), t, 1e-9 * size)
+                    << "pole " << pole << " ray " << k;
                 const std::vector<RayCrossing> all = shape.crossings(target + t * w, in, 0.0);
                 ASSERT_EQ(all.size(), 2u) << "pole " << pole << " ray " << k;
                 EXPECT_LT(all[0].cosine, -0.1) << "pole " << pole << " ray " << k;
@@ -366,8 +369,10 @@ TEST(BezierShape, ClosestPointsAndRaysAtThePoles) {
                 const double tin = 1e-3 * size;
                 EXPECT_NEAR(shape.distanceToSurface(target - tin * w, Direction(w)), tin, 1e-9 * size)
                     << "pole " << pole << " ray " << k;
-                EXPECT_EQ(shape.locatePoint(target - tin * w), PointLocation::Inside) << "pole " << pole << " ray " << k;
-                EXPECT_EQ(shape.locatePoint(target + tin * w), PointLocation::Outside) << "pole " << pole << " ray " << k;
+                EXPECT_EQ(shape.locatePoint(target - tin * w), PointLocation::Inside)
+                    << "pole " << pole << " ray " << k;
+                EXPECT_EQ(shape.locatePoint(target + tin * w), PointLocation::Outside)
+                    << "pole " << pole << " ray " << k;
                 EXPECT_EQ(shape.locatePoint(target), PointLocation::OnSurface) << "pole " << pole << " ray " << k;
             }
         }
@@ -425,7 +430,8 @@ TEST(BezierShape, DistanceMatchesFineTriangulation) {
             double least = 1.0;
             for (const auto& r : roots)
                 if (r.s > -1e-7 * size) least = std::min(least, std::abs(fine.cosine(transform, d.vector(), r)));
-            for (const RayCrossing& c : shape.crossings(p, d, -1e-7 * size)) least = std::min(least, std::abs(c.cosine));
+            for (const RayCrossing& c : shape.crossings(p, d, -1e-7 * size))
+                least = std::min(least, std::abs(c.cosine));
             ASSERT_LT(least, kTangencyCosine) << "transform " << rays / kRaysPerTransform << " ray " << k << " kind "
                                               << kind << ": parametric " << actual << " vs reference " << expected;
             ++tangentExemptions;
@@ -451,10 +457,12 @@ TEST(BezierShape, LocatePointMatchesReferenceParity) {
             bool decided = false, parityInside = false;
             for (int attempt = 0; attempt < 4 && !decided; ++attempt) {
                 const Direction d = testing::randomDirection(rng);
-                const auto roots = fine.roots(transform.applyInverse(p), transform.applyInverseToVector(d.vector()), 0.0);
+                const auto roots =
+                    fine.roots(transform.applyInverse(p), transform.applyInverseToVector(d.vector()), 0.0);
                 decided = true;
                 for (const auto& r : roots)
-                    if (r.s < 1e-6 * size || std::abs(fine.cosine(transform, d.vector(), r)) < kTangencyCosine) decided = false;
+                    if (r.s < 1e-6 * size || std::abs(fine.cosine(transform, d.vector(), r)) < kTangencyCosine)
+                        decided = false;
                 parityInside = roots.size() % 2 == 1;
             }
             if (!decided) continue;

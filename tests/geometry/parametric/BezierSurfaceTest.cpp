@@ -42,14 +42,16 @@ Patches revolvedNet(const std::vector<std::array<Eigen::Vector2d, 4>>& profile) 
                 for (std::size_t j = 0; j < 4; ++j) {
                     Eigen::Vector2d a = arc[j];
                     for (std::size_t q = 0; q < c; ++q) a = Eigen::Vector2d(-a.y(), a.x());  // quarter turns
-                    patches[r][c][i][j] = Point(profile[r][i].x() * a.x(), profile[r][i].x() * a.y(), profile[r][i].y());
+                    patches[r][c][i][j] =
+                        Point(profile[r][i].x() * a.x(), profile[r][i].x() * a.y(), profile[r][i].y());
                 }
     return patches;
 }
 
 Patches sphereNet() {
-    return revolvedNet({{Eigen::Vector2d(0, 1), Eigen::Vector2d(kKappa, 1), Eigen::Vector2d(1, kKappa), Eigen::Vector2d(1, 0)},
-                        {Eigen::Vector2d(1, 0), Eigen::Vector2d(1, -kKappa), Eigen::Vector2d(kKappa, -1), Eigen::Vector2d(0, -1)}});
+    return revolvedNet(
+        {{Eigen::Vector2d(0, 1), Eigen::Vector2d(kKappa, 1), Eigen::Vector2d(1, kKappa), Eigen::Vector2d(1, 0)},
+         {Eigen::Vector2d(1, 0), Eigen::Vector2d(1, -kKappa), Eigen::Vector2d(kKappa, -1), Eigen::Vector2d(0, -1)}});
 }
 
 // A torus of major radius 2 and tube radius 0.5: four rows of quarter-circles around the tube.
@@ -75,7 +77,8 @@ SurfaceJet deCasteljau(const BezierNet& net, double s, double t) {
         for (int level = 3; level >= 1; --level) {
             if (level == 1) derivative = 3.0 * (p[1] - p[0]);
             for (int k = 0; k < level; ++k)
-                p[static_cast<std::size_t>(k)] = (1.0 - x) * p[static_cast<std::size_t>(k)] + x * p[static_cast<std::size_t>(k + 1)];
+                p[static_cast<std::size_t>(k)] =
+                    (1.0 - x) * p[static_cast<std::size_t>(k)] + x * p[static_cast<std::size_t>(k + 1)];
         }
         return p[0];
     };
@@ -175,7 +178,8 @@ TEST(BezierSurface, RejectsNetsThatDoNotClose) {
     {
         Patches p = sphere;
         p[0][3][2][3].z() -= 1e-3;
-        expectRejected(p, "patches[0][0]: its left edge does not meet patches[0][3]'s right edge (the v seam does not close)");
+        expectRejected(
+            p, "patches[0][0]: its left edge does not meet patches[0][3]'s right edge (the v seam does not close)");
     }
     {
         Patches p = sphere;
@@ -185,20 +189,23 @@ TEST(BezierSurface, RejectsNetsThatDoNotClose) {
     {
         Patches p = sphere;
         p[0][2][0][1].y() += 1e-3;
-        expectRejected(p, "patches[0][2]: its bottom edge (u = 0) is neither a single point (a pole) nor "
-                          "patches[1][2]'s top edge (u = 2)");
+        expectRejected(p,
+                       "patches[0][2]: its bottom edge (u = 0) is neither a single point (a pole) nor "
+                       "patches[1][2]'s top edge (u = 2)");
     }
     {
         Patches p = sphere;
         p[1][3][3][2].x() += 1e-3;
-        expectRejected(p, "patches[1][3]: its top edge (u = 2) is neither a single point (a pole) nor "
-                          "patches[0][3]'s bottom edge (u = 0)");
+        expectRejected(p,
+                       "patches[1][3]: its top edge (u = 2) is neither a single point (a pole) nor "
+                       "patches[0][3]'s bottom edge (u = 0)");
     }
     {
         Patches p = torusNet();
         p[3][1][3][2].z() += 1e-3;
-        expectRejected(p, "patches[0][1]: its bottom edge (u = 0) is neither a single point (a pole) nor "
-                          "patches[3][1]'s top edge (u = 4)");
+        expectRejected(p,
+                       "patches[0][1]: its bottom edge (u = 0) is neither a single point (a pole) nor "
+                       "patches[3][1]'s top edge (u = 4)");
     }
     {
         Patches p = sphere;
@@ -284,8 +291,7 @@ TEST(BezierSurface, ExtremesMatchBruteForce) {
     constexpr int samplesU = 300, samplesV = 600;
     std::vector<Point> samples;
     for (int i = 0; i <= samplesU; ++i)
-        for (int j = 0; j < samplesV; ++j)
-            samples.push_back(surface.point(2.0 * i / samplesU, 4.0 * j / samplesV));
+        for (int j = 0; j < samplesV; ++j) samples.push_back(surface.point(2.0 * i / samplesU, 4.0 * j / samplesV));
     for (int i = 0; i < 20; ++i) {
         const Eigen::Vector3d d = testing::randomDirection(rng).vector();
         double lo = std::numeric_limits<double>::infinity(), hi = -lo;

@@ -47,8 +47,9 @@ TEST(ParametricDistance, TransformedSphereMatchesEllipsoidOnDenseRays) {
         // Every third shape is the ellipsoid preset with semi-axes D: its image has matrix M^-T D^-2 M^-1.
         const bool onEllipsoid = i % 3 == 2;
         const ParametricShape shape(onEllipsoid ? ellipsoidBase() : sphereBase(), transform);
-        const Eigen::Matrix3d baseMatrix =
-            onEllipsoid ? Eigen::Vector3d(1.0, 4.0, 1.0 / 0.09).asDiagonal().toDenseMatrix() : Eigen::Matrix3d::Identity();
+        const Eigen::Matrix3d baseMatrix = onEllipsoid
+                                               ? Eigen::Vector3d(1.0, 4.0, 1.0 / 0.09).asDiagonal().toDenseMatrix()
+                                               : Eigen::Matrix3d::Identity();
         const Eigen::Matrix3d inverse = m.inverse();
         const Ellipsoid reference = Ellipsoid::fromMatrix(r0, inverse.transpose() * baseMatrix * inverse);
         const double size = reference.semiAxes().maxCoeff();
@@ -131,8 +132,8 @@ TEST(ParametricDistance, InvalidInputGivesNaN) {
     const ParametricShape shape(torusBase(), {});
     EXPECT_TRUE(std::isnan(shape.distanceToSurface(Point(5.0, 0.0, 0.0), Direction::invalid())));
     EXPECT_TRUE(std::isnan(shape.distanceToSurface(Point(kNaN, 0.0, 0.0), Direction(1.0, 0.0, 0.0))));
-    EXPECT_TRUE(std::isnan(shape.distanceToSurface(Point(std::numeric_limits<double>::infinity(), 0.0, 0.0),
-                                                   Direction(-1.0, 0.0, 0.0))));
+    EXPECT_TRUE(std::isnan(
+        shape.distanceToSurface(Point(std::numeric_limits<double>::infinity(), 0.0, 0.0), Direction(-1.0, 0.0, 0.0))));
     EXPECT_FALSE(shape.normal(Point(kNaN, 0.0, 0.0)));
 }
 
@@ -141,13 +142,13 @@ TEST(ParametricDistance, TorusRaysThroughTheHole) {
     const ParametricShape torus(torusBase(), {});
     const Direction x(1.0, 0.0, 0.0);
     const double tol = 1e-9;
-    EXPECT_NEAR(torus.distanceToSurface(Point(-5.0, 0.0, 0.0), x), 2.5, tol);  // outside: the first of four
-    EXPECT_NEAR(torus.distanceToSurface(Point(-2.0, 0.0, 0.0), x), 0.5, tol);  // in the tube
-    EXPECT_NEAR(torus.distanceToSurface(Point(0.0, 0.0, 0.0), x), 1.5, tol);   // in the hole
-    EXPECT_NEAR(torus.distanceToSurface(Point(-1.5, 0.0, 0.0), x), 3.0, tol);  // leaving into the hole: re-entry
-    EXPECT_NEAR(torus.distanceToSurface(Point(-1.5, 0.0, 0.0), -x), 1.0, tol); // entering: the far side of the tube
-    EXPECT_EQ(torus.distanceToSurface(Point(2.5, 0.0, 0.0), x), 0.0);         // leaving for good
-    EXPECT_NEAR(torus.distanceToSurface(Point(2.5, 0.0, 0.0), -x), 1.0, tol); // entering the tube from outside
+    EXPECT_NEAR(torus.distanceToSurface(Point(-5.0, 0.0, 0.0), x), 2.5, tol);   // outside: the first of four
+    EXPECT_NEAR(torus.distanceToSurface(Point(-2.0, 0.0, 0.0), x), 0.5, tol);   // in the tube
+    EXPECT_NEAR(torus.distanceToSurface(Point(0.0, 0.0, 0.0), x), 1.5, tol);    // in the hole
+    EXPECT_NEAR(torus.distanceToSurface(Point(-1.5, 0.0, 0.0), x), 3.0, tol);   // leaving into the hole: re-entry
+    EXPECT_NEAR(torus.distanceToSurface(Point(-1.5, 0.0, 0.0), -x), 1.0, tol);  // entering: the far side of the tube
+    EXPECT_EQ(torus.distanceToSurface(Point(2.5, 0.0, 0.0), x), 0.0);           // leaving for good
+    EXPECT_NEAR(torus.distanceToSurface(Point(2.5, 0.0, 0.0), -x), 1.0, tol);   // entering the tube from outside
     EXPECT_TRUE(std::isnan(torus.distanceToSurface(Point(0.0, 0.0, 3.0), Direction(0.0, 0.0, 1.0))));
     EXPECT_TRUE(std::isnan(torus.distanceToSurface(Point(0.0, 0.0, 3.0), Direction(0.0, 0.0, -1.0))));  // the hole
     EXPECT_NEAR(torus.distanceToSurface(Point(2.0, 0.0, 3.0), Direction(0.0, 0.0, -1.0)), 2.5, tol);
@@ -198,8 +199,10 @@ std::vector<double> bruteForceRoots(const AffineTransform& t, const Point& p, co
             double lo = sMax * (k - 1) / kSteps, hi = s1;
             for (int b = 0; b < 60; ++b) {
                 const double mid = 0.5 * (lo + hi);
-                if ((torusFunction(pb + mid * db) < 0.0) == (previous < 0.0)) lo = mid;
-                else hi = mid;
+                if ((torusFunction(pb + mid * db) < 0.0) == (previous < 0.0))
+                    lo = mid;
+                else
+                    hi = mid;
             }
             roots.push_back(0.5 * (lo + hi));
         }
@@ -221,8 +224,9 @@ TEST(ParametricDistance, TorusCrossingsMatchBruteForceScan) {
         for (int k = 0; k < 400; ++k) {
             const Point p = testing::randomPoint(rng, 0.6 * span, torus.bounds().center());
             // Aimed near a random surface point, so that most rays cross the tube (many twice, some four times).
-            const Point target = transform.apply(torus.surface().point(uniform(rng, 0.0, 7.0), uniform(rng, 0.0, 7.0))) +
-                                 testing::randomPoint(rng, 0.3);
+            const Point target =
+                transform.apply(torus.surface().point(uniform(rng, 0.0, 7.0), uniform(rng, 0.0, 7.0))) +
+                testing::randomPoint(rng, 0.3);
             const Direction d(target - p);
             const std::vector<double> expected = bruteForceRoots(transform, p, d, 2.0 * span);
             const std::vector<RayCrossing> found = torus.crossings(p, d, 0.0);

@@ -46,13 +46,15 @@ TEST(ParametricLocate, TransformedSphereMatchesEllipsoid) {
                 p = transform.apply(shape.surface().point(uniform(rng, dom.u0, dom.u1), uniform(rng, dom.v0, dom.v1)));
             } else {
                 const Point q = testing::randomPoint(rng, 1.0);
-                p = k % 3 == 1 ? transform.apply(q) : testing::randomPoint(rng, 1.5 * reference.semiAxes().maxCoeff(), r0);
+                p = k % 3 == 1 ? transform.apply(q)
+                               : testing::randomPoint(rng, 1.5 * reference.semiAxes().maxCoeff(), r0);
                 // Not within 1e-6 of the surface, where the two bands (defined differently) may disagree.
                 if (std::abs(std::sqrt(reference.quadraticForm(p)) - 1.0) < 1e-6) continue;
             }
             const PointLocation expected = reference.locatePoint(p);
             const PointLocation actual = shape.locatePoint(p);
-            ASSERT_EQ(actual, expected) << "shape " << i << " point " << k << ": " << name(actual) << " vs " << name(expected);
+            ASSERT_EQ(actual, expected) << "shape " << i << " point " << k << ": " << name(actual) << " vs "
+                                        << name(expected);
             onSurface += expected == PointLocation::OnSurface;
             inside += expected == PointLocation::Inside;
             outside += expected == PointLocation::Outside;

@@ -36,7 +36,7 @@ TEST(ParametricBase, TorusIntegralsAndOrientation) {
     const ParametricBase& base = *torusBase();
     EXPECT_EQ(base.orientation(), 1.0);
     EXPECT_NEAR(base.signedVolume(), 2.0 * kPi * kPi * 2.0 * 0.25, 1e-9);  // 2 pi^2 R r^2
-    EXPECT_NEAR(base.area(), 4.0 * kPi * kPi * 2.0 * 0.5, 1e-9);          // 4 pi^2 R r
+    EXPECT_NEAR(base.area(), 4.0 * kPi * kPi * 2.0 * 0.5, 1e-9);           // 4 pi^2 R r
     EXPECT_NEAR(base.extremes()[0].min, -2.5, 1e-10);
     EXPECT_NEAR(base.extremes()[1].max, 2.5, 1e-10);
     EXPECT_NEAR(base.extremes()[2].max, 0.5, 1e-10);
@@ -69,7 +69,8 @@ void checkMesh(const ParametricShape& shape, bool isSphere) {
         const Point& c = mesh.vertices[tri[2]];
         const Eigen::Vector3d face = (b - a).cross(c - a);
         ASSERT_GT(face.norm(), 1e-8) << "degenerate triangle " << t;
-        EXPECT_GT(face.dot(mesh.normals[tri[0]] + mesh.normals[tri[1]] + mesh.normals[tri[2]]), 0.0) << "triangle " << t;
+        EXPECT_GT(face.dot(mesh.normals[tri[0]] + mesh.normals[tri[1]] + mesh.normals[tri[2]]), 0.0)
+            << "triangle " << t;
     }
 }
 

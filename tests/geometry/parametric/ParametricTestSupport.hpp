@@ -34,8 +34,8 @@ inline const std::shared_ptr<const ParametricBase>& ellipsoidBase() {
 // What randomMatrix draws. The seeded cases of each test were chosen with its own draws, so a test keeps
 // the variant it was written with: changing one changes every case after it.
 struct RandomMatrixDraws {
-    bool shearXZ = true;                 // draw the (0, 2) shear term too (after (0, 1) and (1, 2))
-    Eigen::Index reflectedColumn = 0;    // the column negated when reflecting
+    bool shearXZ = true;               // draw the (0, 2) shear term too (after (0, 1) and (1, 2))
+    Eigen::Index reflectedColumn = 0;  // the column negated when reflecting
 };
 
 // Rotation, anisotropic scaling (0.5 to 2 per axis), shear (off-diagonal terms up to 0.4) and, when

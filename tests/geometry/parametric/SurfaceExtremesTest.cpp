@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include <string>
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <string>
 
 namespace dropscope {
 namespace {
@@ -55,8 +55,9 @@ TEST(SurfaceExtremes, TorusAlongAnyDirection) {
     const auto torus = makeTorusSurface(major, minor);
     Rng rng(8);
     for (int i = 0; i < 40; ++i) {
-        const Eigen::Vector3d d = i == 0 ? Eigen::Vector3d(0, 0, 1) : i == 1 ? Eigen::Vector3d(1, 0, 0)
-                                                              : uniform(rng, 0.1, 3.0) * testing::randomDirection(rng).vector();
+        const Eigen::Vector3d d = i == 0   ? Eigen::Vector3d(0, 0, 1)
+                                  : i == 1 ? Eigen::Vector3d(1, 0, 0)
+                                           : uniform(rng, 0.1, 3.0) * testing::randomDirection(rng).vector();
         const double expected = major * std::hypot(d.x(), d.y()) + minor * d.norm();
         const ExtremeRange range = extremeRange(*torus, d);
         EXPECT_NEAR(range.max / expected, 1.0, 1e-12) << "case " << i;

@@ -126,8 +126,9 @@ TEST(SurfaceIntegrals, FullAccuracyIsFast) {
     const QuadratureResult b = surfaceAreaIntegral(*torus, Eigen::Matrix3d::Identity(), kFullAccuracy);
     const auto end = std::chrono::steady_clock::now();
     const auto ms = [](auto d) { return std::chrono::duration<double, std::milli>(d).count(); };
-    std::cout << "full-accuracy area: ellipsoid " << ms(middle - start) << " ms (error estimate " << a.errorEstimate / a.value
-              << "), torus " << ms(end - middle) << " ms (error estimate " << b.errorEstimate / b.value << ")\n";
+    std::cout << "full-accuracy area: ellipsoid " << ms(middle - start) << " ms (error estimate "
+              << a.errorEstimate / a.value << "), torus " << ms(end - middle) << " ms (error estimate "
+              << b.errorEstimate / b.value << ")\n";
     EXPECT_NEAR(a.value / ellipsoidSurfaceArea(Eigen::Vector3d(2.0, 1.0, 0.4)), 1.0, kFullAccuracy);
 }
 

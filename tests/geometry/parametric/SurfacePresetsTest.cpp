@@ -36,7 +36,8 @@ DerivativeErrors compareDerivatives(const ParametricSurface& s, double u, double
     const SurfaceJet a = s.jet(u, v), n = numeric.jet(u, v);
     const SurfaceHessians ha = s.hessians(u, v), hn = numeric.hessians(u, v);
     const double first = std::max({(a.r - n.r).norm(), (a.ru - n.ru).norm(), (a.rv - n.rv).norm()}) / scale;
-    const double second = std::max({(ha.ruu - hn.ruu).norm(), (ha.ruv - hn.ruv).norm(), (ha.rvv - hn.rvv).norm()}) / scale;
+    const double second =
+        std::max({(ha.ruu - hn.ruu).norm(), (ha.ruv - hn.ruv).norm(), (ha.rvv - hn.rvv).norm()}) / scale;
     return {first, second};
 }
 
@@ -118,7 +119,8 @@ TEST(ParametricSurface, AnalyticDerivativesMatchTheNumericDefaults) {
         worstFirst = std::max({worstFirst, e.first, t.first});
         worstSecond = std::max({worstSecond, e.second, t.second});
     }
-    std::cout << "numeric vs analytic derivatives, relative: first " << worstFirst << ", second " << worstSecond << '\n';
+    std::cout << "numeric vs analytic derivatives, relative: first " << worstFirst << ", second " << worstSecond
+              << '\n';
 }
 
 TEST(ParametricSurface, NumericDefaultsStayInsideABoundedDomain) {
@@ -175,8 +177,8 @@ void expectThrowNaming(const std::function<void()>& f, const std::string& word) 
 TEST(ParametricPresets, RejectBadParameters) {
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     for (const double r : {0.0, -1.0, nan, inf}) expectThrowNaming([&] { makeSphereSurface(r); }, "radius");
-    for (const Eigen::Vector3d& a : {Eigen::Vector3d(1, 0, 1), Eigen::Vector3d(1, 1, -2), Eigen::Vector3d(nan, 1, 1),
-                                     Eigen::Vector3d(1, inf, 1)})
+    for (const Eigen::Vector3d& a :
+         {Eigen::Vector3d(1, 0, 1), Eigen::Vector3d(1, 1, -2), Eigen::Vector3d(nan, 1, 1), Eigen::Vector3d(1, inf, 1)})
         expectThrowNaming([&] { makeEllipsoidSurface(a); }, "semi_axes");
     expectThrowNaming([] { makeTorusSurface(1.0, 1.0); }, "minor_radius");
     expectThrowNaming([] { makeTorusSurface(1.0, 2.0); }, "minor_radius");
