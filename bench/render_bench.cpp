@@ -16,11 +16,11 @@
 #include "render/PathLayer.hpp"
 #include "render/Renderer.hpp"
 #include "rendering/DrawCount.hpp"
+#include "run/TraceRun.hpp"
 #include "scene/SceneLoader.hpp"
 #include "snapshot/Image.hpp"
 #include "snapshot/OsmesaContext.hpp"
 #include "transport/OpticalScene.hpp"
-#include "transport/TraceRun.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -140,7 +140,7 @@ std::vector<PhotonPath> pathsOfSegments(const OpticalScene& optical, const std::
         settings.paths = photons;
         settings.seed = options.seed;
         settings.threads = 1;
-        TraceResult traced = runTrace(optical, sources, settings);
+        TraceResult traced = runTrace(optical, sources, settings, TallySet{});
         std::uint64_t total = 0;
         for (std::size_t k = 0; k < traced.paths.size(); ++k) {
             render::LineBatch one(anchor);

@@ -12,9 +12,11 @@
 #include "geometry/Sphere.hpp"
 #include "octree/CountArgument.hpp"
 #include "octree/Measure.hpp"
+#include "run/TraceRun.hpp"
 #include "scene/SceneLoader.hpp"
+#include "tally/FateTally.hpp"
+#include "tally/StandardTallies.hpp"
 #include "transport/OpticalScene.hpp"
-#include "transport/TraceRun.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -98,10 +100,12 @@ std::string fixed(double value, int digits) {
     return text;
 }
 
-bool sameTally(const TraceTally& a, const TraceTally& b) {
-    return a.photons == b.photons && a.escaped == b.escaped && a.absorbed == b.absorbed && a.lost == b.lost &&
-           a.unscattered == b.unscattered && a.events == b.events && a.lostReasons == b.lostReasons &&
-           a.angular == b.angular;
+// Every tally of two runs reports the same numbers.
+bool sameTallies(const TraceResult& a, const TraceResult& b) {
+    ResultReport reportA, reportB;
+    a.tallies.report(reportA);
+    b.tallies.report(reportB);
+    return a.photons == b.photons && reportA == reportB;
 }
 
 // Medians over the repeats of: cloning the scene's shapes, an Octree over the clones alone, and the
@@ -172,7 +176,7 @@ double processCpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_P
 // 1 and `threads` threads, interleaved so that both see the same drift in the machine's load; the
 // first run's tally is the one every other must equal.
 std::vector<ThreadRuns> timeTransport(const OpticalScene& optical, const std::vector<Source>& sources,
-                                      const Options& options, TraceTally& tally, bool& identical) {
+                                      const Options& options, FateTally& fates, bool& identical) {
     std::vector<ThreadRuns> runs{{1, {}, {}}};
     if (options.threads > 1) runs.push_back({options.threads, {}, {}});
     TraceSettings settings;
@@ -180,24 +184,24 @@ std::vector<ThreadRuns> timeTransport(const OpticalScene& optical, const std::ve
     settings.photons = std::min<std::uint64_t>(options.photons, 2000);  // warm-up: thread pool, caches
     for (const ThreadRuns& run : runs) {
         settings.threads = run.threads;
-        runTrace(optical, sources, settings);
+        runTrace(optical, sources, settings, standardTallies());
     }
     settings.photons = options.photons;
     identical = true;
-    std::optional<TraceTally> first;
+    std::optional<TraceResult> first;
     for (int r = 0; r < options.repeat; ++r) {
         for (ThreadRuns& run : runs) {
             std::cerr << "  trace: " << run.threads << " thread(s), run " << r + 1 << '/' << options.repeat << '\n';
             settings.threads = run.threads;
             const double cpuStart = processCpuSeconds();
-            const TraceResult result = runTrace(optical, sources, settings);
+            TraceResult result = runTrace(optical, sources, settings, standardTallies());
             run.cpuSeconds.push_back(processCpuSeconds() - cpuStart);
             run.seconds.push_back(result.seconds);
-            if (!first) first = result.tally;
-            identical = identical && !result.partial && sameTally(*first, result.tally);
+            identical = identical && !result.partial && (!first || sameTallies(*first, result));
+            if (!first) first = std::move(result);
         }
     }
-    tally = *first;
+    fates = first->tallies.get<FateTally>();
     return runs;
 }
 
@@ -211,7 +215,7 @@ std::vector<Ray> segmentStarts(const OpticalScene& optical, const std::vector<So
     settings.seed = seed;
     settings.threads = 1;
     settings.paths = count;
-    const TraceResult recorded = runTrace(optical, sources, settings);
+    const TraceResult recorded = runTrace(optical, sources, settings, TallySet{});
     std::vector<Ray> rays;
     for (const PhotonPath& path : recorded.paths) {
         for (const Event& event : path.events) {
@@ -268,27 +272,27 @@ void printScene(const Scene& scene, const std::string& name, const BuildTimes& b
               << " | " << fixed(build.opticalScene - build.clone - build.octree, 3) << " |\n";
 }
 
-void printPhotons(const TraceTally& tally, double expectedUnscattered) {
+void printPhotons(const FateTally& tally, double expectedUnscattered) {
     const auto perPhoton = [&](std::uint64_t count) {
-        return static_cast<double>(count) / static_cast<double>(tally.photons);
+        return static_cast<double>(count) / static_cast<double>(tally.photons());
     };
-    const EventCounts& e = tally.events;
+    const EventCounts& e = tally.events();
     std::cout << "\n### What a photon does\n\n"
                  "| photons | reflect | refract | TIR | absorb | events (all four) | escaped | absorbed | lost | "
                  "unscattered | exp(-optical depth) |\n|---|---|---|---|---|---|---|---|---|---|---|\n"
-              << "| " << tally.photons << " | " << fixed(perPhoton(e.reflect), 3) << " | "
+              << "| " << tally.photons() << " | " << fixed(perPhoton(e.reflect), 3) << " | "
               << fixed(perPhoton(e.refract), 3) << " | " << fixed(perPhoton(e.tir), 4) << " | "
               << fixed(perPhoton(e.absorb), 5) << " | " << fixed(perPhoton(e.reflect + e.refract + e.tir + e.absorb), 3)
-              << " | " << fixed(100.0 * perPhoton(tally.escaped), 3) << " % | "
-              << fixed(100.0 * perPhoton(tally.absorbed), 3) << " % | " << fixed(100.0 * perPhoton(tally.lost), 4)
-              << " % | " << fixed(100.0 * perPhoton(tally.unscattered), 3) << " % | "
+              << " | " << fixed(100.0 * perPhoton(tally.escaped()), 3) << " % | "
+              << fixed(100.0 * perPhoton(tally.absorbed()), 3) << " % | " << fixed(100.0 * perPhoton(tally.lost()), 4)
+              << " % | " << fixed(100.0 * perPhoton(tally.unscattered()), 3) << " % | "
               << (expectedUnscattered >= 0.0 ? fixed(100.0 * expectedUnscattered, 3) + " %" : "-") << " |\n"
               << "\nPer photon except the percentages.\n";
 }
 
-void printTransport(const std::vector<ThreadRuns>& runs, const TraceTally& tally) {
-    const auto photons = static_cast<double>(tally.photons);
-    const EventCounts& e = tally.events;
+void printTransport(const std::vector<ThreadRuns>& runs, const FateTally& tally) {
+    const auto photons = static_cast<double>(tally.photons());
+    const EventCounts& e = tally.events();
     const auto interface = static_cast<double>(e.reflect + e.refract + e.tir);
     std::cout << "\n### Throughput (median of the repeats)\n\n"
                  "| threads | seconds (each run) | photons/s | speedup | speedup of the fastest runs | "
@@ -306,9 +310,9 @@ void printTransport(const std::vector<ThreadRuns>& runs, const TraceTally& tally
     }
 }
 
-void printReference(const FirstHitTimes& hits, const ThreadRuns& oneThread, const TraceTally& tally, int threads) {
-    const auto photons = static_cast<double>(tally.photons);
-    const EventCounts& e = tally.events;
+void printReference(const FirstHitTimes& hits, const ThreadRuns& oneThread, const FateTally& tally, int threads) {
+    const auto photons = static_cast<double>(tally.photons());
+    const EventCounts& e = tally.events();
     const double events = static_cast<double>(e.reflect + e.refract + e.tir + e.absorb) / photons;
     const double queries = 1.0 + static_cast<double>(e.reflect + e.refract + e.tir) / photons;
     const double hitSeconds = median(hits.oneThread);
@@ -350,7 +354,7 @@ int main(int argc, char** argv) {
         const std::unique_ptr<OpticalScene> optical = buildOpticalScene(scene, options.repeat, build);
         std::cerr << "reference: segments of " << options.referencePhotons << " photons\n";
         const std::vector<Ray> rays = segmentStarts(*optical, scene.sources, options.referencePhotons, options.seed);
-        TraceTally tally;
+        FateTally tally;
         bool identical = false;
         const std::vector<ThreadRuns> runs = timeTransport(*optical, scene.sources, options, tally, identical);
         std::cerr << "reference: firstHit on " << rays.size() << " segments\n";

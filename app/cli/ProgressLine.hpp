@@ -1,6 +1,6 @@
 #pragma once
 
-#include "transport/TraceRun.hpp"
+#include "run/TraceRun.hpp"
 
 #include <iosfwd>
 #include <string>

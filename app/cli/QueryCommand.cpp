@@ -1,8 +1,8 @@
 #include "cli/QueryCommand.hpp"
 
-#include "cli/AtomicFile.hpp"
 #include "cli/Cli.hpp"
 #include "cli/RayCsv.hpp"
+#include "results/AtomicFile.hpp"
 #include "scene/SceneLoader.hpp"
 #include "tree/Octree.hpp"
 

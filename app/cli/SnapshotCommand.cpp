@@ -1,10 +1,10 @@
 #include "cli/SnapshotCommand.hpp"
 
-#include "cli/AtomicFile.hpp"
 #include "cli/BadInput.hpp"
 #include "cli/Cli.hpp"
 #include "cli/WholeNumberOption.hpp"
 #include "render/RenderError.hpp"
+#include "results/AtomicFile.hpp"
 #include "scene/SceneLoader.hpp"
 
 #include <CLI/CLI.hpp>

@@ -4,19 +4,24 @@
 #include "cli/Cli.hpp"
 #include "cli/InterruptGuard.hpp"
 #include "cli/ProgressLine.hpp"
-#include "cli/TraceFiles.hpp"
 #include "cli/WholeNumberOption.hpp"
+#include "results/TraceFiles.hpp"
+#include "run/TraceRun.hpp"
 #include "scene/SceneLoader.hpp"
-#include "transport/TraceRun.hpp"
+#include "tally/FateTally.hpp"
+#include "tally/StandardTallies.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <optional>
 #include <ostream>
+#include <string>
 #include <system_error>
+#include <vector>
 
 namespace dropscope {
 
@@ -30,13 +35,13 @@ constexpr std::uint64_t kMaxPaths = 1'000'000;  // every event kept in memory: ~
 
 // Refuses an --out that names something other than a folder, or holds an output name that is not a
 // regular file, before any work is done.
-void checkOutputPath(const fs::path& directory) {
+void checkOutputPath(const fs::path& directory, const std::vector<std::string>& fileNames) {
     std::error_code error;
     const fs::file_status status = fs::status(directory, error);
     if (fs::exists(status) && !fs::is_directory(status)) {
         throw BadInputError(directory.string() + ": exists and is not a directory");
     }
-    for (const char* name : {"summary.json", "angular.csv", "paths.jsonl"}) {
+    for (const std::string& name : fileNames) {
         const fs::file_status file = fs::symlink_status(directory / name, error);
         if (fs::exists(file) && !fs::is_regular_file(file)) {
             throw BadInputError((directory / name).string() + ": exists and is not a regular file");
@@ -54,7 +59,6 @@ TraceSettings traceSettings(const TraceOptions& options) {
     TraceSettings settings;
     settings.photons = options.photons;
     settings.seed = options.seed;
-    settings.bins = options.bins;
     settings.threads = options.threads;
     settings.paths = options.paths;
     settings.transport.maxEvents = options.maxEvents;
@@ -62,27 +66,36 @@ TraceSettings traceSettings(const TraceOptions& options) {
     return settings;
 }
 
+std::string listed(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
 void printSummary(const TraceResult& result, const fs::path& directory, std::ostream& out) {
-    const TraceTally& tally = result.tally;
-    const double photons = static_cast<double>(tally.photons);
+    const FateTally& fates = result.tallies.get<FateTally>();
+    const double photons = static_cast<double>(result.photons);
     const auto share = [&](std::uint64_t count) { return photons > 0.0 ? static_cast<double>(count) / photons : 0.0; };
     char line[320];
     if (result.partial) {
         std::snprintf(line, sizeof line, "trace: interrupted after %llu of %llu photons",
-                      static_cast<unsigned long long>(tally.photons),
+                      static_cast<unsigned long long>(result.photons),
                       static_cast<unsigned long long>(result.requested));
     } else {
-        std::snprintf(line, sizeof line, "trace: %llu photons", static_cast<unsigned long long>(tally.photons));
+        std::snprintf(line, sizeof line, "trace: %llu photons", static_cast<unsigned long long>(result.photons));
     }
     out << line;
     std::snprintf(line, sizeof line, " in %.3f s (%.0f photons/s, %d threads)\n", result.seconds,
                   result.seconds > 0.0 ? photons / result.seconds : 0.0, result.threads);
     out << line;
     std::snprintf(line, sizeof line, "  escaped %.6g (unscattered %.6g), absorbed %.6g, lost %.6g\n",
-                  share(tally.escaped), share(tally.unscattered), share(tally.absorbed), share(tally.lost));
+                  share(fates.escaped()), share(fates.unscattered()), share(fates.absorbed()), share(fates.lost()));
     out << line;
-    out << "  wrote summary.json, angular.csv, paths.jsonl" << (result.partial ? " (partial results)" : "") << " in "
-        << directory.string() << '\n';
+    // summary.json first, as always; then the tables and paths.jsonl
+    std::vector<std::string> names = traceFileNames(result.tallies);
+    std::rotate(names.begin(), names.end() - 1, names.end());
+    out << "  wrote " << listed(names) << (result.partial ? " (partial results)" : "") << " in " << directory.string()
+        << '\n';
 }
 
 }  // namespace
@@ -119,7 +132,8 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
 
 int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err) {
     const fs::path directory = options.outDir;
-    checkOutputPath(directory);
+    const TallySet tallies = standardTallies(options.bins);
+    checkOutputPath(directory, traceFileNames(tallies));
     const Scene scene = loadScene(options.scenePath);
     if (scene.sources.empty()) throw SceneError(scene.origin, "sources", "the scene has no light sources to trace");
     const OpticalScene opticalScene(scene);
@@ -133,8 +147,8 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
     TraceControl control;
     control.stop = &interrupt.flag();
     if (progress) control.onProgress = [&](const TraceProgress& now) { progress->update(now); };
-    const TraceResult result = runTrace(opticalScene, scene.sources, info.settings, control);
-    if (progress) progress->finish({result.tally.photons, result.requested, result.seconds});
+    const TraceResult result = runTrace(opticalScene, scene.sources, info.settings, tallies, control);
+    if (progress) progress->finish({result.photons, result.requested, result.seconds});
 
     try {
         writeTraceFiles(directory, result, info, opticalScene.media());
@@ -143,7 +157,7 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
     }
     printSummary(result, directory, out);
     if (!result.partial) return kExitSuccess;
-    err << "dropscope: trace interrupted: " << result.tally.photons << " of " << result.requested
+    err << "dropscope: trace interrupted: " << result.photons << " of " << result.requested
         << " photons traced, partial results in " << directory.string() << '\n';
     return kExitInterrupted;
 }

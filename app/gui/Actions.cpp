@@ -1,8 +1,8 @@
 #include "gui/Actions.hpp"
 
-#include "cli/AtomicFile.hpp"
-#include "cli/TraceFiles.hpp"
 #include "gui/ShapeDescription.hpp"
+#include "results/AtomicFile.hpp"
+#include "results/PathsJsonl.hpp"
 #include "scene/SceneLoader.hpp"
 #include "scene/SceneWriter.hpp"
 #include "transport/OpticalScene.hpp"
@@ -136,10 +136,9 @@ void updateTraces(AppState& state) {
         if (outcome->error) {
             state.refuse("trace failed: " + *outcome->error);
         } else {
-            const TraceTally& tally = outcome->result.tally;
             std::ostringstream text;
-            text << (outcome->result.partial ? "trace stopped: " : "traced ") << tally.photons << " photons in "
-                 << std::fixed << std::setprecision(2) << outcome->result.seconds << " s";
+            text << (outcome->result.partial ? "trace stopped: " : "traced ") << outcome->result.photons
+                 << " photons in " << std::fixed << std::setprecision(2) << outcome->result.seconds << " s";
             state.trace = TraceShown{std::move(*outcome), std::move(state.pendingSlots), nullptr};
             const auto paths = static_cast<int>(state.trace->outcome.result.paths.size());
             selectEvent(state, state.selectedPath < paths ? state.selectedPath : -1, state.selectedEvent);

@@ -1,6 +1,9 @@
 #include "gui/PanelLayout.hpp"
 #include "gui/Panels.hpp"
 
+#include "tally/AngularTally.hpp"
+#include "tally/FateTally.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -14,18 +17,11 @@ namespace {
 
 // Escapes per steradian in each angular bin, as a fraction of the photons traced: angular.csv's
 // fraction_per_sr, the quantity whose peaks are the rainbows.
-std::vector<float> perSteradian(const TraceTally& tally) {
-    const std::size_t bins = tally.angular.size();
-    std::vector<float> values(bins, 0.0f);
-    if (tally.photons == 0) return values;
-    const double width = std::numbers::pi / static_cast<double>(bins);
-    for (std::size_t k = 0; k < bins; ++k) {
-        const double solidAngle =
-            2.0 * std::numbers::pi *
-            (std::cos(width * static_cast<double>(k)) - std::cos(width * static_cast<double>(k + 1)));
-        values[k] =
-            static_cast<float>(static_cast<double>(tally.angular[k]) / static_cast<double>(tally.photons) / solidAngle);
-    }
+std::vector<float> perSteradian(const AngularTally& angular) {
+    std::vector<float> values(static_cast<std::size_t>(angular.bins()), 0.0f);
+    if (angular.photons() == 0) return values;
+    const std::vector<double> perSr = angular.fractionPerSteradian();
+    std::transform(perSr.begin(), perSr.end(), values.begin(), [](double v) { return static_cast<float>(v); });
     return values;
 }
 
@@ -43,17 +39,17 @@ void drawResultsPanel(AppState& state) {
         return;
     }
     const TraceResult& result = state.trace->outcome.result;
-    const TraceTally& tally = result.tally;
-    const double n = tally.photons > 0 ? static_cast<double>(tally.photons) : 1.0;
-    ImGui::Text("%llu photons%s, %.2f s", static_cast<unsigned long long>(tally.photons),
+    const FateTally& fates = result.tallies.get<FateTally>();
+    const double n = fates.photons() > 0 ? static_cast<double>(fates.photons()) : 1.0;
+    ImGui::Text("%llu photons%s, %.2f s", static_cast<unsigned long long>(fates.photons()),
                 result.partial ? " (stopped early)" : "", result.seconds);
-    ImGui::Text("escaped %.5f  absorbed %.5f", static_cast<double>(tally.escaped) / n,
-                static_cast<double>(tally.absorbed) / n);
-    ImGui::Text("lost %.5f  unscattered %.5f", static_cast<double>(tally.lost) / n,
-                static_cast<double>(tally.unscattered) / n);
+    ImGui::Text("escaped %.5f  absorbed %.5f", static_cast<double>(fates.escaped()) / n,
+                static_cast<double>(fates.absorbed()) / n);
+    ImGui::Text("lost %.5f  unscattered %.5f", static_cast<double>(fates.lost()) / n,
+                static_cast<double>(fates.unscattered()) / n);
     static bool logScale = true;
     ImGui::Checkbox("log scale", &logScale);
-    std::vector<float> values = perSteradian(tally);
+    std::vector<float> values = perSteradian(result.tallies.get<AngularTally>());
     if (logScale) {
         // Empty bins sit half a decade below the faintest non-empty one, not at a fixed floor that would
         // stretch the plot.

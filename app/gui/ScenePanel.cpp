@@ -1,9 +1,9 @@
-#include "edit/ShapeSpec.hpp"
 #include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
 #include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
 #include "gui/ShapeDescription.hpp"
+#include "scene/ShapeSpec.hpp"
 
 #include <imgui.h>
 

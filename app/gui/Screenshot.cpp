@@ -1,7 +1,7 @@
 #include "gui/Screenshot.hpp"
 
-#include "cli/AtomicFile.hpp"
 #include "render/RenderError.hpp"
+#include "results/AtomicFile.hpp"
 
 #include <algorithm>
 #include <ostream>

@@ -1,5 +1,6 @@
 #include "gui/TraceJob.hpp"
 
+#include "tally/StandardTallies.hpp"
 #include "transport/OpticalScene.hpp"
 
 #include <exception>
@@ -70,8 +71,8 @@ void TraceJob::run(Scene scene, const TraceSettings& settings) {
             done_.store(progress.done, std::memory_order_relaxed);
             seconds_.store(progress.seconds, std::memory_order_relaxed);
         };
-        outcome.result = runTrace(optical, scene.sources, settings, control);
-        done_.store(outcome.result.tally.photons, std::memory_order_relaxed);
+        outcome.result = runTrace(optical, scene.sources, settings, standardTallies(), control);
+        done_.store(outcome.result.photons, std::memory_order_relaxed);
         seconds_.store(outcome.result.seconds, std::memory_order_relaxed);
     } catch (const std::exception& error) {
         outcome.error = error.what();

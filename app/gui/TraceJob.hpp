@@ -1,7 +1,7 @@
 #pragma once
 
+#include "run/TraceRun.hpp"
 #include "scene/Scene.hpp"
-#include "transport/TraceRun.hpp"
 
 #include <atomic>
 #include <cstdint>

@@ -1,10 +1,10 @@
 #include "gui/ViewportControls.hpp"
 
-#include "edit/ShapeSpec.hpp"
 #include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
 #include "gui/Picking.hpp"
 #include "gui/ShapeDescription.hpp"
+#include "scene/ShapeSpec.hpp"
 
 #include <imgui.h>
 

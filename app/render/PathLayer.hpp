@@ -1,8 +1,8 @@
 #pragma once
 
 #include "render/DrawData.hpp"
+#include "run/TraceRun.hpp"
 #include "transport/RayTree.hpp"
-#include "transport/TraceRun.hpp"
 
 #include <vector>
 

@@ -5,9 +5,9 @@
 #include "render/PathLayer.hpp"
 #include "render/Renderer.hpp"
 #include "render/SlicePlane.hpp"
+#include "run/TraceRun.hpp"
 #include "scene/Source.hpp"
 #include "transport/RayTree.hpp"
-#include "transport/TraceRun.hpp"
 
 #include <optional>
 #include <vector>

@@ -1,10 +1,10 @@
 #include "snapshot/Snapshot.hpp"
 
 #include "render/Renderer.hpp"
+#include "run/TraceRun.hpp"
 #include "snapshot/OsmesaContext.hpp"
 #include "transport/OpticalScene.hpp"
 #include "transport/RayTree.hpp"
-#include "transport/TraceRun.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -55,7 +55,7 @@ TracedData traceData(const Scene& scene, const OpticalScene& optical, const Snap
         settings.photons = std::max(options.photons, options.paths);
         settings.paths = options.paths;
         settings.seed = options.seed;
-        data.traced = runTrace(optical, scene.sources, settings);
+        data.traced = runTrace(optical, scene.sources, settings, TallySet{});  // only the paths are drawn
     }
     const Source& first = scene.sources.front();
     const Ray central{first.origin, first.direction};

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "edit/ShapeSpec.hpp"
 #include "scene/DropletCloud.hpp"
 #include "scene/Scene.hpp"
+#include "scene/ShapeSpec.hpp"
 #include "tree/Octree.hpp"
 
 #include <cstdint>

@@ -1,8 +1,8 @@
 #include "scene/SceneWriter.hpp"
 
-#include "edit/ShapeSpec.hpp"
 #include "geometry/GeneralShape.hpp"
 #include "scene/JsonPath.hpp"
+#include "scene/ShapeSpec.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -14,58 +14,50 @@ std::string_view photonFateName(PhotonFate fate) {
     return "?";
 }
 
-namespace {
-
-// Appends events to an optional path.
-class PathRecorder {
-public:
-    explicit PathRecorder(std::vector<Event>* path) : path_(path) {}
-    void operator()(const Event& event) const {
-        if (path_) path_->push_back(event);
-    }
-    bool active() const { return path_ != nullptr; }
-
-private:
-    std::vector<Event>* path_;
-};
-
-}  // namespace
-
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
-                          const TransportSettings& settings, std::vector<Event>* path) {
-    const PathRecorder record(path);
+                          const TransportSettings& settings, PhotonObserver* observer) {
+    const bool flights = observer && observer->wantsFlights();
     PhotonOutcome outcome;
+    PhotonState state{emitted};
     Point position = emitted.origin;
     Direction direction = emitted.direction;
     ShapeId region = scene.regionAt(position, direction);
+    const auto observe = [&](const Event& event) {
+        if (observer) observer->event(event, state);
+    };
     const auto here = [&](EventType type) {
         const MediumId medium = scene.mediumIdOf(region);
         return Event{type, position, direction, OpticalScene::kAmbient, medium, medium};
     };
+    // Moves the photon `length` ahead (an infinite length leaves it where it is: the escape ray).
+    const auto fly = [&](double length) {
+        if (flights) observer->flight({position, direction, length, scene.mediumIdOf(region)}, state);
+        if (std::isfinite(length)) position += length * direction.vector();
+    };
     const auto lose = [&](LostReason reason) {
         outcome.fate = PhotonFate::Lost;
         outcome.lostReason = reason;
-        if (record.active()) {
+        if (observer) {
             Event event = here(EventType::Lost);
             event.lostReason = reason;
-            record(event);
+            observe(event);
         }
         return outcome;
     };
     // Draws an absorption distance in the current medium; when it is shorter than `distance` the
-    // photon is absorbed there.
+    // photon flies there and is absorbed.
     const auto absorbedWithin = [&](double distance) {
         const double sigma = scene.mediumOf(region).absorptionPerUnit;
         if (sigma <= 0.0) return false;
         const double freePath = -std::log(random.uniform()) / sigma;
         if (freePath >= distance) return false;
-        position += freePath * direction.vector();
+        fly(freePath);
         ++outcome.events.absorb;
         outcome.fate = PhotonFate::Absorbed;
-        record(here(EventType::Absorb));
+        if (observer) observe(here(EventType::Absorb));
         return true;
     };
-    record(here(EventType::Emit));
+    if (observer) observe(here(EventType::Emit));
 
     // From a distant source, cross the empty ambient up to the scene first, so that hit points are
     // computed from nearby and stay within the surface bands (docs/transport.md).
@@ -73,24 +65,25 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         const double approach = scene.approachDistance(position, direction);
         if (approach > 0.0) {
             if (absorbedWithin(approach)) return outcome;
-            position += approach * direction.vector();
+            fly(approach);
         }
     }
 
-    for (std::uint64_t interfaceEvents = 0;;) {
+    for (;;) {
         const RayHit hit = scene.octree().firstHit(position, direction);
         if (absorbedWithin(hit ? hit.distance : std::numeric_limits<double>::infinity())) return outcome;
         if (!hit) {
             if (region != OpticalScene::kAmbient) return lose(LostReason::NoExit);
+            fly(std::numeric_limits<double>::infinity());
             outcome.fate = PhotonFate::Escaped;
             outcome.finalDirection = direction;
-            record(here(EventType::Escape));
+            if (observer) observe(here(EventType::Escape));
             return outcome;
         }
 
-        position += hit.distance * direction.vector();
-        outcome.metSurface = true;
-        if (++interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap);
+        fly(hit.distance);
+        outcome.metSurface = state.metSurface = true;
+        if (++state.interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap);
         const SurfaceCrossing crossing = crossSurface(scene, region, hit.shape, position, direction, settings.fresnel);
         if (crossing.kind == SurfaceCrossing::Kind::Lost) return lose(crossing.lostReason);
         if (crossing.kind == SurfaceCrossing::Kind::Tangent) continue;  // goes on unchanged (seed 000 ch. 4)
@@ -109,8 +102,8 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
             direction = crossing.transmitted;
             region = crossing.regionBeyond;
         }
-        if (record.active()) {
-            record(Event{type, position, direction, hit.shape, crossing.from, crossing.to, crossing.reflectance, 1.0});
+        if (observer) {
+            observe(Event{type, position, direction, hit.shape, crossing.from, crossing.to, crossing.reflectance, 1.0});
         }
     }
 }

@@ -3,12 +3,12 @@
 #include "transport/Emission.hpp"
 #include "transport/Event.hpp"
 #include "transport/OpticalScene.hpp"
+#include "transport/PhotonObserver.hpp"
 #include "transport/PhotonRandom.hpp"
 #include "transport/SurfaceCrossing.hpp"
 
 #include <cstdint>
 #include <string_view>
-#include <vector>
 
 namespace dropscope {
 
@@ -34,9 +34,9 @@ struct PhotonOutcome {
 
 // One analog Monte Carlo photon (docs/transport.md): free flight to the next surface through the
 // octree; in an absorbing medium an exponential absorption distance is drawn first; at a surface it
-// reflects with probability R (always on total internal reflection), else refracts. When `path` is
-// given, every event is appended to it, starting with the emission.
+// reflects with probability R (always on total internal reflection), else refracts. An `observer` is
+// told every event, starting with the emission, and (if it wants them) every flight between them.
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
-                          const TransportSettings& settings, std::vector<Event>* path = nullptr);
+                          const TransportSettings& settings, PhotonObserver* observer = nullptr);
 
 }  // namespace dropscope

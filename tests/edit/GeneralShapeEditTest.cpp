@@ -1,7 +1,7 @@
 // Parametric and implicit shapes in the editable document: described, moved by their translation, undone.
 #include "edit/SceneDocument.hpp"
 #include "edit/SceneDocumentTestSupport.hpp"
-#include "edit/ShapeSpec.hpp"
+#include "scene/ShapeSpec.hpp"
 
 #include "geometry/implicit/ImplicitShape.hpp"
 #include "geometry/parametric/ParametricShape.hpp"

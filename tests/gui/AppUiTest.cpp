@@ -1,11 +1,12 @@
 #include "AppHarness.hpp"
 
-#include "edit/ShapeSpec.hpp"
 #include "geometry/Sphere.hpp"
 #include "gui/Actions.hpp"
+#include "run/TraceRun.hpp"
+#include "scene/ShapeSpec.hpp"
 #include "snapshot/Image.hpp"
 #include "transport/OpticalScene.hpp"
-#include "transport/TraceRun.hpp"
+#include "transport/TallyExpectations.hpp"
 
 #include <gtest/gtest.h>
 
@@ -206,9 +207,8 @@ TEST(AppUi, FiringTracesThePhotonsOffTheUiThreadAndShowsTheExpectedPaths) {
     settings.paths = 50;
     settings.seed = harness.state().fire.seed;
     const Scene scene = harness.state().document->toScene();
-    const TraceResult direct = runTrace(OpticalScene(scene), scene.sources, settings);
-    EXPECT_EQ(shown.tally.escaped, direct.tally.escaped);
-    EXPECT_EQ(shown.tally.absorbed, direct.tally.absorbed);
+    const TraceResult direct = test::traceStandard(OpticalScene(scene), scene.sources, settings);
+    EXPECT_EQ(test::fates(shown), test::fates(direct));
     ASSERT_EQ(shown.paths.size(), direct.paths.size());
     for (std::size_t k = 0; k < shown.paths.size(); ++k) {
         ASSERT_EQ(shown.paths[k].events.size(), direct.paths[k].events.size());

@@ -3,8 +3,8 @@
 // the render tests' test-local GeneralShape (tests/render/TestOctahedron.hpp).
 #include "AppHarness.hpp"
 
-#include "edit/ShapeSpec.hpp"
 #include "render/TestOctahedron.hpp"
+#include "scene/ShapeSpec.hpp"
 #include "snapshot/Image.hpp"
 
 #include <gtest/gtest.h>

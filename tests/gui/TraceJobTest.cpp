@@ -84,7 +84,7 @@ void expectSamePaths(const std::vector<PhotonPath>& a, const std::vector<PhotonP
 
 TEST(TraceJob, DeliversWhatRunTraceGivesDirectly) {
     const Scene direct = loadScene(kScenes + "default.json");
-    const TraceResult expected = runTrace(OpticalScene(direct), direct.sources, settings(20000));
+    const TraceResult expected = test::traceStandard(OpticalScene(direct), direct.sources, settings(20000));
 
     TraceJob job;
     job.start(loadScene(kScenes + "default.json"), settings(20000));
@@ -93,7 +93,7 @@ TEST(TraceJob, DeliversWhatRunTraceGivesDirectly) {
     EXPECT_FALSE(outcome.error.has_value());
     EXPECT_FALSE(outcome.result.partial);
     EXPECT_EQ(outcome.result.requested, 20000U);
-    expectSameTally(outcome.result.tally, expected.tally);
+    expectSameTally(outcome.result, expected);
     expectSamePaths(outcome.result.paths, expected.paths);
     // The traced scene comes back with the result: its shapes, names and media.
     ASSERT_EQ(outcome.scene.shapes.size(), direct.shapes.size());
@@ -108,13 +108,13 @@ TEST(TraceJob, DeliversWhatRunTraceGivesDirectly) {
 
 TEST(TraceJob, ARayThroughOneSphereGivesTheDirectResult) {
     const Scene direct = loadScene(kTestScenes + "one_sphere.json");
-    const TraceResult expected = runTrace(OpticalScene(direct), direct.sources, settings(1000));
+    const TraceResult expected = test::traceStandard(OpticalScene(direct), direct.sources, settings(1000));
 
     TraceJob job;
     job.start(loadScene(kTestScenes + "one_sphere.json"), settings(1000));
     const TraceOutcome outcome = finish(job);
     ASSERT_FALSE(outcome.error.has_value()) << *outcome.error;
-    expectSameTally(outcome.result.tally, expected.tally);
+    expectSameTally(outcome.result, expected);
     expectSamePaths(outcome.result.paths, expected.paths);
     EXPECT_EQ(outcome.scene.shapeNames, std::vector<std::string>{"drop"});
 }
@@ -147,11 +147,11 @@ TEST(TraceJob, CancellingABigRunEndsItSoonWithAPartialResult) {
     const TraceOutcome outcome = finish(job);
     EXPECT_FALSE(outcome.error.has_value());
     EXPECT_TRUE(outcome.result.partial);
-    EXPECT_GT(outcome.result.tally.photons, 0U);
-    EXPECT_LT(outcome.result.tally.photons, kBigRun);
+    EXPECT_GT(test::fates(outcome.result).photons(), 0U);
+    EXPECT_LT(test::fates(outcome.result).photons(), kBigRun);
     EXPECT_EQ(outcome.result.requested, kBigRun);
-    const TraceTally& tally = outcome.result.tally;
-    EXPECT_EQ(tally.escaped + tally.absorbed + tally.lost, tally.photons);
+    const FateTally& tally = test::fates(outcome.result);
+    EXPECT_EQ(tally.escaped() + tally.absorbed() + tally.lost(), tally.photons());
 }
 
 // The slowest photons there are: trapped by total internal reflection in a glass cube until the event
@@ -167,9 +167,9 @@ TEST(TraceJob, TrappedPhotonsStopWithinAChunk) {
     TraceSettings chunk = settings(256);
     chunk.threads = 1;
     const auto chunkStart = Clock::now();
-    const TraceResult oneChunk = runTrace(OpticalScene(direct), direct.sources, chunk);
+    const TraceResult oneChunk = test::traceStandard(OpticalScene(direct), direct.sources, chunk);
     const double chunkSeconds = secondsSince(chunkStart);
-    ASSERT_EQ(oneChunk.tally.lostReasons[static_cast<std::size_t>(LostReason::EventCap)], 256U) << "not trapped";
+    ASSERT_EQ(test::fates(oneChunk).lost(LostReason::EventCap), 256U) << "not trapped";
     const double limit = static_cast<double>(kHangLimit.count()) + 4.0 * chunkSeconds;
 
     TraceJob job;
@@ -212,8 +212,8 @@ TEST(TraceJob, ProgressRisesMonotonicallyWhileRunning) {
     job.cancel();
     const TraceOutcome outcome = finish(job);
     // The final count is the photons traced, at least the last report's.
-    EXPECT_GE(outcome.result.tally.photons, last.done);
-    EXPECT_EQ(job.progress().done, outcome.result.tally.photons);
+    EXPECT_GE(test::fates(outcome.result).photons(), last.done);
+    EXPECT_EQ(job.progress().done, test::fates(outcome.result).photons());
 }
 
 TEST(TraceJob, StartingAgainCancelsTheFirstRunAndDeliversOnlyTheSecond) {
@@ -230,7 +230,7 @@ TEST(TraceJob, StartingAgainCancelsTheFirstRunAndDeliversOnlyTheSecond) {
     EXPECT_EQ(outcome.scene.shapes.size(), 1U) << "not the sphere's outcome";
     EXPECT_EQ(outcome.result.requested, 1000U);
     EXPECT_FALSE(outcome.result.partial);
-    EXPECT_EQ(outcome.result.tally.photons, 1000U);
+    EXPECT_EQ(test::fates(outcome.result).photons(), 1000U);
     EXPECT_FALSE(job.takeResult().has_value()) << "the cancelled run's outcome came too";
 }
 
@@ -240,7 +240,7 @@ TEST(TraceJob, ASceneWithoutSourcesDeliversAnErrorNotACrash) {
     const TraceOutcome outcome = finish(job);
     ASSERT_TRUE(outcome.error.has_value());
     EXPECT_EQ(*outcome.error, "the scene has no light sources");
-    EXPECT_EQ(outcome.result.tally.photons, 0U);
+    EXPECT_EQ(outcome.result.photons, 0U);
     EXPECT_EQ(outcome.scene.shapes.size(), 1U) << "the scene comes back with the error";
 
     // The job works again afterwards.

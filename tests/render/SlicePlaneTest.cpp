@@ -220,7 +220,7 @@ TEST(SliceLayers, LinesAreCutAndMarkersHiddenButTheGuidesStayWhole) {
     TraceSettings settings;
     settings.photons = 200;
     settings.paths = 200;
-    const TraceResult traced = runTrace(optical, scene.sources, settings);
+    const TraceResult traced = runTrace(optical, scene.sources, settings, TallySet{});
     const Eigen::AlignedBox3d bounds = render::sceneBounds(optical.octree().shapes());
     render::LayerInputs inputs{optical.octree(), scene.sources, bounds};
     inputs.paths = &traced.paths;

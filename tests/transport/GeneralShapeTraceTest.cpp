@@ -21,19 +21,19 @@ TraceSettings settingsFor(std::uint64_t photons) {
     return settings;
 }
 
-TraceTally traceDroplet(const std::string& droplet) {
+TraceResult traceDroplet(const std::string& droplet) {
     const Scene scene =
         sceneFromJson(R"("air": {"n": 1.0}, "water": {"n": 1.3337, "kappa": 2e-4})", droplet,
                       R"({"type": "beam", "origin": [0, 0, -5], "direction": [0, 0, 1], "radius": 0.9})");
-    return runTrace(OpticalScene(scene), scene.sources, settingsFor(4000)).tally;
+    return test::traceStandard(OpticalScene(scene), scene.sources, settingsFor(4000));
 }
 
 TEST(GeneralShapeTrace, EveryFormOfTheSameDropletTracesTheSame) {
     // Hit points agree with the sphere's to ~1e-12, far below anything that could turn a photon's
     // random choice (Fresnel draw, absorption) or its escape bin.
-    const TraceTally sphere =
+    const TraceResult sphere =
         traceDroplet(R"({"type": "sphere", "center": [0.1, 0, 0], "radius": 0.8, "medium": "water"})");
-    EXPECT_GT(sphere.events.refract, 2500u);  // most photons cross the droplet
+    EXPECT_GT(test::fates(sphere).events().refract, 2500u);  // most photons cross the droplet
     expectSameTally(traceDroplet(R"({"type": "parametric", "preset": "sphere", "radius": 0.8,
         "transform": {"translation": [0.1, 0, 0]}, "medium": "water"})"),
                     sphere);
@@ -47,7 +47,7 @@ TEST(GeneralShapeTrace, EveryFormOfTheSameDropletTracesTheSame) {
 }
 
 TEST(GeneralShapeTrace, AStretchedParametricSphereTracesAsTheEllipsoid) {
-    const TraceTally ellipsoid =
+    const TraceResult ellipsoid =
         traceDroplet(R"({"type": "ellipsoid", "center": [0, 0.1, 0], "semi_axes": [1.2, 0.8, 0.5],
         "rotation": {"axis": [0, 1, 1], "angle_deg": 35}, "medium": "water"})");
     expectSameTally(traceDroplet(R"({"type": "parametric", "preset": "ellipsoid", "semi_axes": [1.2, 0.8, 0.5],
@@ -58,12 +58,13 @@ TEST(GeneralShapeTrace, AStretchedParametricSphereTracesAsTheEllipsoid) {
 TEST(GeneralShapeTrace, TheGalleryLosesNoPhotonToGeometry) {
     const Scene scene = loadScene(DROPSCOPE_SOURCE_DIR "/assets/scenes/shapes_gallery.json");
     TraceSettings settings = settingsFor(3000);
-    const TraceTally tally = runTrace(OpticalScene(scene), scene.sources, settings).tally;
-    EXPECT_EQ(tally.photons, 3000u);
-    EXPECT_EQ(tally.lostReasons[static_cast<std::size_t>(LostReason::NoExit)], 0u);
-    EXPECT_EQ(tally.lostReasons[static_cast<std::size_t>(LostReason::MediumMismatch)], 0u);
-    EXPECT_EQ(tally.lostReasons[static_cast<std::size_t>(LostReason::UndefinedNormal)], 0u);
-    EXPECT_GT(tally.events.refract, 1500u);  // the shapes are met, not missed
+    const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settings);
+    const FateTally& tally = test::fates(result);
+    EXPECT_EQ(tally.photons(), 3000u);
+    EXPECT_EQ(tally.lost(LostReason::NoExit), 0u);
+    EXPECT_EQ(tally.lost(LostReason::MediumMismatch), 0u);
+    EXPECT_EQ(tally.lost(LostReason::UndefinedNormal), 0u);
+    EXPECT_GT(tally.events().refract, 1500u);  // the shapes are met, not missed
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "TransportFixtures.hpp"
+#include "transport/TallyExpectations.hpp"
 
 #include "optics/Fresnel.hpp"
 #include "transport/PhotonTracer.hpp"
@@ -23,8 +24,9 @@ TEST(PhotonTracer, RecordsEveryEventWithItsMediaReflectanceAndWeight) {
     for (std::uint64_t photon = 0; photon < 200; ++photon) {
         PhotonRandom random(5, photon);
         std::vector<Event> path;
+        EventRecorder recorder(path);
         const PhotonOutcome outcome =
-            tracePhoton(optical, {Point(0.1, 0.2, -5), Direction(0, 0, 1)}, random, TransportSettings{}, &path);
+            tracePhoton(optical, {Point(0.1, 0.2, -5), Direction(0, 0, 1)}, random, TransportSettings{}, &recorder);
         ASSERT_EQ(outcome.fate, PhotonFate::Escaped);
         ASSERT_EQ(path.front().type, EventType::Emit);
         ASSERT_EQ(path.back().type, EventType::Escape);
@@ -86,10 +88,11 @@ TEST(PhotonTracer, TheEventCapEndsAPhotonAfterExactlyThatManyInterfaceEvents) {
     for (std::uint32_t cap : {1U, 7U, 500U}) {
         PhotonRandom random(1, 0);
         std::vector<Event> path;
+        EventRecorder recorder(path);
         TransportSettings settings;
         settings.maxEvents = cap;
         const PhotonOutcome outcome =
-            tracePhoton(optical, {Point(0.1, 0.2, 0.3), Direction(0.6, 0.5, 0.62)}, random, settings, &path);
+            tracePhoton(optical, {Point(0.1, 0.2, 0.3), Direction(0.6, 0.5, 0.62)}, random, settings, &recorder);
         EXPECT_EQ(outcome.fate, PhotonFate::Lost);
         EXPECT_EQ(outcome.lostReason, LostReason::EventCap);
         EXPECT_EQ(outcome.events.tir, cap);
@@ -113,17 +116,17 @@ TEST(PhotonTracer, APhotonEmittedOnASurfaceIsInsideTheShapeWhenItHeadsInward) {
     settings.photons = 20000;
     settings.paths = 200;
     settings.transport.maxEvents = 50;
-    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
+    const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settings);
     for (const PhotonPath& path : result.paths) {
         const Event& emit = path.events.front();
         EXPECT_EQ(emit.from, emit.direction.z() < 0 ? 1U : 0U) << path.photon;  // water : air
     }
-    const TraceTally& tally = result.tally;
-    EXPECT_EQ(tally.lost, tally.lostReasons[static_cast<std::size_t>(LostReason::EventCap)]);
+    const FateTally& tally = test::fates(result);
+    EXPECT_EQ(tally.lost(), tally.lost(LostReason::EventCap));
     // From the surface (r0 = 1) the inward half behaves as from inside; the outward half escapes.
     const double expectedLost = 0.5 * testing::capLossInsideSphere(1.3337, 1.0, 50);
     EXPECT_GT(expectedLost, 0.5 * std::sqrt(1 - 1 / (1.3337 * 1.3337)));  // the trapped share
-    EXPECT_NEAR(testing::fraction(tally.lost, tally), expectedLost, testing::monteCarloTolerance(expectedLost, 2e4));
+    EXPECT_NEAR(test::fraction(tally.lost(), result), expectedLost, testing::monteCarloTolerance(expectedLost, 2e4));
 }
 
 TEST(PhotonTracer, ADistantSourceHitsATinyDropletAsWellAsANearOne) {
@@ -137,9 +140,9 @@ TEST(PhotonTracer, ADistantSourceHitsATinyDropletAsWellAsANearOne) {
                                        R"(], "direction": [0, 0, 1], "radius": 0.01})");
         TraceSettings settings;
         settings.photons = 40000;
-        const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
-        EXPECT_EQ(result.tally.lost, 0U) << distance;
-        EXPECT_NEAR(testing::fraction(result.tally.unscattered, result.tally), 0.75,
+        const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settings);
+        EXPECT_EQ(test::fates(result).lost(), 0U) << distance;
+        EXPECT_NEAR(test::fraction(test::fates(result).unscattered(), result), 0.75,
                     testing::monteCarloTolerance(0.75, 4e4))
             << distance;
     }
@@ -154,8 +157,8 @@ TEST(PhotonTracer, AbsorptionOnTheWayFromADistantSourceIsStillSampled) {
     TraceSettings settings;
     settings.photons = 40000;
     settings.paths = 2000;
-    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
-    EXPECT_EQ(result.tally.absorbed, result.tally.photons);  // the ambient goes on for ever
+    const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settings);
+    EXPECT_EQ(test::fates(result).absorbed(), test::fates(result).photons());  // the ambient goes on for ever
     int beforeTheDrop = 0;
     for (const PhotonPath& path : result.paths) beforeTheDrop += path.events.back().position.z() < -1.0;
     const double expected = 1.0 - std::exp(-0.1 * 10.0);

@@ -1,4 +1,5 @@
 #include "TransportFixtures.hpp"
+#include "transport/TallyExpectations.hpp"
 
 #include "transport/RayTree.hpp"
 
@@ -10,7 +11,7 @@
 namespace dropscope {
 namespace {
 
-using testing::fraction;
+using test::fraction;
 using testing::monteCarloTolerance;
 
 constexpr double kWeightRounding = 1e-13;  // sums of a few thousand products of weights in [0, 1]
@@ -90,8 +91,8 @@ TEST(RayTree, IsTheExpectationOfTheMonteCarloPhoton) {
     constexpr int kBins = 18;
     TraceSettings settings;
     settings.photons = 200000;
-    settings.bins = kBins;
-    const TraceTally tally = runTrace(optical, scene.sources, settings).tally;
+    const TraceResult result = test::traceStandard(optical, scene.sources, settings, kBins);
+    const FateTally& tally = test::fates(result);
 
     RayTreeSettings fine;
     fine.minWeight = 1e-12;
@@ -105,9 +106,10 @@ TEST(RayTree, IsTheExpectationOfTheMonteCarloPhoton) {
             node.event.weight;
     }
     const double n = static_cast<double>(settings.photons);
-    EXPECT_NEAR(fraction(tally.absorbed, tally), tree.absorbed, monteCarloTolerance(tree.absorbed, n));
+    EXPECT_NEAR(fraction(tally.absorbed(), result), tree.absorbed, monteCarloTolerance(tree.absorbed, n));
     for (std::size_t bin = 0; bin < expected.size(); ++bin) {
-        EXPECT_NEAR(fraction(tally.angular[bin], tally), expected[bin], monteCarloTolerance(expected[bin], n))
+        EXPECT_NEAR(fraction(test::angular(result).escapes()[bin], result), expected[bin],
+                    monteCarloTolerance(expected[bin], n))
             << "bin " << bin;
     }
 }

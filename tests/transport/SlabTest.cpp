@@ -2,6 +2,7 @@
 // multiple internal reflections: with R = ((n-1)/(n+1))^2 and single-pass transmission a = exp(-sigma d),
 //   T = (1-R)^2 a / (1 - R^2 a^2),   R_slab = R + R (1-R)^2 a^2 / (1 - R^2 a^2),   A = 1 - T - R_slab.
 #include "TransportFixtures.hpp"
+#include "transport/TallyExpectations.hpp"
 
 #include "transport/RayTree.hpp"
 
@@ -14,7 +15,7 @@
 namespace dropscope {
 namespace {
 
-using testing::fraction;
+using test::fraction;
 using testing::monteCarloTolerance;
 using testing::sceneFromJson;
 
@@ -49,22 +50,23 @@ TEST_P(SlabAtNormalIncidence, MonteCarloMatchesTheClosedForm) {
     const OpticalScene optical(scene);
     TraceSettings settings;
     settings.photons = 200000;
-    settings.bins = 2;  // forward (transmitted) and backward (reflected)
-    const TraceResult result = runTrace(optical, scene.sources, settings);
-    const TraceTally& tally = result.tally;
+    const TraceResult result = test::traceStandard(optical, scene.sources, settings, 2);  // forward, backward
+    const FateTally& tally = test::fates(result);
     const SlabExpectation expected = closedForm(sigma);
-    const double n = static_cast<double>(tally.photons);
+    const double n = static_cast<double>(tally.photons());
 
-    EXPECT_EQ(tally.photons, settings.photons);
-    EXPECT_EQ(tally.escaped + tally.absorbed + tally.lost, tally.photons);
-    EXPECT_EQ(tally.lost, 0U);
-    EXPECT_EQ(tally.unscattered, 0U);
-    EXPECT_EQ(tally.angular[0] + tally.angular[1], tally.escaped);
-    EXPECT_NEAR(fraction(tally.angular[0], tally), expected.transmitted, monteCarloTolerance(expected.transmitted, n));
-    EXPECT_NEAR(fraction(tally.angular[1], tally), expected.reflected, monteCarloTolerance(expected.reflected, n));
-    EXPECT_NEAR(fraction(tally.absorbed, tally), expected.absorbed, monteCarloTolerance(expected.absorbed, n));
-    EXPECT_EQ(tally.events.tir, 0U);
-    EXPECT_EQ(tally.events.absorb, tally.absorbed);
+    EXPECT_EQ(tally.photons(), settings.photons);
+    EXPECT_EQ(tally.escaped() + tally.absorbed() + tally.lost(), tally.photons());
+    EXPECT_EQ(tally.lost(), 0U);
+    EXPECT_EQ(tally.unscattered(), 0U);
+    EXPECT_EQ(test::angular(result).escapes()[0] + test::angular(result).escapes()[1], tally.escaped());
+    EXPECT_NEAR(fraction(test::angular(result).escapes()[0], result), expected.transmitted,
+                monteCarloTolerance(expected.transmitted, n));
+    EXPECT_NEAR(fraction(test::angular(result).escapes()[1], result), expected.reflected,
+                monteCarloTolerance(expected.reflected, n));
+    EXPECT_NEAR(fraction(tally.absorbed(), result), expected.absorbed, monteCarloTolerance(expected.absorbed, n));
+    EXPECT_EQ(tally.events().tir, 0U);
+    EXPECT_EQ(tally.events().absorb, tally.absorbed());
 }
 
 TEST_P(SlabAtNormalIncidence, RayTreeReproducesTheClosedFormToRounding) {
@@ -105,10 +107,10 @@ TEST(BeerLambert, AnIndexMatchedSlabTransmitsExactlyExpMinusSigmaD) {
     const OpticalScene optical(scene);
     TraceSettings settings;
     settings.photons = 100000;
-    const TraceResult result = runTrace(optical, scene.sources, settings);
+    const TraceResult result = test::traceStandard(optical, scene.sources, settings);
     const double expected = std::exp(-sigma * kThickness);
-    EXPECT_EQ(result.tally.events.reflect, 0U);
-    EXPECT_NEAR(fraction(result.tally.escaped, result.tally), expected, monteCarloTolerance(expected, 1e5));
+    EXPECT_EQ(test::fates(result).events().reflect, 0U);
+    EXPECT_NEAR(fraction(test::fates(result).escaped(), result), expected, monteCarloTolerance(expected, 1e5));
 
     const RayTree tree = traceRayTree(optical, {scene.sources[0].origin, scene.sources[0].direction}, 1.0, {});
     EXPECT_NEAR(tree.absorbed, 1.0 - expected, 4 * std::numeric_limits<double>::epsilon());  // one exp, one subtraction
@@ -123,8 +125,8 @@ TEST(BeerLambert, AbsorptionDistancesInAnAbsorbingAmbientAreExponential) {
     TraceSettings settings;
     settings.photons = 20000;
     settings.paths = settings.photons;
-    const TraceResult result = runTrace(optical, scene.sources, settings);
-    ASSERT_EQ(result.tally.absorbed, settings.photons);
+    const TraceResult result = test::traceStandard(optical, scene.sources, settings);
+    ASSERT_EQ(test::fates(result).absorbed(), settings.photons);
     ASSERT_EQ(result.paths.size(), settings.photons);
     double sum = 0.0;
     for (const PhotonPath& path : result.paths) {

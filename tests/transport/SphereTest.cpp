@@ -6,6 +6,7 @@
 // deviated by D_p = 2(theta_i - theta_t) + (p-1)(pi - 2 theta_t) (p >= 1), pi - 2 theta_i (p = 0).
 // Impact parameters are uniform over the disk: weight d(b^2) = 2 cos(theta_i) d cos(theta_i).
 #include "TransportFixtures.hpp"
+#include "transport/TallyExpectations.hpp"
 
 #include "optics/Fresnel.hpp"
 
@@ -18,7 +19,7 @@
 namespace dropscope {
 namespace {
 
-using testing::fraction;
+using test::fraction;
 using testing::monteCarloTolerance;
 using testing::sceneFromJson;
 
@@ -66,9 +67,8 @@ TraceResult traceSphere(double sigma, std::uint64_t photons) {
                       R"({"type": "beam", "origin": [0, 0, -3], "direction": [0, 0, 1], "radius": 1.25})");
     TraceSettings settings;
     settings.photons = photons;
-    settings.bins = kBins;
     settings.seed = 11;
-    return runTrace(OpticalScene(scene), scene.sources, settings);
+    return test::traceStandard(OpticalScene(scene), scene.sources, settings, kBins);
 }
 
 class SphereUnderABeam : public ::testing::TestWithParam<double> {};
@@ -77,16 +77,18 @@ TEST_P(SphereUnderABeam, AngularDistributionAndAbsorptionMatchTheRayOrderReferen
     const double sigma = GetParam();
     constexpr std::uint64_t kPhotons = 400000;
     const TraceResult result = traceSphere(sigma, kPhotons);
-    const TraceTally& tally = result.tally;
+    const FateTally& tally = test::fates(result);
     const SphereReference expected = reference(sigma);
     const double n = static_cast<double>(kPhotons);
 
-    EXPECT_EQ(tally.lost, 0U);
-    EXPECT_NEAR(fraction(tally.unscattered, tally), 1 - 1 / (kBeamRadius * kBeamRadius), monteCarloTolerance(0.36, n));
-    EXPECT_NEAR(fraction(tally.absorbed, tally), expected.absorbed, monteCarloTolerance(expected.absorbed, n));
+    EXPECT_EQ(tally.lost(), 0U);
+    EXPECT_NEAR(fraction(tally.unscattered(), result), 1 - 1 / (kBeamRadius * kBeamRadius),
+                monteCarloTolerance(0.36, n));
+    EXPECT_NEAR(fraction(tally.absorbed(), result), expected.absorbed, monteCarloTolerance(expected.absorbed, n));
     for (int bin = 0; bin < kBins; ++bin) {
         const double p = expected.angular[static_cast<std::size_t>(bin)];
-        EXPECT_NEAR(fraction(tally.angular[static_cast<std::size_t>(bin)], tally), p, monteCarloTolerance(p, n))
+        EXPECT_NEAR(fraction(test::angular(result).escapes()[static_cast<std::size_t>(bin)], result), p,
+                    monteCarloTolerance(p, n))
             << "bin " << bin * 5 << "-" << bin * 5 + 5 << " degrees";
     }
 }
@@ -104,16 +106,16 @@ TEST(SphereWithAPointSourceInside, TotalInternalReflectionTrapsExactlyTheRaysPas
     TraceSettings settings;
     settings.photons = 200000;
     settings.transport.maxEvents = kCap;
-    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settings);
+    const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settings);
 
     const double expectedLost = testing::capLossInsideSphere(kGlass, kR0, kCap);
-    const TraceTally& tally = result.tally;
-    EXPECT_NEAR(fraction(tally.lost, tally), expectedLost, monteCarloTolerance(expectedLost, 2e5));
-    EXPECT_EQ(tally.lost, tally.lostReasons[static_cast<std::size_t>(LostReason::EventCap)]);
-    EXPECT_EQ(tally.escaped + tally.lost, tally.photons);
+    const FateTally& tally = test::fates(result);
+    EXPECT_NEAR(fraction(tally.lost(), result), expectedLost, monteCarloTolerance(expectedLost, 2e5));
+    EXPECT_EQ(tally.lost(), tally.lost(LostReason::EventCap));
+    EXPECT_EQ(tally.escaped() + tally.lost(), tally.photons());
     // The closed form of the trapped share alone, sqrt(1 - (a / (n r0))^2), bounds it from below.
     const double trapped = std::sqrt(1 - std::pow(1 / (kGlass * kR0), 2));
-    EXPECT_GT(fraction(tally.lost, tally), trapped - monteCarloTolerance(trapped, 2e5));
+    EXPECT_GT(fraction(tally.lost(), result), trapped - monteCarloTolerance(trapped, 2e5));
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include "optics/Fresnel.hpp"
 #include "scene/SceneLoader.hpp"
 #include "transport/OpticalScene.hpp"
-#include "transport/TraceRun.hpp"
 
 #include <cmath>
 #include <string>
@@ -38,10 +37,6 @@ inline double capLossInsideSphere(double n, double r0, std::uint32_t cap) {
         lost += std::pow(r, cap) / kSteps;
     }
     return lost;
-}
-
-inline double fraction(std::uint64_t count, const TraceTally& tally) {
-    return static_cast<double>(count) / static_cast<double>(tally.photons);
 }
 
 }  // namespace dropscope::testing

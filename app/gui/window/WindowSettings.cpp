@@ -1,6 +1,6 @@
 #include "gui/window/WindowSettings.hpp"
 
-#include "cli/AtomicFile.hpp"
+#include "results/AtomicFile.hpp"
 
 #include <algorithm>
 #include <cstdlib>

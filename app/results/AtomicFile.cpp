@@ -1,4 +1,4 @@
-#include "cli/AtomicFile.hpp"
+#include "results/AtomicFile.hpp"
 
 #include <unistd.h>
 #include <fstream>

@@ -1,5 +1,5 @@
 // ShapeSpec: makeShape builds what the fields say, describeShape gives them back.
-#include "edit/ShapeSpec.hpp"
+#include "scene/ShapeSpec.hpp"
 
 #include "geometry/Box.hpp"
 #include "geometry/Ellipsoid.hpp"

@@ -1,5 +1,5 @@
-#include "TallyExpectations.hpp"
-#include "TransportFixtures.hpp"
+#include "transport/TallyExpectations.hpp"
+#include "transport/TransportFixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,11 +24,11 @@ TraceSettings settingsFor(std::uint64_t photons, int threads) {
 TEST(TraceRun, OneAndTwoThreadsGiveBitIdenticalResults) {
     const Scene scene = defaultScene();
     const OpticalScene optical(scene);
-    const TraceResult one = runTrace(optical, scene.sources, settingsFor(30000, 1));
-    const TraceResult two = runTrace(optical, scene.sources, settingsFor(30000, 2));
+    const TraceResult one = test::traceStandard(optical, scene.sources, settingsFor(30000, 1));
+    const TraceResult two = test::traceStandard(optical, scene.sources, settingsFor(30000, 2));
     EXPECT_EQ(one.threads, 1);
     EXPECT_EQ(two.threads, 2);
-    expectSameTally(one.tally, two.tally);
+    expectSameTally(one, two);
     ASSERT_EQ(one.paths.size(), two.paths.size());
     for (std::size_t i = 0; i < one.paths.size(); ++i) {
         ASSERT_EQ(one.paths[i].events.size(), two.paths[i].events.size());
@@ -41,24 +41,26 @@ TEST(TraceRun, OneAndTwoThreadsGiveBitIdenticalResults) {
 
 TEST(TraceRun, EveryPhotonEndsEscapedAbsorbedOrLostExactlyOnce) {
     const Scene scene = defaultScene();
-    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(20000, 0));
-    const TraceTally& tally = result.tally;
+    const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settingsFor(20000, 0));
+    const FateTally& tally = test::fates(result);
     EXPECT_FALSE(result.partial);
-    EXPECT_EQ(tally.photons, 20000U);
-    EXPECT_EQ(tally.escaped + tally.absorbed + tally.lost, tally.photons);
+    EXPECT_EQ(tally.photons(), 20000U);
+    EXPECT_EQ(tally.escaped() + tally.absorbed() + tally.lost(), tally.photons());
     std::uint64_t binned = 0;
-    for (std::uint64_t count : tally.angular) binned += count;
-    EXPECT_EQ(binned, tally.escaped);
+    for (std::uint64_t count : test::angular(result).escapes()) binned += count;
+    EXPECT_EQ(binned, tally.escaped());
     std::uint64_t lostByReason = 0;
-    for (std::uint64_t count : tally.lostReasons) lostByReason += count;
-    EXPECT_EQ(lostByReason, tally.lost);
-    EXPECT_EQ(tally.events.absorb, tally.absorbed);
-    EXPECT_LE(tally.unscattered, tally.escaped);
+    for (std::size_t reason = 0; reason < kLostReasonCount; ++reason) {
+        lostByReason += tally.lost(static_cast<LostReason>(reason));
+    }
+    EXPECT_EQ(lostByReason, tally.lost());
+    EXPECT_EQ(tally.events().absorb, tally.absorbed());
+    EXPECT_LE(tally.unscattered(), tally.escaped());
 }
 
 TEST(TraceRun, RecordedPathsAreTheFirstPhotonsAndEndTheWayTheyWereCounted) {
     const Scene scene = defaultScene();
-    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(1000, 2));
+    const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settingsFor(1000, 2));
     ASSERT_EQ(result.paths.size(), 50U);
     for (std::size_t i = 0; i < result.paths.size(); ++i) {
         const PhotonPath& path = result.paths[i];
@@ -90,8 +92,8 @@ TEST(TraceRun, PhotonsTakeTurnsBetweenSources) {
                                R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"})",
                                R"({"type": "ray", "origin": [5, 5, -3], "direction": [0, 0, 1]},
            {"type": "ray", "origin": [0.3, 0, -3], "direction": [0, 0, 1]})");
-    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(1001, 2));
-    EXPECT_EQ(result.tally.unscattered, 501U);
+    const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settingsFor(1001, 2));
+    EXPECT_EQ(test::fates(result).unscattered(), 501U);
     EXPECT_EQ(result.paths[0].source, 0U);
     EXPECT_EQ(result.paths[1].source, 1U);
 }
@@ -109,12 +111,14 @@ TEST(TraceRun, AStopRequestEndsTheRunEarlyWithConsistentPartialResults) {
         EXPECT_LE(progress.done, progress.total);
         stop = true;
     };
-    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(10000000, 2), control);
+    const TraceResult result =
+        test::traceStandard(OpticalScene(scene), scene.sources, settingsFor(10000000, 2), 180, control);
     EXPECT_GE(reports, 1);
     EXPECT_TRUE(result.partial);
-    EXPECT_GT(result.tally.photons, 0U);
-    EXPECT_LT(result.tally.photons, 10000000U);
-    EXPECT_EQ(result.tally.escaped + result.tally.absorbed + result.tally.lost, result.tally.photons);
+    EXPECT_GT(test::fates(result).photons(), 0U);
+    EXPECT_LT(test::fates(result).photons(), 10000000U);
+    EXPECT_EQ(test::fates(result).escaped() + test::fates(result).absorbed() + test::fates(result).lost(),
+              test::fates(result).photons());
     for (const PhotonPath& path : result.paths) EXPECT_FALSE(path.events.empty());
 }
 
@@ -123,19 +127,18 @@ TEST(TraceRun, AStopBeforeTheStartTracesNothing) {
     const std::atomic<bool> stop{true};
     TraceControl control;
     control.stop = &stop;
-    const TraceResult result = runTrace(OpticalScene(scene), scene.sources, settingsFor(1000, 1), control);
+    const TraceResult result =
+        test::traceStandard(OpticalScene(scene), scene.sources, settingsFor(1000, 1), 180, control);
     EXPECT_TRUE(result.partial);
-    EXPECT_EQ(result.tally.photons, 0U);
+    EXPECT_EQ(test::fates(result).photons(), 0U);
     EXPECT_TRUE(result.paths.empty());
 }
 
-TEST(TraceRun, RefusesARunWithoutSourcesOrBins) {
+TEST(TraceRun, RefusesARunWithoutSourcesAndAnAngularTallyWithoutBins) {
     const Scene scene = defaultScene();
     const OpticalScene optical(scene);
-    EXPECT_THROW(runTrace(optical, {}, settingsFor(10, 1)), std::invalid_argument);
-    TraceSettings noBins = settingsFor(10, 1);
-    noBins.bins = 0;
-    EXPECT_THROW(runTrace(optical, scene.sources, noBins), std::invalid_argument);
+    EXPECT_THROW(test::traceStandard(optical, {}, settingsFor(10, 1)), std::invalid_argument);
+    EXPECT_THROW(AngularTally(0), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "edit/ShapeSpec.hpp"
+#include "scene/ShapeSpec.hpp"
 
 #include "geometry/Box.hpp"
 #include "geometry/Ellipsoid.hpp"

@@ -1,48 +1,13 @@
-#include "transport/TraceRun.hpp"
+#include "run/TraceRun.hpp"
 
 #include <omp.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <exception>
-#include <numbers>
 #include <stdexcept>
 
 namespace dropscope {
-
-void TraceTally::add(const PhotonOutcome& outcome, const Direction& emitted) {
-    ++photons;
-    events += outcome.events;
-    switch (outcome.fate) {
-    case PhotonFate::Absorbed: ++absorbed; break;
-    case PhotonFate::Lost:
-        ++lost;
-        ++lostReasons[static_cast<std::size_t>(outcome.lostReason)];
-        break;
-    case PhotonFate::Escaped: {
-        ++escaped;
-        if (!outcome.metSurface) ++unscattered;
-        const double cosine = std::clamp(outcome.finalDirection.dot(emitted), -1.0, 1.0);
-        const double fraction = std::acos(cosine) / std::numbers::pi;
-        const auto bins = angular.size();
-        ++angular[std::min(static_cast<std::size_t>(fraction * static_cast<double>(bins)), bins - 1)];
-        break;
-    }
-    }
-}
-
-TraceTally& TraceTally::operator+=(const TraceTally& other) {
-    photons += other.photons;
-    escaped += other.escaped;
-    absorbed += other.absorbed;
-    lost += other.lost;
-    unscattered += other.unscattered;
-    events += other.events;
-    for (std::size_t i = 0; i < lostReasons.size(); ++i) lostReasons[i] += other.lostReasons[i];
-    for (std::size_t i = 0; i < angular.size(); ++i) angular[i] += other.angular[i];
-    return *this;
-}
 
 namespace {
 
@@ -54,17 +19,38 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// Scores one photon's events and flights into a thread's tallies, and records its path if it has one.
+class PhotonScorer final : public PhotonObserver {
+public:
+    PhotonScorer(TallySet& tallies, std::uint64_t photon, std::size_t source, std::vector<Event>* path)
+        : tallies_(tallies), photon_(photon), source_(source), path_(path) {}
+
+    void event(const Event& event, const PhotonState& state) override {
+        if (path_) path_->push_back(event);
+        tallies_.score(event, {photon_, source_, state});
+    }
+    void flight(const Flight& flight, const PhotonState& state) override {
+        tallies_.scoreFlight(flight, {photon_, source_, state});
+    }
+    bool wantsFlights() const override { return tallies_.scoresFlights(); }
+
+private:
+    TallySet& tallies_;
+    std::uint64_t photon_;
+    std::size_t source_;
+    std::vector<Event>* path_;
+};
+
 }  // namespace
 
 TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sources, const TraceSettings& settings,
-                     const TraceControl& control) {
+                     const TallySet& tallies, const TraceControl& control) {
     if (sources.empty()) throw std::invalid_argument("the scene has no light sources");
-    if (settings.bins < 1) throw std::invalid_argument("the number of angular bins must be at least 1");
 
     TraceResult result;
     result.requested = settings.photons;
     const int requestedThreads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
-    result.tally = TraceTally(settings.bins);
+    result.tallies = tallies.emptyCopy();
     const std::uint64_t recorded = std::min(settings.paths, settings.photons);
     // A traced photon's path starts with its emission, so an empty one was never traced (stopped run).
     std::vector<PhotonPath> paths(recorded);
@@ -85,7 +71,7 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
 #pragma omp single nowait
         threadsUsed = omp_get_num_threads();  // OMP_THREAD_LIMIT and the like may give fewer
         try {
-            TraceTally local(settings.bins);
+            TallySet local = tallies.emptyCopy();
             double lastReport = 0.0;
             while (!stopRequested()) {
                 const std::uint64_t first = kChunk * nextChunk.fetch_add(1, std::memory_order_relaxed);
@@ -101,8 +87,8 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                         paths[photon].source = sourceIndex;
                         events = &paths[photon].events;
                     }
-                    const PhotonOutcome outcome = tracePhoton(scene, emitted, random, settings.transport, events);
-                    local.add(outcome, emitted.direction);
+                    PhotonScorer scorer(local, photon, sourceIndex, events);
+                    const PhotonOutcome outcome = tracePhoton(scene, emitted, random, settings.transport, &scorer);
                     if (photon < recorded) paths[photon].fate = outcome.fate;
                 }
                 done.fetch_add(last - first, std::memory_order_relaxed);
@@ -115,7 +101,7 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                 }
             }
 #pragma omp critical(dropscope_trace_merge)
-            result.tally += local;
+            result.tallies.merge(local);
         } catch (...) {
 #pragma omp critical(dropscope_trace_failure)
             if (!failure) failure = std::current_exception();
@@ -126,7 +112,8 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     result.threads = threadsUsed;
 
     result.seconds = secondsSince(start);
-    result.partial = result.tally.photons < settings.photons;
+    result.photons = done.load();
+    result.partial = result.photons < settings.photons;
     for (std::uint64_t photon = 0; photon < recorded; ++photon) {
         if (!paths[photon].events.empty()) result.paths.push_back(std::move(paths[photon]));
     }

@@ -1,5 +1,9 @@
 // The writers behind `dropscope trace`, on results made by hand: corner cases a real run rarely hits.
-#include "cli/TraceFiles.hpp"
+#include "results/PathsJsonl.hpp"
+#include "results/TableCsv.hpp"
+#include "results/TraceFiles.hpp"
+#include "tally/AngularTally.hpp"
+#include "tally/StandardTallies.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -8,21 +12,29 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace dropscope {
 namespace {
 
 using Json = nlohmann::json;
 
+std::string angularCsv(const ResultReport& report) {
+    std::ostringstream csv;
+    writeTableCsv(*report.table("angular"), csv);
+    return csv.str();
+}
+
 TEST(TraceFiles, NoPhotonTracedGivesNullFractionsAndAPartialSummary) {
     TraceResult result;
-    result.tally = TraceTally(4);
+    result.tallies = standardTallies(4);
     result.requested = 1000;
     result.partial = true;
     result.threads = 3;
     TraceRunInfo info{"scene.json", 2, {}};
+    const ResultReport report = traceReport(result, info);
     std::ostringstream summary;
-    writeTraceSummary(result, info, summary);
+    writeTraceSummary(report, summary);
     const Json s = Json::parse(summary.str());
     EXPECT_EQ(s["photons"], 0);
     EXPECT_EQ(s["photons_requested"], 1000);
@@ -32,20 +44,39 @@ TEST(TraceFiles, NoPhotonTracedGivesNullFractionsAndAPartialSummary) {
     EXPECT_EQ(s["bins"], 4);
     for (const char* fate : {"escaped", "absorbed", "lost", "unscattered"}) EXPECT_TRUE(s["fractions"][fate].is_null());
 
-    std::ostringstream csv;
-    writeAngularCsv(result.tally, csv);
-    EXPECT_EQ(csv.str(),
+    EXPECT_EQ(angularCsv(report),
               "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr\n"
               "0,45,nan,nan\n45,90,nan,nan\n90,135,nan,nan\n135,180,nan,nan\n");
 }
 
+TEST(TraceFiles, SummaryKeysComeInTheDocumentedOrder) {
+    TraceResult result;
+    result.tallies = standardTallies(3);
+    const ResultReport report = traceReport(result, TraceRunInfo{"scene.json", 1, {}});
+    std::ostringstream summary;
+    writeTraceSummary(report, summary);
+    std::vector<std::string> keys;
+    const nlohmann::ordered_json json = nlohmann::ordered_json::parse(summary.str());
+    for (const auto& item : json.items()) keys.push_back(item.key());
+    const std::vector<std::string> documented{
+        "photons", "seed", "threads", "seconds",    "fractions", "events", "photons_requested", "partial",
+        "scene",   "bins", "fresnel", "max_events", "paths",     "counts", "lost_reasons",      "sources"};
+    EXPECT_EQ(keys, documented);
+}
+
 TEST(TraceFiles, AngularNumbersReadBackExactly) {
-    TraceTally tally(7);
-    tally.photons = 3;
-    tally.angular[2] = 1;
-    std::ostringstream csv;
-    writeAngularCsv(tally, csv);
-    std::istringstream rows(csv.str());
+    // Three photons, one escaping at 60 degrees to its emission: bin 2 of 7 (51.4 to 77.1 degrees).
+    AngularTally tally(7);
+    const PhotonState state{{Point::Zero(), Direction(0, 0, 1)}};
+    Event emit;
+    for (std::uint64_t photon = 0; photon < 3; ++photon) tally.score(emit, {photon, 0, state});
+    Event escape;
+    escape.type = EventType::Escape;
+    escape.direction = Direction(std::sqrt(3.0) / 2.0, 0.0, 0.5);
+    tally.score(escape, {0, 0, state});
+    ResultReport report;
+    tally.report(report);
+    std::istringstream rows(angularCsv(report));
     std::string row;
     std::getline(rows, row);
     for (int bin = 0; bin < 3; ++bin) std::getline(rows, row);

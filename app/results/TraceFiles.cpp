@@ -1,0 +1,59 @@
+#include "results/TraceFiles.hpp"
+
+#include "results/AtomicFile.hpp"
+#include "results/PathsJsonl.hpp"
+#include "results/SummaryJson.hpp"
+#include "results/TableCsv.hpp"
+
+namespace dropscope {
+
+std::string_view fresnelModelName(FresnelModel model) { return model == FresnelModel::Schlick ? "schlick" : "exact"; }
+
+ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
+    ResultReport report;
+    report.set({"photons"}, result.photons);
+    report.set({"seed"}, info.settings.seed);
+    report.set({"threads"}, static_cast<std::uint64_t>(result.threads));
+    report.set({"seconds"}, result.seconds);
+    report.set({"photons_requested"}, result.requested);
+    report.set({"partial"}, result.partial);
+    report.set({"scene"}, info.scenePath);
+    report.set({"fresnel"}, std::string(fresnelModelName(info.settings.transport.fresnel)));
+    report.set({"max_events"}, static_cast<std::uint64_t>(info.settings.transport.maxEvents));
+    report.set({"paths"}, static_cast<std::uint64_t>(result.paths.size()));
+    report.set({"sources"}, static_cast<std::uint64_t>(info.sourceCount));
+    result.tallies.report(report);
+    return report;
+}
+
+void writeTraceSummary(const ResultReport& report, std::ostream& out) {
+    // docs/cli.md's order: scripts that diff summaries across versions see the same file.
+    static const std::vector<std::string_view> kKeyOrder{
+        "photons", "seed", "threads", "seconds",    "fractions", "events", "photons_requested", "partial",
+        "scene",   "bins", "fresnel", "max_events", "paths",     "counts", "lost_reasons",      "sources"};
+    writeSummaryJson(report, kKeyOrder, out);
+}
+
+std::vector<std::string> traceFileNames(const TallySet& tallies) {
+    ResultReport report;
+    tallies.emptyCopy().report(report);
+    std::vector<std::string> names;
+    for (const ResultTable& table : report.tables()) names.push_back(table.name + ".csv");
+    names.push_back("paths.jsonl");
+    names.push_back("summary.json");
+    return names;
+}
+
+void writeTraceFiles(const std::filesystem::path& directory, const TraceResult& result, const TraceRunInfo& info,
+                     const std::vector<Medium>& media) {
+    const ResultReport report = traceReport(result, info);
+    std::vector<FileToWrite> files;
+    for (const ResultTable& table : report.tables()) {
+        files.push_back({directory / (table.name + ".csv"), [&](std::ostream& out) { writeTableCsv(table, out); }});
+    }
+    files.push_back({directory / "paths.jsonl", [&](std::ostream& out) { writePathsJsonl(result.paths, media, out); }});
+    files.push_back({directory / "summary.json", [&](std::ostream& out) { writeTraceSummary(report, out); }});
+    writeFilesAtomically(files);
+}
+
+}  // namespace dropscope

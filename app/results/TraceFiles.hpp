@@ -1,0 +1,41 @@
+#pragma once
+
+#include "run/TraceRun.hpp"
+#include "scene/Medium.hpp"
+#include "tally/ResultReport.hpp"
+
+#include <cstddef>
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace dropscope {
+
+// What the files of a `dropscope trace` run describe besides the result itself.
+struct TraceRunInfo {
+    std::string scenePath;  // as given on the command line
+    std::size_t sourceCount = 0;
+    TraceSettings settings;
+};
+
+std::string_view fresnelModelName(FresnelModel model);  // "exact", "schlick"
+
+// Everything a run reports: the run's own values (photons, seed, threads, seconds, photons_requested,
+// partial, scene, fresnel, max_events, paths, sources) and then every tally's report.
+ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info);
+
+// summary.json: the report's summary, keys in the order docs/cli.md gives them, then any others.
+void writeTraceSummary(const ResultReport& report, std::ostream& out);
+
+// The files writeTraceFiles writes for runs with these tallies: one NAME.csv per table they report,
+// paths.jsonl and summary.json (last).
+std::vector<std::string> traceFileNames(const TallySet& tallies);
+
+// Writes every file of traceFileNames into `directory`, all or none (writeFilesAtomically): a
+// summary.json is only ever beside the files of the same run. Tables as CSV (writeTableCsv).
+void writeTraceFiles(const std::filesystem::path& directory, const TraceResult& result, const TraceRunInfo& info,
+                     const std::vector<Medium>& media);
+
+}  // namespace dropscope

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+namespace dropscope {
+
+// A sum of doubles that is the same bits in any order and grouping: each value is rounded once to a
+// multiple of 2^-kFractionBits and the multiples are added as 128-bit integers, which is associative.
+// So a weighted score summed over threads (or ranks) merged in any order does not depend on their
+// number. Resolution 2^-64 (5.4e-20) absolute; the sum must stay below 2^62 (4.6e18) in magnitude.
+// (Floating-point addition is not associative: summed per thread and merged, a weighted score would
+// change in its last bits with the thread count.)
+class FixedPointSum {
+public:
+    static constexpr int kFractionBits = 64;
+    static constexpr double kLimit = 0x1p62;
+
+    // Throws std::domain_error for a value that is not finite or not below kLimit in magnitude, and
+    // std::overflow_error when the sum would leave that range.
+    void add(double value) {
+        if (!(std::abs(value) < kLimit)) throw std::domain_error("FixedPointSum: value out of range");
+        addUnits(static_cast<Units>(std::nearbyint(std::ldexp(value, kFractionBits))));
+    }
+    FixedPointSum& operator+=(const FixedPointSum& other) {
+        addUnits(other.units_);
+        return *this;
+    }
+    // The sum, rounded to the nearest double.
+    double value() const { return std::ldexp(static_cast<double>(units_), -kFractionBits); }
+
+    friend bool operator==(const FixedPointSum&, const FixedPointSum&) = default;
+
+private:
+    __extension__ typedef __int128 Units;  // __extension__: GCC and Clang have it, ISO C++ has not
+    static constexpr Units kMaxUnits = static_cast<Units>(1) << (62 + kFractionBits);
+
+    // Both terms are below 2^126 in magnitude, so their sum cannot overflow the 128 bits.
+    void addUnits(Units units) {
+        const Units sum = units_ + units;
+        if (sum >= kMaxUnits || sum <= -kMaxUnits) throw std::overflow_error("FixedPointSum: sum out of range");
+        units_ = sum;
+    }
+
+    Units units_ = 0;
+};
+
+}  // namespace dropscope

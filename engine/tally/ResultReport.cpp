@@ -1,0 +1,64 @@
+#include "tally/ResultReport.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace dropscope {
+
+std::size_t ResultColumn::size() const {
+    return std::visit([](const auto& column) { return column.size(); }, values);
+}
+
+namespace {
+
+bool isPrefix(const std::vector<std::string>& prefix, const std::vector<std::string>& path) {
+    return prefix.size() <= path.size() && std::equal(prefix.begin(), prefix.end(), path.begin());
+}
+
+std::string joined(const std::vector<std::string>& path) {
+    std::string text;
+    for (const std::string& key : path) text += (text.empty() ? "" : ".") + key;
+    return text;
+}
+
+}  // namespace
+
+void ResultReport::set(std::vector<std::string> path, SummaryValue value) {
+    if (path.empty()) throw std::invalid_argument("a summary value needs a key");
+    for (SummaryEntry& entry : summary_) {
+        if (entry.path == path) {
+            entry.value = std::move(value);
+            return;
+        }
+        // A key is a value or a group of values, never both.
+        if (isPrefix(entry.path, path) || isPrefix(path, entry.path)) {
+            throw std::invalid_argument("summary keys " + joined(entry.path) + " and " + joined(path) + " clash");
+        }
+    }
+    summary_.push_back({std::move(path), std::move(value)});
+}
+
+void ResultReport::addTable(ResultTable table) {
+    if (this->table(table.name)) throw std::invalid_argument("two result tables named " + table.name);
+    for (const ResultColumn& column : table.columns) {
+        if (column.size() != table.rows()) {
+            throw std::invalid_argument("result table " + table.name + ": column " + column.name + " has " +
+                                        std::to_string(column.size()) + " rows, not " + std::to_string(table.rows()));
+        }
+    }
+    tables_.push_back(std::move(table));
+}
+
+const SummaryValue* ResultReport::find(const std::vector<std::string>& path) const {
+    const auto entry =
+        std::find_if(summary_.begin(), summary_.end(), [&](const SummaryEntry& e) { return e.path == path; });
+    return entry == summary_.end() ? nullptr : &entry->value;
+}
+
+const ResultTable* ResultReport::table(std::string_view name) const {
+    const auto found =
+        std::find_if(tables_.begin(), tables_.end(), [&](const ResultTable& t) { return t.name == name; });
+    return found == tables_.end() ? nullptr : &*found;
+}
+
+}  // namespace dropscope

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace dropscope {
+
+// One value of a run's summary: null, a flag, a count, a number (NaN where undefined) or a text.
+using SummaryValue = std::variant<std::nullptr_t, bool, std::uint64_t, double, std::string>;
+
+// A summary value at a key path: {"fractions", "escaped"} is summary.json's fractions.escaped.
+struct SummaryEntry {
+    std::vector<std::string> path;
+    SummaryValue value;
+    friend bool operator==(const SummaryEntry&, const SummaryEntry&) = default;
+};
+
+// One column of a result table: counts or numbers, one per row.
+struct ResultColumn {
+    std::string name;
+    std::variant<std::vector<std::uint64_t>, std::vector<double>> values;
+    std::size_t size() const;
+    friend bool operator==(const ResultColumn&, const ResultColumn&) = default;
+};
+
+// Columns of equal length under one name; `dropscope trace` writes table NAME as NAME.csv.
+struct ResultTable {
+    std::string name;
+    std::vector<ResultColumn> columns;
+    std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+    friend bool operator==(const ResultTable&, const ResultTable&) = default;
+};
+
+// What a run reports, in no file format: a summary of values at key paths and named tables. Tallies
+// and the run itself fill it; the result writers (app/results) turn it into files, the app into panels.
+class ResultReport {
+public:
+    // Sets the value at `path`, in place when the path is already set (its position is kept).
+    void set(std::vector<std::string> path, SummaryValue value);
+    // Throws std::invalid_argument when a table of that name exists or its columns differ in length.
+    void addTable(ResultTable table);
+
+    const std::vector<SummaryEntry>& summary() const { return summary_; }
+    const std::vector<ResultTable>& tables() const { return tables_; }
+    const SummaryValue* find(const std::vector<std::string>& path) const;  // nullptr when not set
+    const ResultTable* table(std::string_view name) const;                 // nullptr when absent
+
+    friend bool operator==(const ResultReport&, const ResultReport&) = default;
+
+private:
+    std::vector<SummaryEntry> summary_;
+    std::vector<ResultTable> tables_;
+};
+
+}  // namespace dropscope
