@@ -7,7 +7,12 @@ cd "$root"
 clang_format="${CLANG_FORMAT:-clang-format}"
 command -v "$clang_format" >/dev/null || { echo "check-format: $clang_format not found (scripts/install-deps.sh installs it)" >&2; exit 1; }
 
-mapfile -t files < <(git ls-files -co --exclude-standard -- 'engine/*.[ch]pp' 'app/*.[ch]pp' 'tests/*.[ch]pp' 'bench/*.[ch]pp' 'python/*.[ch]pp' | while read -r f; do [[ -f "$f" ]] && echo "$f"; done)
+folders=(engine app tests bench python)
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then  # tracked and new files, not the build trees
+  mapfile -t files < <(git ls-files -co --exclude-standard -- "${folders[@]/%//*.[ch]pp}" | while read -r f; do [[ -f "$f" ]] && echo "$f"; done)
+else
+  mapfile -t files < <(find "${folders[@]}" -name '*.[ch]pp' 2>/dev/null | sort)
+fi
 if [[ "${1:-}" == "--fix" ]]; then
   "$clang_format" -i "${files[@]}"
   exit 0

@@ -1,0 +1,2 @@
+// Fixture: a header the GUI fixture includes.
+#pragma once

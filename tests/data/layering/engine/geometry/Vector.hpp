@@ -1,0 +1,2 @@
+// Fixture: a header the transport fixture includes.
+#pragma once

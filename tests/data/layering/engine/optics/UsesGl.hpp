@@ -1,0 +1,4 @@
+// Fixture: the engine including OpenGL.
+#pragma once
+
+#include <GL/gl.h>

@@ -1,0 +1,6 @@
+// Fixture: an include that keeps to the rules.
+#pragma once
+
+#include "geometry/Vector.hpp"
+
+#include <vector>

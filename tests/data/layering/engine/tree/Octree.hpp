@@ -1,0 +1,2 @@
+// Fixture: a header the geometry fixture includes.
+#pragma once
