@@ -60,14 +60,12 @@ public:
     double unitInMetres() const { return rest_.unitInMetres; }
     double wavelengthNm() const { return rest_.wavelengthNm; }
     double wavelengthInSceneUnits() const { return rest_.wavelengthInSceneUnits(); }
-    const OctreeSettings& octreeSettings() const { return rest_.octree; }
     // The camera the scene file starts with. Not an edit: no undo step, no new revision (the GUI sets
     // it from its camera before saving).
     const std::optional<SceneView>& view() const { return rest_.view; }
     void setView(std::optional<SceneView> view) { rest_.view = std::move(view); }
     // The file the scene came from or was last saved to.
     const std::string& origin() const { return rest_.origin; }
-    void setOrigin(std::string origin) { rest_.origin = std::move(origin); }
 
     std::uint64_t revision() const { return revision_; }
 

@@ -17,9 +17,6 @@ namespace dropscope {
 
 namespace {
 
-// A box moved by withCenter gets its corners back from centre +- half edge, which can change its edge
-// lengths by a few ulps; edges equal to this relative difference still make the edit a "move".
-constexpr double kSameEdgeRelative = 1e-12;
 // The smallest droplet radius, relative to the region's largest side or coordinate: the loader's
 // limit for droplet_cloud (GeneratorReader.cpp), below which a droplet's own coordinates' rounding
 // swamps it.
@@ -42,28 +39,9 @@ std::string withName(std::string text, const std::string& name) {
 
 double sphereVolume(double radius) { return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius; }
 
-// Whether `after` is `before` moved: same kind, medium and form, whatever the position.
+// Whether `after` is `before` moved: same medium and form, whatever the position.
 bool isMove(const Shape& before, const Shape& after) {
-    if (before.kind() != after.kind() || before.mediumId() != after.mediumId()) return false;
-    switch (before.kind()) {
-    case ShapeKind::Sphere:
-        return static_cast<const Sphere&>(before).radius() == static_cast<const Sphere&>(after).radius();
-    case ShapeKind::Ellipsoid:
-        return static_cast<const Ellipsoid&>(before).matrix() == static_cast<const Ellipsoid&>(after).matrix();
-    case ShapeKind::Box: {
-        const Eigen::Vector3d a = static_cast<const Box&>(before).edgeLengths();
-        const Eigen::Vector3d b = static_cast<const Box&>(after).edgeLengths();
-        return (a - b).cwiseAbs().maxCoeff() <= kSameEdgeRelative * a.maxCoeff();
-    }
-    case ShapeKind::Parametric:
-    case ShapeKind::Implicit: {
-        const auto& a = static_cast<const GeneralShape&>(before);
-        const auto& b = static_cast<const GeneralShape&>(after);
-        return a.transform().matrix() == b.transform().matrix() && a.presetName() == b.presetName() &&
-               a.presetParameters() == b.presetParameters();
-    }
-    }
-    return false;
+    return before.mediumId() == after.mediumId() && before.sameFormAs(after);
 }
 
 void checkCloudSpec(const DropletCloudSpec& spec) {

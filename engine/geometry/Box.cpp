@@ -47,6 +47,14 @@ bool Box::encloses(const Shape& other) const {  // seed 1.1.9
            upper_.x() >= other.xMax() && upper_.y() >= other.yMax() && upper_.z() >= other.zMax();
 }
 
+bool Box::sameFormAs(const Shape& other) const {
+    const auto* box = dynamic_cast<const Box*>(&other);
+    if (!box) return false;
+    const Eigen::Vector3d a = edgeLengths();
+    const Eigen::Vector3d b = box->edgeLengths();
+    return (a - b).cwiseAbs().maxCoeff() <= tolerance::kMovedEdgeRelative * a.maxCoeff();
+}
+
 // Distance to the nearest face plane the ray leaves through (seed eq. 1.1); from inside the box
 // the exit point is on the box, so the bound checks 1.2-1.3 hold by construction.
 double Box::exitDistance(const Point& p, const Direction& d) const {

@@ -29,7 +29,11 @@ public:
     double volume() const override;
     PointLocation locatePoint(const Point& p) const override;
     using Shape::encloses;
-    bool encloses(const Shape& other) const override;
+    // Whether `other` lies completely inside this box, touching allowed (seed 1.1.9): a glass cell
+    // holding droplets.
+    bool encloses(const Shape& other) const;
+    bool mayMeetBox(const Eigen::AlignedBox3d& box) const override { return bounds().intersects(box); }
+    bool sameFormAs(const Shape& other) const override;
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
     void print(std::ostream& os) const override;

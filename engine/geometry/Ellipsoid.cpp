@@ -1,5 +1,7 @@
 #include "geometry/Ellipsoid.hpp"
 
+#include "geometry/Box.hpp"
+#include "geometry/Overlap.hpp"
 #include "geometry/RayQuadric.hpp"
 #include "geometry/Tolerance.hpp"
 
@@ -95,6 +97,15 @@ double Ellipsoid::distanceToSurface(const Point& p, const Direction& d) const {
 Direction Ellipsoid::normal(const Point& p) const {
     if (!surfaceContains(p)) return Direction::invalid();
     return Direction(m_ * (p - center_));  // seed eq. 1.62
+}
+
+bool Ellipsoid::mayMeetBox(const Eigen::AlignedBox3d& box) const {
+    return bounds().intersects(box) && minimumQuadraticFormOverBox(center_, matrix(), Box(box.min(), box.max())) <= 1.0;
+}
+
+bool Ellipsoid::sameFormAs(const Shape& other) const {
+    const auto* ellipsoid = dynamic_cast<const Ellipsoid*>(&other);
+    return ellipsoid && ellipsoid->matrix() == matrix();
 }
 
 void Ellipsoid::print(std::ostream& os) const {

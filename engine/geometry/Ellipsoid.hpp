@@ -38,6 +38,8 @@ public:
     PointLocation locatePoint(const Point& p) const override;
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
+    bool mayMeetBox(const Eigen::AlignedBox3d& box) const override;
+    bool sameFormAs(const Shape& other) const override;
     void print(std::ostream& os) const override;
     std::unique_ptr<Shape> clone() const override { return std::make_unique<Ellipsoid>(*this); }
     double surfaceBand() const override { return bandNormalised_ * semiAxes_.minCoeff(); }

@@ -1,36 +1,9 @@
-#include "geometry/Box.hpp"
-#include "geometry/Ellipsoid.hpp"
 #include "geometry/GeneralShape.hpp"
 #include "geometry/Overlap.hpp"
-#include "geometry/Sphere.hpp"
 
 namespace dropscope {
 
 namespace {
-
-// Whether `shape`'s closed body may meet the closed `box`: exact for boxes, spheres and ellipsoids,
-// conservative (never false when they meet) for a general shape. No surface bands: a cover cell on a
-// flat face is thinner than a large box's band, so the band-aware overlap tests would miss it.
-bool mayMeetBox(const Shape& shape, const Eigen::AlignedBox3d& box) {
-    if (!shape.bounds().intersects(box)) return false;
-    switch (shape.kind()) {
-    case ShapeKind::Box: return true;  // the bounds are the box
-    case ShapeKind::Sphere: {
-        const auto& sphere = static_cast<const Sphere&>(shape);
-        return box.squaredExteriorDistance(sphere.center()) <= sphere.radius() * sphere.radius();
-    }
-    case ShapeKind::Ellipsoid: {
-        const auto& ellipsoid = static_cast<const Ellipsoid&>(shape);
-        return minimumQuadraticFormOverBox(ellipsoid.center(), ellipsoid.matrix(), Box(box.min(), box.max())) <= 1.0;
-    }
-    case ShapeKind::Parametric:
-    case ShapeKind::Implicit: break;
-    }
-    const auto& general = static_cast<const GeneralShape&>(shape);
-    if (general.anyCoverBox([&](const Eigen::AlignedBox3d& cell) { return cell.intersects(box); })) return true;
-    // No surface in the box: it is wholly inside or wholly outside.
-    return general.locatePoint(box.center()) != PointLocation::Outside;
-}
 
 // A box of positive volume around a cover cell (a cell on a flat face can be flat).
 Eigen::AlignedBox3d solidCell(const Eigen::AlignedBox3d& cell, double band) {
@@ -44,7 +17,7 @@ bool coverMeets(const GeneralShape& general, const Shape& other) {
     const double band = general.surfaceBand();
     return general.anyCoverBox([&](const Eigen::AlignedBox3d& cell) {
         const Eigen::AlignedBox3d solid = solidCell(cell, band);
-        return solid.intersects(reach) && mayMeetBox(other, solid);
+        return solid.intersects(reach) && other.mayMeetBox(solid);
     });
 }
 

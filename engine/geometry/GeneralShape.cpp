@@ -52,6 +52,19 @@ void printValues(std::ostream& os, const PresetParameter& parameter, std::size_t
 
 }  // namespace
 
+bool GeneralShape::mayMeetBox(const Eigen::AlignedBox3d& box) const {
+    if (!bounds().intersects(box)) return false;
+    if (anyCoverBox([&](const Eigen::AlignedBox3d& cell) { return cell.intersects(box); })) return true;
+    // No surface in the box: it is wholly inside or wholly outside.
+    return locatePoint(box.center()) != PointLocation::Outside;
+}
+
+bool GeneralShape::sameFormAs(const Shape& other) const {
+    const auto* general = dynamic_cast<const GeneralShape*>(&other);
+    return general && general->kind() == kind() && general->transform().matrix() == transform().matrix() &&
+           general->presetName() == presetName() && general->presetParameters() == presetParameters();
+}
+
 void GeneralShape::print(std::ostream& os) const {
     os << typeName() << ' ' << presetName() << " {";
     const std::vector<PresetParameter> parameters = presetParameters();

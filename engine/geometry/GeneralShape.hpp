@@ -42,6 +42,10 @@ public:
     // "parametric torus {major_radius: 2, minor_radius: 0.5} M=[[1, 0, 0], ...] r0=(1, 2, 3)"; a parameter
     // of more than kPrintedValues numbers (Bezier patches) is summarised as "[N numbers]".
     void print(std::ostream& os) const final;
+    // Conservative: some cover cell meets the box, or the box, holding no surface, is inside.
+    bool mayMeetBox(const Eigen::AlignedBox3d& box) const final;
+    // The same kind, preset, parameters and matrix M; r0 may differ.
+    bool sameFormAs(const Shape& other) const final;
 
     // The base's tessellation, placed by the transform.
     SurfaceMesh mesh() const;

@@ -8,10 +8,6 @@
 
 namespace dropscope {
 
-bool Shape::encloses(const Shape&) const {
-    throw std::logic_error("encloses(Shape) is defined for boxes only, not for a " + std::string(typeName()));
-}
-
 Eigen::AlignedBox3d Shape::bounds() const {
     return Eigen::AlignedBox3d(Point(xMin(), yMin(), zMin()), Point(xMax(), yMax(), zMax()));
 }

@@ -45,12 +45,14 @@ public:
     bool surfaceContains(const Point& p) const { return locatePoint(p) == PointLocation::OnSurface; }
     // Strictly inside: not on the surface band and not outside.
     bool encloses(const Point& p) const { return locatePoint(p) == PointLocation::Inside; }
-    // Whether `other` lies completely inside *this, touching allowed. Only a Box answers; every other
-    // shape throws std::logic_error, as the seed specifies.
-    virtual bool encloses(const Shape& other) const;
-
     // Positive volume of intersection; touching (within the surface bands) is not overlapping.
     bool overlaps(const Shape& other) const;
+    // Whether the closed body may meet the closed `box`, without surface bands: exact for boxes, spheres
+    // and ellipsoids, conservative (never false when they meet) for parametric and implicit shapes.
+    virtual bool mayMeetBox(const Eigen::AlignedBox3d& box) const = 0;
+    // Whether `other` is this shape moved: the same type and form (size, orientation, preset), wherever
+    // it is placed. The medium is not compared.
+    virtual bool sameFormAs(const Shape& other) const = 0;
 
     // The seed's distance semantics (1.1.7, 1.2.7, 1.3.7):
     //  inside          -> the positive root;

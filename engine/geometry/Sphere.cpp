@@ -25,6 +25,11 @@ Direction Sphere::normal(const Point& p) const {
     return Direction(p - center());  // seed 1.2.8, normalised exactly rather than divided by R
 }
 
+bool Sphere::sameFormAs(const Shape& other) const {
+    const auto* sphere = dynamic_cast<const Sphere*>(&other);
+    return sphere && sphere->radius() == radius();
+}
+
 void Sphere::print(std::ostream& os) const {
     os << "Sphere(center=";
     printPoint(os, center()) << ", radius=" << radius() << ')';

@@ -30,6 +30,10 @@ public:
     PointLocation locatePoint(const Point& p) const override;
     double distanceToSurface(const Point& p, const Direction& d) const override;
     Direction normal(const Point& p) const override;
+    bool mayMeetBox(const Eigen::AlignedBox3d& box) const override {
+        return box.squaredExteriorDistance(center()) <= radius() * radius();
+    }
+    bool sameFormAs(const Shape& other) const override;
     void print(std::ostream& os) const override;
     std::unique_ptr<Shape> clone() const override { return std::make_unique<Sphere>(*this); }
     double surfaceBand() const override { return geometry_.band; }

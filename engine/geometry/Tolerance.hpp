@@ -29,6 +29,11 @@ inline constexpr double kMatrixRelative = 1e-10;
 // 1e12) the smallest is still known to ~1e-4 relative, beyond that it is noise.
 inline constexpr double kMaxSemiAxisRatio = 1e6;
 
+// A box moved by a translation gets its corners back as center +- half edge, which can change its edge
+// lengths by a few ulps; edges that differ by no more than this, relative to the longest, are the same
+// box moved (Box::sameFormAs).
+inline constexpr double kMovedEdgeRelative = 1e-12;
+
 // Band half-width, in length units, of a shape of characteristic size `size` whose coordinates
 // are up to `coordinateMagnitude` in absolute value.
 inline constexpr double surfaceBand(double size, double coordinateMagnitude) {

@@ -39,7 +39,6 @@ public:
     explicit ImplicitBase(std::shared_ptr<const ImplicitFunction> function);
 
     const ImplicitFunction& function() const { return *function_; }
-    const std::shared_ptr<const ImplicitFunction>& sharedFunction() const { return function_; }
     // The function's bounds padded by tolerance::implicit::kBoundsPaddingRelative: f > 0 on this box.
     const Eigen::AlignedBox3d& bounds() const { return bounds_; }
     // Surface band of the base frame (characteristic length, coordinates of the bounds).

@@ -97,7 +97,6 @@ public:
     explicit ParametricBase(std::shared_ptr<const ParametricSurface> surface);
 
     const ParametricSurface& surface() const { return *surface_; }
-    const std::shared_ptr<const ParametricSurface>& sharedSurface() const { return surface_; }
     const ParameterDomain& domain() const { return domain_; }
 
     // +1 when r_u x r_v points outward, -1 when inward (the sign of signedVolume()).
