@@ -28,7 +28,7 @@ SceneView Camera::toView() const {
 }
 
 void Camera::fitTo(const Eigen::AlignedBox3d& bounds, double aspect) {
-    const glm::dvec3 centre = toGlm(bounds.center());
+    const glm::dvec3 center = toGlm(bounds.center());
     const double radius = std::max(0.5 * bounds.diagonal().norm(), 1e-9);
     glm::dvec3 direction = eye - target;
     if (glm::length(direction) == 0.0 || !std::isfinite(glm::length(direction))) direction = {3.0, 2.1, 4.8};
@@ -37,8 +37,8 @@ void Camera::fitTo(const Eigen::AlignedBox3d& bounds, double aspect) {
     const double halfVertical = glm::radians(fovDeg) / 2.0;
     const double halfHorizontal = std::atan(std::tan(halfVertical) * aspect);
     const double distance = radius / std::sin(std::min(halfVertical, halfHorizontal));
-    target = centre;
-    eye = centre + direction * distance;
+    target = center;
+    eye = center + direction * distance;
     clipTo(bounds);
 }
 

@@ -25,8 +25,8 @@ ShapeInstance instance(const Point& center, const Eigen::Matrix3d& linear, const
 
 }  // namespace
 
-ShapeInstance sphereInstance(const Point& centre, double radius, const Anchor& anchor, const Colour& colour) {
-    return instance(centre, radius * Eigen::Matrix3d::Identity(), anchor, colour);
+ShapeInstance sphereInstance(const Point& center, double radius, const Anchor& anchor, const Colour& colour) {
+    return instance(center, radius * Eigen::Matrix3d::Identity(), anchor, colour);
 }
 
 ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& shapes, const Anchor& anchor,

@@ -71,7 +71,7 @@ ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& sh
 inline constexpr Colour kHighlight{1.0f, 0.85f, 0.1f, 1.0f};
 
 // A small sphere for the impostor shaders (event markers).
-ShapeInstance sphereInstance(const Point& centre, double radius, const Anchor& anchor, const Colour& colour);
+ShapeInstance sphereInstance(const Point& center, double radius, const Anchor& anchor, const Colour& colour);
 
 struct LineVertex {
     std::array<float, 3> position;

@@ -41,9 +41,9 @@ void addGroundGrid(LineBatch& lines, const Eigen::AlignedBox3d& bounds, const Ei
     // Under the bounds: below their lowest point along `up`, whichever way up points.
     const bool upwards = up[normal] >= 0.0;
     const double level = upwards ? bounds.min()[normal] - kGridDrop * width : bounds.max()[normal] + kGridDrop * width;
-    const Point centre = bounds.center();
-    const double centreA = step * std::round(centre[a] / step);
-    const double centreB = step * std::round(centre[b] / step);
+    const Point center = bounds.center();
+    const double centerA = step * std::round(center[a] / step);
+    const double centerB = step * std::round(center[b] / step);
     const auto at = [&](double u, double v) {
         Point p;
         p[normal] = level;
@@ -54,8 +54,8 @@ void addGroundGrid(LineBatch& lines, const Eigen::AlignedBox3d& bounds, const Ei
     const double extent = half * step;
     for (int k = -half; k <= half; ++k) {
         const double offset = k * step;
-        lines.add(at(centreA + offset, centreB - extent), at(centreA + offset, centreB + extent), kGridColour);
-        lines.add(at(centreA - extent, centreB + offset), at(centreA + extent, centreB + offset), kGridColour);
+        lines.add(at(centerA + offset, centerB - extent), at(centerA + offset, centerB + extent), kGridColour);
+        lines.add(at(centerA - extent, centerB + offset), at(centerA + extent, centerB + offset), kGridColour);
     }
 }
 

@@ -24,21 +24,21 @@ void addArrow(LineBatch& lines, const Point& origin, const Direction& direction,
     }
 }
 
-void addCircle(LineBatch& lines, const Point& centre, const Direction& normal, double radius) {
+void addCircle(LineBatch& lines, const Point& center, const Direction& normal, double radius) {
     Eigen::Vector3d u;
     Eigen::Vector3d v;
     perpendicularBasis(normal, u, v);
     const auto at = [&](int k) {
         const double phi = 2.0 * std::numbers::pi * k / kCircleSegments;
-        return Point(centre + radius * (std::cos(phi) * u + std::sin(phi) * v));
+        return Point(center + radius * (std::cos(phi) * u + std::sin(phi) * v));
     };
     for (int k = 0; k < kCircleSegments; ++k) lines.add(at(k), at(k + 1), kSourceColour);
 }
 
-void addStar(LineBatch& lines, const Point& centre, double halfWidth) {
+void addStar(LineBatch& lines, const Point& center, double halfWidth) {
     for (int axis = 0; axis < 3; ++axis) {
         const Eigen::Vector3d offset = halfWidth * Eigen::Vector3d::Unit(axis);
-        lines.add(centre - offset, centre + offset, kSourceColour);
+        lines.add(center - offset, center + offset, kSourceColour);
     }
 }
 

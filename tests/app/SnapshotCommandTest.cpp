@@ -174,9 +174,9 @@ TEST_F(SnapshotCamera, LookingAlongUpStillGivesAPicture) {
                   .status,
               kExitSuccess);
     const snapshot::Image image = snapshot::readPng(out);
-    const std::uint8_t* centre = image.pixel(32, 24);
+    const std::uint8_t* center = image.pixel(32, 24);
     const std::uint8_t* corner = image.pixel(1, 1);
-    EXPECT_GT(centre[2], corner[2] + 60);  // blue drop against the dark background
+    EXPECT_GT(center[2], corner[2] + 60);  // blue drop against the dark background
 }
 
 TEST_F(SnapshotCamera, PhotonCountsAreBounded) {

@@ -143,7 +143,7 @@ Eigen::Matrix3d randomShapeMatrix(Rng& rng) {
 // ---------------------------------------------------------------------------------------------
 // gilitschenskiMaximum
 
-TEST(GilitschenskiMaximum, TwoSpheresGiveCentreDistanceOverRadiusSumSquared) {
+TEST(GilitschenskiMaximum, TwoSpheresGiveCenterDistanceOverRadiusSumSquared) {
     for (int i = 0; i < 1000; ++i) {
         SCOPED_TRACE(caseName(i));
         Rng rng(static_cast<Rng::result_type>(i));
@@ -237,7 +237,7 @@ TEST(GilitschenskiMaximum, MatchesGridSearchForElongatedPairs) {
     }
 }
 
-TEST(GilitschenskiMaximum, IsZeroForCoincidentCentres) {
+TEST(GilitschenskiMaximum, IsZeroForCoincidentCenters) {
     Rng rng(7);
     const Point c = testing::randomPoint(rng, 1.0);
     EXPECT_EQ(gilitschenskiMaximum(c, randomShapeMatrix(rng), c, randomShapeMatrix(rng)), 0.0);
@@ -365,7 +365,7 @@ TEST(EllipsoidBoxOverlap, MinimumMatchesBruteForceOverBoxPoints) {
     EXPECT_GE(separate, 20);
 }
 
-TEST(EllipsoidBoxOverlap, CentreInsideTheBoxGivesZero) {
+TEST(EllipsoidBoxOverlap, CenterInsideTheBoxGivesZero) {
     const Box box(Point(0.0, 0.0, 0.0), Point(2.0, 1.0, 3.0));
     for (const Point& c : {Point(1.0, 0.5, 1.5), Point(0.0, 0.0, 0.0), Point(2.0, 0.3, 3.0)}) {
         EXPECT_EQ(minimumQuadraticFormOverBox(c, Eigen::Matrix3d::Identity(), box), 0.0);

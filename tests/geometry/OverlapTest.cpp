@@ -23,7 +23,7 @@ TEST(BoxOverlap, SharedVolumeOverlapsTouchingDoesNot) {
     EXPECT_TRUE(kUnit.overlaps(kUnit));
 }
 
-TEST(SphereOverlap, SeedEq16CentresCloserThanTheRadii) {
+TEST(SphereOverlap, SeedEq16CentersCloserThanTheRadii) {
     const Sphere a(Point(0, 0, 0), 1.0);
     EXPECT_TRUE(a.overlaps(Sphere(Point(1.5, 0, 0), 0.6)));
     EXPECT_FALSE(a.overlaps(Sphere(Point(1.5, 0, 0), 0.5)));  // touching

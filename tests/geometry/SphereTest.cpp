@@ -21,7 +21,7 @@ TEST(Sphere, ExtremesAreaVolume) {
     EXPECT_DOUBLE_EQ(kSphere.volume(), 32.0 / 3.0 * std::numbers::pi);
 }
 
-TEST(Sphere, RejectsBadRadiusOrCentre) {
+TEST(Sphere, RejectsBadRadiusOrCenter) {
     EXPECT_THROW(Sphere(Point::Zero(), 0.0), std::invalid_argument);
     EXPECT_THROW(Sphere(Point::Zero(), -1.0), std::invalid_argument);
     EXPECT_THROW(Sphere(Point::Zero(), std::nan("")), std::invalid_argument);
@@ -37,11 +37,11 @@ TEST(Sphere, LocatesPoints) {
     EXPECT_FALSE(kSphere.encloses(Point(3.1, 2.0, 3.0)));
 }
 
-TEST(Sphere, DistanceFromCentreIsTheRadius) {
+TEST(Sphere, DistanceFromCenterIsTheRadius) {
     EXPECT_DOUBLE_EQ(kSphere.distanceToSurface(kSphere.center(), Direction(1, 1, 1)), 2.0);
 }
 
-TEST(Sphere, DistanceFromInsideOffCentre) {
+TEST(Sphere, DistanceFromInsideOffCenter) {
     // from (1,2,3) + (1,0,0) along +y: half-chord sqrt(R^2 - 1)
     EXPECT_DOUBLE_EQ(kSphere.distanceToSurface(Point(2.0, 2.0, 3.0), Direction(0, 1, 0)), std::sqrt(3.0));
     EXPECT_DOUBLE_EQ(kSphere.distanceToSurface(Point(2.0, 2.0, 3.0), Direction(-1, 0, 0)), 3.0);

@@ -52,7 +52,7 @@ Point translationOf(AppHarness& harness, ShapeId id) {
 }
 
 // Types `text` into the first box (x) of the shape editor's centre field and leaves the field.
-void typeCentreX(AppHarness& harness, const char* text) {
+void typeCenterX(AppHarness& harness, const char* text) {
     harness.frame();  // the editor of a shape selected by the last frame's click is drawn in the next one
     const auto field = harness.state().itemRects.find("centre");
     ASSERT_NE(field, harness.state().itemRects.end()) << "the shape editor shows no centre field";
@@ -67,7 +67,7 @@ void typeCentreX(AppHarness& harness, const char* text) {
     harness.press(kKeyEnter);
 }
 
-TEST(GeneralShapeUi, ClickedParametricShapeMovesByItsCentreFieldInOneUndoStep) {
+TEST(GeneralShapeUi, ClickedParametricShapeMovesByItsCenterFieldInOneUndoStep) {
     AppHarness harness(kTopDownScene);
     const Eigen::Matrix3d m = Eigen::Vector3d(1.0, 0.5, 1.5).asDiagonal();
     ShapeSpec spec;
@@ -84,7 +84,7 @@ TEST(GeneralShapeUi, ClickedParametricShapeMovesByItsCentreFieldInOneUndoStep) {
     ASSERT_EQ(harness.state().selected, id);
     EXPECT_EQ(harness.state().status.text, "selected shape 1: parametric octahedron, water");
 
-    typeCentreX(harness, "2.5");
+    typeCenterX(harness, "2.5");
     EXPECT_FALSE(harness.state().status.error) << harness.state().status.text;
     const Shape* moved = harness.state().document->octree().shape(id);
     ASSERT_TRUE(moved && asGeneralShape(*moved));

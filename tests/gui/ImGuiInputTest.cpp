@@ -69,25 +69,25 @@ protected:
 
 TEST_F(ImGuiInputTest, APressAndReleaseOverAButtonClicksItOnce) {
     int clicks = 0;
-    ImVec2 centre;
+    ImVec2 center;
     const auto ui = [&] {
         panel([&] {
             if (ImGui::Button("Fire", {100, 40})) ++clicks;
             const ImVec2 min = ImGui::GetItemRectMin();
             const ImVec2 max = ImGui::GetItemRectMax();
-            centre = {(min.x + max.x) / 2, (min.y + max.y) / 2};
+            center = {(min.x + max.x) / 2, (min.y + max.y) / 2};
         });
     };
     frame(idle(), ui);
     frame(idle(), ui);
-    ASSERT_GT(centre.x, 10.0f);
+    ASSERT_GT(center.x, 10.0f);
 
-    frame(mouseAt(centre, false), ui);  // hover
-    frame(mouseAt(centre, true), ui);   // press
+    frame(mouseAt(center, false), ui);  // hover
+    frame(mouseAt(center, true), ui);   // press
     EXPECT_EQ(clicks, 0) << "a button fires on release";
-    frame(mouseAt(centre, false), ui);  // release
+    frame(mouseAt(center, false), ui);  // release
     EXPECT_EQ(clicks, 1);
-    frame(mouseAt(centre, false), ui);
+    frame(mouseAt(center, false), ui);
     frame(idle(), ui);
     EXPECT_EQ(clicks, 1) << "exactly once";
 }

@@ -28,7 +28,7 @@ TEST(CameraRay, ProjectsBackOntoThePixelItWasCastThrough) {
     }
 }
 
-TEST(CameraRay, TheImageCentreLooksAtTheTarget) {
+TEST(CameraRay, TheImageCenterLooksAtTheTarget) {
     Camera camera;
     camera.eye = {0.0, 10.0, 0.0};
     camera.target = {0.0, 0.0, 0.0};

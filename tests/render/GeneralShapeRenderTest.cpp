@@ -106,15 +106,15 @@ render::Camera diagonalView(const Point& target, const Eigen::AlignedBox3d& boun
 // A base whose centre is not at its translation: the shape's bounds centre is r0 + (2, 0, 0). A plane
 // between r0 and that centre hides it by the bounds centre (r0 would be kept), and the flipped plane keeps
 // it; the upload path (uploadScene) applies the plane.
-TEST(MeshSlice, AMeshIsKeptOrHiddenByTheCentreOfItsBounds) {
+TEST(MeshSlice, AMeshIsKeptOrHiddenByTheCenterOfItsBounds) {
     const Point r0(10.0, 0.0, 0.0);
     auto octahedron =
         std::make_unique<TestOctahedron>(0.8, AffineTransform(Eigen::Matrix3d::Identity(), r0), Point(2.0, 0.0, 0.0));
     const auto shapes = oneShape(std::move(octahedron));
-    const Point centre = shapes[0]->bounds().center();
-    ASSERT_NEAR((centre - Point(12.0, 0.0, 0.0)).norm(), 0.0, 1e-12);
-    const render::Camera camera = diagonalView(centre, shapes[0]->bounds());
-    const render::Anchor anchor{centre};
+    const Point center = shapes[0]->bounds().center();
+    ASSERT_NEAR((center - Point(12.0, 0.0, 0.0)).norm(), 0.0, 1e-12);
+    const render::Camera camera = diagonalView(center, shapes[0]->bounds());
+    const render::Anchor anchor{center};
     SceneRenderer renderer;
 
     render::LayerOptions options = blackBackground();
@@ -131,7 +131,7 @@ TEST(MeshSlice, AMeshIsKeptOrHiddenByTheCentreOfItsBounds) {
 }
 
 // The pixel at the image centre.
-std::array<int, 3> centrePixel(const snapshot::Image& image) {
+std::array<int, 3> centerPixel(const snapshot::Image& image) {
     const std::uint8_t* p = image.pixel(kWidth / 2, kHeight / 2);
     return {p[0], p[1], p[2]};
 }
@@ -155,7 +155,7 @@ TEST(MeshShading, LitBlendedAndHighlightedLikeADroplet) {
     SceneRenderer renderer;
     render::LayerOptions options;  // the usual, not black, background: blending shows against it
     const auto colour = [&](const std::vector<std::unique_ptr<Shape>>& shapes) {
-        return centrePixel(renderer.draw(shapes, camera, options, anchor));
+        return centerPixel(renderer.draw(shapes, camera, options, anchor));
     };
 
     const std::array<int, 3> opaque = colour(octahedron);
@@ -248,10 +248,10 @@ TEST(MeshCache, GeometryAndInstanceAddUpToThePlacedMesh) {
     ASSERT_EQ(drawn.geometry->indices.size(), 3 * mesh.triangles.size());
     // float: a relative rounding of 6e-8 of the shape's size and of the anchor offset.
     constexpr double kFloatRounding = 1e-6;
-    const Point centre(drawn.instance.center[0], drawn.instance.center[1], drawn.instance.center[2]);
+    const Point center(drawn.instance.center[0], drawn.instance.center[1], drawn.instance.center[2]);
     for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
         const auto& v = drawn.geometry->vertices[k];
-        const Point world = anchor.origin + centre + Point(v.position[0], v.position[1], v.position[2]);
+        const Point world = anchor.origin + center + Point(v.position[0], v.position[1], v.position[2]);
         EXPECT_NEAR((world - mesh.vertices[k]).norm(), 0.0, kFloatRounding) << "vertex " << k;
         EXPECT_NEAR((Eigen::Vector3d(v.normal[0], v.normal[1], v.normal[2]) - mesh.normals[k]).norm(), 0.0,
                     kFloatRounding);

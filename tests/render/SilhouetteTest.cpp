@@ -33,19 +33,19 @@ render::Camera lookingAt(const Point& target, const Eigen::Vector3d& fromDirecti
 
 // A sphere away from the origin (so the anchor matters), seen obliquely with the view axis through its
 // centre: its silhouette is the circle of angular radius asin(r / d) about the image centre.
-TEST(SphereSilhouette, CentredSphereCoversTheCircleTheCameraMathPredicts) {
-    const Point centre(3.0, -2.0, 5.0);
+TEST(SphereSilhouette, CenteredSphereCoversTheCircleTheCameraMathPredicts) {
+    const Point center(3.0, -2.0, 5.0);
     const double radius = 1.0;
     const double distance = 5.0;
-    const auto shapes = oneShape(std::make_unique<Sphere>(centre, radius));
-    const render::Camera camera = lookingAt(centre, {1.0, 0.5, 2.0}, distance, shapes[0]->bounds());
-    const render::Anchor anchor{centre};
+    const auto shapes = oneShape(std::make_unique<Sphere>(center, radius));
+    const render::Camera camera = lookingAt(center, {1.0, 0.5, 2.0}, distance, shapes[0]->bounds());
+    const render::Anchor anchor{center};
 
     DirectRenderer renderer(kWidth, kHeight);
     const snapshot::Image image =
         renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
 
-    const Eigen::Vector2d middle = test::projectToPixels(camera, centre, kWidth, kHeight);
+    const Eigen::Vector2d middle = test::projectToPixels(camera, center, kWidth, kHeight);
     ASSERT_NEAR(middle.x(), 0.5 * kWidth, 1e-9);
     ASSERT_NEAR(middle.y(), 0.5 * kHeight, 1e-9);
     const double halfHeight = std::tan(camera.fovDeg * std::numbers::pi / 360.0);
@@ -99,13 +99,13 @@ TEST(EllipsoidSilhouette, RotatedEllipsoidsCoverExactlyThePixelsWhoseRaysHitTheE
         std::uniform_real_distribution<double> semi(0.3, 1.3);
         const Direction axis(unit(rng), unit(rng), unit(rng));
         const double angle = std::numbers::pi * unit(rng);
-        const Point centre(5.0 * unit(rng), 5.0 * unit(rng), 5.0 * unit(rng));
+        const Point center(5.0 * unit(rng), 5.0 * unit(rng), 5.0 * unit(rng));
         const Eigen::Vector3d semiAxes(semi(rng), semi(rng), semi(rng));
         const Eigen::Vector3d from(unit(rng), unit(rng), unit(rng));
         const auto shapes = oneShape(
-            std::make_unique<Ellipsoid>(Ellipsoid::fromSemiAxes(centre, semiAxes, rotationAboutAxis(axis, angle))));
-        const render::Camera camera = lookingAt(centre, from, 6.0, shapes[0]->bounds());
-        const render::Anchor anchor{centre};
+            std::make_unique<Ellipsoid>(Ellipsoid::fromSemiAxes(center, semiAxes, rotationAboutAxis(axis, angle))));
+        const render::Camera camera = lookingAt(center, from, 6.0, shapes[0]->bounds());
+        const render::Anchor anchor{center};
         const snapshot::Image image =
             renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
 

@@ -194,7 +194,7 @@ TEST(SliceLines, APlaneBeyondEverythingLeavesTheLinesAsTheyWere) {
 
 // The default scene: drop-a (centre z = 0), drop-b (-1), drop-c (-1.2), the glass cell (4) and the drop
 // in it (4). The plane z = 0 hiding +z keeps the first three, drop-a by being on the plane.
-TEST(SliceShapes, ShapesAreKeptOrHiddenByTheirCentre) {
+TEST(SliceShapes, ShapesAreKeptOrHiddenByTheirCenter) {
     const Scene scene = loadScene(kDefaultScene);
     const render::Anchor anchor{Point(0.0, 0.0, 1.0)};
     const render::ShapeInstances all = render::buildShapeInstances(scene.shapes, anchor);
@@ -281,8 +281,8 @@ TEST(SliceRender, OnlyTheSphereOnTheKeptSideIsDrawn) {
     options.layers.render.background = {0.0f, 0.0f, 0.0f, 1.0f};
     const render::Camera camera =
         test::cameraLookingAt(*options.eye, *options.target, 40.0, render::sceneBounds(scene.shapes));
-    const auto pixelOf = [&](const Point& centre) {
-        const Eigen::Vector2d p = test::projectToPixels(camera, centre, options.width, options.height);
+    const auto pixelOf = [&](const Point& center) {
+        const Eigen::Vector2d p = test::projectToPixels(camera, center, options.width, options.height);
         return std::pair{static_cast<int>(std::floor(p.x())), static_cast<int>(std::floor(p.y()))};
     };
     const auto [leftX, leftY] = pixelOf(Point(-2.0, 0.0, 0.0));

@@ -21,8 +21,8 @@ namespace dropscope::test {
 class TestOctahedron final : public GeneralShape {
 public:
     explicit TestOctahedron(double size, const AffineTransform& transform = AffineTransform(),
-                            const Point& baseCentre = Point::Zero())
-        : GeneralShape(transform), base_(std::make_shared<Base>(size, baseCentre)) {}
+                            const Point& baseCenter = Point::Zero())
+        : GeneralShape(transform), base_(std::make_shared<Base>(size, baseCenter)) {}
 
     ShapeKind kind() const override { return ShapeKind::Parametric; }
     std::string_view typeName() const override { return "parametric"; }
@@ -56,7 +56,7 @@ public:
     }
 
     PointLocation locatePoint(const Point& p) const override {
-        const double f = (transform().applyInverse(p) - base_->centre).lpNorm<1>() - base_->size;
+        const double f = (transform().applyInverse(p) - base_->center).lpNorm<1>() - base_->size;
         if (std::abs(f) <= kBandShare * base_->size) return PointLocation::OnSurface;
         return f < 0.0 ? PointLocation::Inside : PointLocation::Outside;
     }
@@ -65,7 +65,7 @@ public:
     // the ray is o + t w with the same t as in space.
     double distanceToSurface(const Point& p, const Direction& d) const override {
         if (!d || !p.allFinite()) return std::numeric_limits<double>::quiet_NaN();
-        const Eigen::Vector3d o = transform().applyInverse(p) - base_->centre;
+        const Eigen::Vector3d o = transform().applyInverse(p) - base_->center;
         const Eigen::Vector3d w = transform().applyInverseToVector(d.vector());
         double enter = -std::numeric_limits<double>::infinity();
         double leave = std::numeric_limits<double>::infinity();
@@ -87,7 +87,7 @@ public:
     }
 
     Direction normal(const Point& p) const override {
-        const Eigen::Vector3d q = transform().applyInverse(p) - base_->centre;
+        const Eigen::Vector3d q = transform().applyInverse(p) - base_->center;
         if (locatePoint(p) != PointLocation::OnSurface || (q.array() == 0.0).any()) return Direction();
         return transform().applyToNormal(q.array().sign().matrix());
     }
@@ -110,11 +110,11 @@ private:
 
     struct Base {
         double size;
-        Point centre;
+        Point center;
         SurfaceMesh mesh;
         std::vector<Eigen::AlignedBox3d> cover;
         mutable int meshCalls = 0;
-        Base(double a, const Point& c) : size(a), centre(c) {
+        Base(double a, const Point& c) : size(a), center(c) {
             for (const Eigen::Vector3d& s : signs()) {
                 std::array<Point, 3> corners{c + Point(a * s.x(), 0, 0), c + Point(0, a * s.y(), 0),
                                              c + Point(0, 0, a * s.z())};
@@ -145,7 +145,7 @@ private:
         Eigen::AlignedBox3d box;
         for (int axis = 0; axis < 3; ++axis) {
             for (const double side : {-1.0, 1.0}) {
-                box.extend(transform().apply(base_->centre + side * base_->size * Point::Unit(axis)));
+                box.extend(transform().apply(base_->center + side * base_->size * Point::Unit(axis)));
             }
         }
         return box;

@@ -52,7 +52,7 @@ TEST(ShapeSpec, SphereRoundTripsExactly) {
     EXPECT_EQ(back.medium, 4u);
 }
 
-TEST(ShapeSpec, BoxRoundTripsExactlyWithItsCentre) {
+TEST(ShapeSpec, BoxRoundTripsExactlyWithItsCenter) {
     ShapeSpec spec;
     spec.kind = ShapeKind::Box;
     spec.boxMin = Point(-1.5, 0.1, 2.0);

@@ -53,7 +53,7 @@ struct PanelSums {
     double area = 0.0;
 };
 
-PanelSums radialSums(const ImplicitFunction& f, const Point& centre, const Eigen::Vector3d& half,
+PanelSums radialSums(const ImplicitFunction& f, const Point& center, const Eigen::Vector3d& half,
                      const AffineTransform& transform, double band, int order) {
     const QuadratureRule rule = gaussLegendre(order);
     const double detH = half.prod();
@@ -74,7 +74,7 @@ PanelSums radialSums(const ImplicitFunction& f, const Point& centre, const Eigen
                     cube[i] = signS * rule.nodes[a];
                     cube[j] = signT * rule.nodes[b];
                     const Eigen::Vector3d u = half.cwiseProduct(cube);
-                    const RadialExit exit = radialExit(f, centre, u, 1.0, kRefineBands * band / u.norm());
+                    const RadialExit exit = radialExit(f, center, u, 1.0, kRefineBands * band / u.norm());
                     const double gradientNorm = exit.gradient.norm();
                     if (!(gradientNorm > 0.0)) continue;  // cannot happen on the surface of a convex f
                     const Eigen::Vector3d normal = exit.gradient / gradientNorm;
@@ -91,14 +91,14 @@ PanelSums radialSums(const ImplicitFunction& f, const Point& centre, const Eigen
 
 }  // namespace
 
-RadialExit radialExit(const ImplicitFunction& f, const Point& centre, const Eigen::Vector3d& u, double tOut,
+RadialExit radialExit(const ImplicitFunction& f, const Point& center, const Eigen::Vector3d& u, double tOut,
                       double tolerance) {
     double lo = 0.0;
     double hi = tOut;
     double t = tOut;
     RadialExit exit;
     for (int iteration = 0; iteration < kMaxRefineIterations; ++iteration) {
-        const Point r = centre + t * u;
+        const Point r = center + t * u;
         const double g = f.value(r);
         exit = {t, f.gradient(r)};
         if (g >= 0.0) {
@@ -119,11 +119,11 @@ RadialExit radialExit(const ImplicitFunction& f, const Point& centre, const Eige
     return exit;
 }
 
-BodyIntegrals convexBodyIntegrals(const ImplicitFunction& f, const Point& centre, const Eigen::AlignedBox3d& bounds,
+BodyIntegrals convexBodyIntegrals(const ImplicitFunction& f, const Point& center, const Eigen::AlignedBox3d& bounds,
                                   const AffineTransform& transform, double band, int order) {
-    const Eigen::Vector3d half = (centre - bounds.min()).cwiseMax(bounds.max() - centre);
-    const PanelSums coarse = radialSums(f, centre, half, transform, band, order);
-    const PanelSums fine = radialSums(f, centre, half, transform, band, 2 * order);
+    const Eigen::Vector3d half = (center - bounds.min()).cwiseMax(bounds.max() - center);
+    const PanelSums coarse = radialSums(f, center, half, transform, band, order);
+    const PanelSums fine = radialSums(f, center, half, transform, band, 2 * order);
     const auto estimate = [](double fineValue, double coarseValue) {
         return IntegralEstimate{fineValue, kConvexIntegralSafety * std::abs(fineValue - coarseValue) +
                                                kConvexIntegralFloor * std::abs(fineValue)};

@@ -20,7 +20,7 @@ struct RadialExit {
 // onto it, quadratically for a simple root; one step when f is a gauge minus 1 (g linear along the ray).
 // A bracket [lo, hi] guards rounding (bisection when Newton leaves it). Stops when the step or the
 // bracket is below `tolerance` (in t).
-RadialExit radialExit(const ImplicitFunction& f, const Point& centre, const Eigen::Vector3d& u, double tOut,
+RadialExit radialExit(const ImplicitFunction& f, const Point& center, const Eigen::Vector3d& u, double tOut,
                       double tolerance);
 
 // Volume and area of the convex body f <= 0 (base frame; the area also of its image under `transform`)
@@ -36,7 +36,7 @@ RadialExit radialExit(const ImplicitFunction& f, const Point& centre, const Eige
 // `order` and 2 `order` nodes per panel side: the finer values, error estimates
 // kConvexIntegralSafety * |I(2n) - I(n)| (ImplicitTolerance.hpp).
 // The volume is returned in the base frame (|det M| scales it exactly); the area is the placed one.
-BodyIntegrals convexBodyIntegrals(const ImplicitFunction& f, const Point& centre, const Eigen::AlignedBox3d& bounds,
+BodyIntegrals convexBodyIntegrals(const ImplicitFunction& f, const Point& center, const Eigen::AlignedBox3d& bounds,
                                   const AffineTransform& transform, double band, int order);
 
 }  // namespace dropscope

@@ -161,10 +161,10 @@ bool mayHoldSurface(const ImplicitFunction& f, const Eigen::AlignedBox3d& box) {
 
 std::array<Eigen::AlignedBox3d, 8> octants(const Eigen::AlignedBox3d& box) {
     std::array<Eigen::AlignedBox3d, 8> children;
-    const Point centre = box.center();
+    const Point center = box.center();
     for (std::size_t c = 0; c < 8; ++c) {
         const auto corner = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c));
-        children[c] = Eigen::AlignedBox3d(centre.cwiseMin(corner), centre.cwiseMax(corner));
+        children[c] = Eigen::AlignedBox3d(center.cwiseMin(corner), center.cwiseMax(corner));
     }
     return children;
 }
@@ -255,8 +255,8 @@ const std::vector<Eigen::AlignedBox3d>& ImplicitBase::surfaceCover() const {
 
 const BodyIntegrals& ImplicitBase::integrals() const {
     std::call_once(integralsOnce_, [this] {
-        if (const std::optional<Point> centre = function_->convexCentre()) {
-            integrals_ = convexBodyIntegrals(*function_, *centre, bounds_, AffineTransform(), band_,
+        if (const std::optional<Point> center = function_->convexCenter()) {
+            integrals_ = convexBodyIntegrals(*function_, *center, bounds_, AffineTransform(), band_,
                                              tolerance::implicit::kConvexIntegralOrder);
         } else {
             integrals_ = bodyIntegrals(*function_, AffineTransform(), bounds_, bounds_, band_,
@@ -305,10 +305,10 @@ ExtremeBounds maximumOverBody(const ImplicitFunction& f, const Eigen::AlignedBox
         queue.pop();
         for (const Eigen::AlignedBox3d& child : octants(cell.box)) {
             ++examined;
-            const Point centre = child.center();
-            const double value = f.value(centre);
+            const Point center = child.center();
+            const double value = f.value(center);
             if (std::abs(value) > f.lipschitzBound() * 0.5 * child.diagonal().norm()) continue;
-            if (value <= 0.0) lower = std::max(lower, ell.dot(centre));
+            if (value <= 0.0) lower = std::max(lower, ell.dot(center));
             const double upper = upperOf(child);
             if (upper > lower) queue.push({child, upper});
         }

@@ -35,7 +35,7 @@ public:
     // When f is a convex function (so the body is convex and f is convex along every line), a point
     // strictly inside the body; nothing otherwise. Convexity is what lets the volume, area and extremes
     // use the cheaper and more accurate routes of ConvexBody.hpp instead of Lipschitz line sweeps.
-    virtual std::optional<Point> convexCentre() const { return std::nullopt; }
+    virtual std::optional<Point> convexCenter() const { return std::nullopt; }
 
     // An axis-aligned box certainly containing the whole surface (and so the whole body).
     virtual Eigen::AlignedBox3d bounds() const = 0;

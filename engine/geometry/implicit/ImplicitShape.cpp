@@ -25,7 +25,7 @@ std::shared_ptr<const ImplicitBase> makeImplicitBase(std::shared_ptr<const Impli
 ImplicitShape::ImplicitShape(std::shared_ptr<const ImplicitBase> base, const AffineTransform& transform)
     : GeneralShape(transform), base_(std::move(base)), derived_(std::make_shared<Derived>()) {
     if (!base_) throw std::invalid_argument("implicit base must not be null");
-    convex_ = function().convexCentre().has_value();
+    convex_ = function().convexCenter().has_value();
     // The smallest feature scaled by the smallest singular value of M; coordinates from the placed bounds.
     const Eigen::AlignedBox3d placed = transform.applyToBox(base_->bounds());
     const double coordinates = std::max(placed.min().cwiseAbs().maxCoeff(), placed.max().cwiseAbs().maxCoeff());
@@ -71,8 +71,8 @@ IntegralEstimate ImplicitShape::areaEstimate() const {
         return {base.value * scale, base.errorEstimate * scale};
     }
     std::call_once(derived_->areaOnce, [this] {
-        if (const std::optional<Point> centre = function().convexCentre()) {
-            derived_->area = convexBodyIntegrals(function(), *centre, base_->bounds(), transform(), base_->band(),
+        if (const std::optional<Point> center = function().convexCenter()) {
+            derived_->area = convexBodyIntegrals(function(), *center, base_->bounds(), transform(), base_->band(),
                                                  kConvexIntegralOrder)
                                  .area;
             return;

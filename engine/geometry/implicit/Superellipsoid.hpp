@@ -29,7 +29,7 @@ public:
     double lipschitzAlong(const Eigen::Vector3d& direction) const override { return gauge(direction); }
     Eigen::AlignedBox3d bounds() const override { return {-semiAxes_, semiAxes_}; }
     // F is a norm (see Superellipsoid.cpp), hence convex; the centre is where it vanishes.
-    std::optional<Point> convexCentre() const override { return Point::Zero(); }
+    std::optional<Point> convexCenter() const override { return Point::Zero(); }
     double characteristicLength() const override { return semiAxes_.minCoeff(); }
     std::string_view presetName() const override { return "superellipsoid"; }
     std::vector<PresetParameter> presetParameters() const override;

@@ -145,10 +145,10 @@ CellPatch describeCellOn(const ParametricSurface& surface, const ParameterCell& 
     patch.corners = {at(0, 0), at(N - 1, 0), at(N - 1, N - 1), at(0, N - 1)};
 
     // The normal cone: around the centre's normal (or the mean where the centre is degenerate).
-    const auto centre = static_cast<std::size_t>((N / 2) * N + N / 2);
+    const auto center = static_cast<std::size_t>((N / 2) * N + N / 2);
     Eigen::Vector3d axis = Eigen::Vector3d::Zero();
-    if (regular[centre]) {
-        axis = normals[centre];
+    if (regular[center]) {
+        axis = normals[center];
     } else {
         for (std::size_t k = 0; k < normals.size(); ++k)
             if (regular[k]) axis += normals[k];
@@ -298,10 +298,10 @@ Direction ParametricBase::outwardNormal(double u, double v) const {
     if (!isDegenerate(j)) return Direction(orientation_ * j.ru.cross(j.rv));  // seed 000 eq. 1.71, outward
 
     // Elsewhere: a tiny step inside the domain, towards its centre.
-    const double uCentre = 0.5 * (domain_.u0 + domain_.u1);
-    const double vCentre = 0.5 * (domain_.v0 + domain_.v1);
-    const double su = w.x() <= uCentre ? 1.0 : -1.0;
-    const double sv = w.y() <= vCentre ? 1.0 : -1.0;
+    const double uCenter = 0.5 * (domain_.u0 + domain_.u1);
+    const double vCenter = 0.5 * (domain_.v0 + domain_.v1);
+    const double su = w.x() <= uCenter ? 1.0 : -1.0;
+    const double sv = w.y() <= vCenter ? 1.0 : -1.0;
     double step = tp::kDegenerateStep;
     for (int k = 0; k < tp::kDegenerateStepTries && isDegenerate(j); ++k, step *= 10.0) {
         j = surface_->jet(w.x() + su * step * (domain_.u1 - domain_.u0), w.y() + sv * step * (domain_.v1 - domain_.v0));

@@ -42,7 +42,7 @@ TEST(ConvexBody, CostDoesNotDependOnTheExponents) {
     }
 }
 
-TEST(ConvexBody, SphereAreaAndVolumeOffCentre) {
+TEST(ConvexBody, SphereAreaAndVolumeOffCenter) {
     // The centre need not be the middle of the bounds: a unit sphere seen from an off-centre point.
     const Superellipsoid f(Eigen::Vector3d(1.0, 1.0, 1.0), Eigen::Vector2d(1.0, 1.0));
     const Eigen::AlignedBox3d bounds(Eigen::Vector3d::Constant(-1.01), Eigen::Vector3d::Constant(1.01));

@@ -99,12 +99,12 @@ TEST(ConvexRay, AgreesWithTheLipschitzStepperOnRandomRays) {
             shape < 6 ? fixed[shape] : Eigen::Vector2d(uniform(rng, 0.1, 2.0), uniform(rng, 0.1, 2.0));
         const Eigen::Vector3d semiAxes(uniform(rng, 0.4, 1.2), uniform(rng, 0.4, 1.2), uniform(rng, 0.4, 1.2));
         Placed s = place(semiAxes, exponents, placement(rng, shape % 2 == 1));
-        const Point centre = s.convex.transform().translation();
+        const Point center = s.convex.transform().translation();
         const double size = s.convex.transform().applyToBox(s.f->bounds()).diagonal().norm() / 2.0;
         for (int i = 0; i < 250; ++i) {
             const std::string where = "shape " + std::to_string(shape) + " ray " + std::to_string(i);
-            const Point p = randomPoint(rng, size, centre);
-            const Direction d = i % 2 ? randomDirection(rng) : Direction(randomPoint(rng, 0.3 * size, centre) - p);
+            const Point p = randomPoint(rng, size, center);
+            const Direction d = i % 2 ? randomDirection(rng) : Direction(randomPoint(rng, 0.3 * size, center) - p);
             ASSERT_EQ(s.convex.locatePoint(p), s.lipschitz.locatePoint(p)) << where;
             expectAgreement(s, p, d, where + " (free point)", worstBands);
             const double t = s.lipschitz.distanceToSurface(p, d);

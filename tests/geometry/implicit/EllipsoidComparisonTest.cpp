@@ -49,15 +49,15 @@ TEST(EllipsoidComparison, DistancesFromInsideOutsideAndOnTheSurfaceAgree) {
     for (int placement = 0; placement < kPlacements; ++placement) {
         Rng rng(100 + static_cast<unsigned>(placement));
         const Pair pair = makePair(ellipsoidBase(), kSemiAxes, rng);
-        const Point centre = pair.reference.center();
+        const Point center = pair.reference.center();
         const double size = pair.reference.semiAxes().maxCoeff();
         const double tol = 20.0 * pair.shape.surfaceBand();
         for (int i = 0; i < kRaysPerPlacement; ++i) {
             const std::string where = "placement " + std::to_string(placement) + " ray " + std::to_string(i);
             // Outside and inside (or near) points alike: a box of twice the size around the centre;
             // every other ray aimed near the centre, so that about half the rays hit.
-            const Point p = randomPoint(rng, 2.0 * size, centre);
-            const Direction d = i % 2 == 0 ? randomDirection(rng) : Direction(randomPoint(rng, 0.3 * size, centre) - p);
+            const Point p = randomPoint(rng, 2.0 * size, center);
+            const Direction d = i % 2 == 0 ? randomDirection(rng) : Direction(randomPoint(rng, 0.3 * size, center) - p);
             ASSERT_EQ(pair.reference.locatePoint(p), pair.shape.locatePoint(p)) << where;
             expectSameDistance(pair.reference, pair.shape, p, d, tol, where + " (free point)");
             const double t = pair.reference.distanceToSurface(p, d);

@@ -56,7 +56,7 @@ public:
     }
     double lipschitzBound() const override { return f_->lipschitzBound(); }
     double lipschitzAlong(const Eigen::Vector3d& d) const override { return f_->lipschitzAlong(d); }
-    std::optional<Point> convexCentre() const override { return convex_ ? f_->convexCentre() : std::nullopt; }
+    std::optional<Point> convexCenter() const override { return convex_ ? f_->convexCenter() : std::nullopt; }
     Eigen::AlignedBox3d bounds() const override { return f_->bounds(); }
     double characteristicLength() const override { return f_->characteristicLength(); }
     std::string_view presetName() const override { return f_->presetName(); }

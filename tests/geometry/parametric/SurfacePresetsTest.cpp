@@ -91,8 +91,8 @@ TEST(TorusSurface, PointsLieOnTheTorusAndNormalsPointOutward) {
         const double rho = std::hypot(j.r.x(), j.r.y());
         EXPECT_NEAR(std::hypot(rho - major, j.r.z()), minor, 1e-15) << "case " << i;
         // Outward: away from the tube's centre circle.
-        const Point centre(major * j.r.x() / rho, major * j.r.y() / rho, 0.0);
-        EXPECT_NEAR(Direction(j.ru.cross(j.rv)).dot(Direction(j.r - centre)), 1.0, 1e-13) << "case " << i;
+        const Point center(major * j.r.x() / rho, major * j.r.y() / rho, 0.0);
+        EXPECT_NEAR(Direction(j.ru.cross(j.rv)).dot(Direction(j.r - center)), 1.0, 1e-13) << "case " << i;
     }
     EXPECT_TRUE(surface->periodicInU() && surface->periodicInV());
     EXPECT_NEAR((surface->point(0.0, 0.3) - surface->point(2.0 * kPi, 0.3)).norm(), 0.0, 1e-15);
