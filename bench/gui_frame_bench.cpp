@@ -1,4 +1,4 @@
-// Frame time of the interactive app (issue 6): the real App, headless through OSMesa (llvmpipe) at
+// Frame time of the interactive app: the real App, headless through OSMesa (llvmpipe) at
 // 1280x800, on a cloud of 1e4 water droplets with 1e3 recorded photon paths, every panel open and the
 // cursor over the 3D view (so each frame also picks the shape under it through the octree for the
 // tooltip). A frame is App::frame followed by glFinish. Measured, interleaved so that load drift reaches

@@ -1,4 +1,4 @@
-// Frame time of the OpenGL renderer on llvmpipe (issue 5): a cloud of 1e5 water droplets drawn as
+// Frame time of the OpenGL renderer on llvmpipe: a cloud of 1e5 water droplets drawn as
 // instanced impostors, about 1e4 photon path segments and the octree's cells at one level, headless
 // through OSMesa at 1280x800. A frame is Renderer::draw followed by glFinish; median and minimum over
 // many frames after a warm-up, for the whole scene, the shapes alone, the lines alone and a cleared frame

@@ -1,4 +1,4 @@
-// Photon transport through a cloud of 1e5 water droplets (issue 4): photons per second with 1 and 2
+// Photon transport through a cloud of 1e5 water droplets: photons per second with 1 and 2
 // threads, and what one photon costs. The reference, measured in the same run, is Octree::firstHit
 // alone on the photons' own segments (the emission and every interface event of recorded photons,
 // replayed in order), which splits the time per photon into the octree search and the rest (surface

@@ -14,7 +14,7 @@ namespace dropscope {
 
 namespace {
 
-// Seed A.2: the singular values say what M is made of. Rotations and reflections have all singular
+// Seed 000 section A.2: the singular values say what M is made of. Rotations and reflections have all singular
 // values 1; a uniform scaling K multiplies them all by K; anything else spreads them apart.
 TransformClass classify(const Eigen::Matrix3d& m) {
     TransformClass result;

@@ -7,7 +7,7 @@
 
 namespace dropscope {
 
-// What the SVD M = U S V^T (seed 000 A.2) says M is made of.
+// What the SVD M = U S V^T (seed 000 section A.2) says M is made of.
 struct TransformClass {
     Eigen::Vector3d singularValues;  // descending
     double determinant = 1.0;

@@ -55,8 +55,9 @@ bool Box::sameFormAs(const Shape& other) const {
     return (a - b).cwiseAbs().maxCoeff() <= tolerance::kMovedEdgeRelative * a.maxCoeff();
 }
 
-// Distance to the nearest face plane the ray leaves through (seed eq. 1.1); from inside the box
-// the exit point is on the box, so the bound checks 1.2-1.3 hold by construction.
+// Distance to the nearest face plane the ray leaves through (seed eq. 1.1, its sign corrected:
+// docs/geometry.md); from inside the box the exit point is on the box, so the bound checks 1.2-1.3 hold
+// by construction.
 double Box::exitDistance(const Point& p, const Direction& d) const {
     double exit = kInfinity;
     for (int i = 0; i < 3; ++i) {

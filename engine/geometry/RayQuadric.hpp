@@ -17,7 +17,7 @@ struct RayQuadratic {
     double discriminant;
 };
 
-// The seed's distance semantics (1.2.7, 1.3.7) applied to the roots of a RayQuadratic, given where
+// The seed's distance semantics (seed 000 ch. 1 item 7) applied to the roots of a RayQuadratic, given where
 // the ray starts. `chordBand` is the surface band in length units: a chord no longer than it is a
 // tangent touch (outside: NaN; on the surface: 0), so a hit point never re-hits its own surface at ~0.
 // Inline: it sits on the octree's innermost loop.

@@ -54,7 +54,7 @@ public:
     // it is placed. The medium is not compared.
     virtual bool sameFormAs(const Shape& other) const = 0;
 
-    // The seed's distance semantics (1.1.7, 1.2.7, 1.3.7):
+    // The seed's distance semantics (seed 000 ch. 1 item 7; docs/geometry.md):
     //  inside          -> the positive root;
     //  on the surface  -> 0 when the ray leaves (or is tangent), the distance to the far side when it enters;
     //  outside         -> NaN when the ray never enters (misses, or only touches), else the nearest root.

@@ -10,7 +10,7 @@ struct FresnelReflectance {
     double unpolarised() const { return 0.5 * (s + p); }
 };
 
-// The exact Fresnel equations (seed 003 2.2.4).
+// The exact Fresnel equations for real indices (Born and Wolf, Principles of Optics, 1.5; docs/optics.md).
 FresnelReflectance fresnelReflectance(double cosIncidence, double n1, double n2);
 
 // Schlick's approximation R0 + (1 - R0)(1 - cos)^5, with the cosine taken on the optically thinner

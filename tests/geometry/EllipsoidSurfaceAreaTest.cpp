@@ -28,7 +28,7 @@ double seedOctantIntegral(double a, double b, double c) {
     return 8.0 * a * b * c * Quadrature::integrate(inner, 0.0, kPi / 2, 10, 1e-14);
 }
 
-// Seed eq. 1.30 (Legendre form), valid for a > b > c.
+// Seed eq. 1.30 (Legendre form), valid for a >= b >= c with a > c.
 double seedLegendreForm(double a, double b, double c) {
     const double delta = 1.0 - c * c / (a * a);    // eq. 1.31
     const double epsilon = 1.0 - c * c / (b * b);  // eq. 1.32

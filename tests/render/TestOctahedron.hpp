@@ -14,10 +14,10 @@
 namespace dropscope::test {
 
 // A test-local GeneralShape with an exactly known surface: the octahedron |x - c| + |y - c| + |z - c| =
-// size about a base centre c (default 0) in its base frame, placed by an AffineTransform. Its mesh is exact (8 flat faces, each with its own three
-// corners and the face normal), so a pixel is covered exactly when the eye ray through its centre meets
-// the solid, which distanceToSurface answers exactly (clipping the ray by the 8 face planes). The Shape
-// members the render and GUI tests do not look at closely are simple stand-ins.
+// size about a base centre c (default 0) in its base frame, placed by an AffineTransform. Its mesh is exact (8 flat
+// faces, each with its own three corners and the face normal), so a pixel is covered exactly when the eye ray through
+// its centre meets the solid, which distanceToSurface answers exactly (clipping the ray by the 8 face planes). The
+// Shape members the render and GUI tests do not look at closely are simple stand-ins.
 class TestOctahedron final : public GeneralShape {
 public:
     explicit TestOctahedron(double size, const AffineTransform& transform = AffineTransform(),

@@ -22,7 +22,7 @@ const std::string kSourceDir = DROPSCOPE_SOURCE_DIR;
 // agree with the closed forms far more closely (see the parametric and implicit suites).
 constexpr double kNumericRelative = 1e-8;
 
-TEST(GeneralShapeReader, ReadsTheIssueExample) {
+TEST(GeneralShapeReader, ReadsTheFormatExample) {
     const Scene scene = parseScene(sceneWithShapes(R"({"type": "parametric", "preset": "sphere", "radius": 1,
         "transform": {"scale": [2, 1, 1], "translation": [0, 0, 5]}, "medium": "water"})"),
                                    "scene.json");

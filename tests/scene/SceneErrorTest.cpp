@@ -27,9 +27,9 @@ std::string loadError(const std::string& file) {
     return "no error";
 }
 
-// The example of issue 2, verbatim: it uses "glass" without defining it.
-TEST(SceneError, IssueExampleNamesTheUndefinedGlass) {
-    const char* issueExample = R"({ "dropscope": 1, "unit": "mm", "wavelength_nm": 532, "ambient": "air",
+// The scene format's example with one mistake: it uses "glass" without defining it.
+TEST(SceneError, FormatExampleNamesTheUndefinedGlass) {
+    const char* formatExample = R"({ "dropscope": 1, "unit": "mm", "wavelength_nm": 532, "ambient": "air",
   "media":  { "air": {"n": 1.0}, "water": {"n": 1.333, "kappa": 1e-9}, "ink": {"n": 1.0, "sigma": 0.5} },
   "shapes": [ {"type": "sphere", "center": [0,0,0], "radius": 1, "medium": "water", "name": "d1"},
               {"type": "ellipsoid", "center": [3,0,0], "semi_axes": [1.5,1,0.5],
@@ -37,7 +37,7 @@ TEST(SceneError, IssueExampleNamesTheUndefinedGlass) {
               {"type": "ellipsoid", "center": [0,3,0], "matrix": [[1,0,0],[0,2,0],[0,0,3]], "medium": "water"},
               {"type": "box", "min": [-5,-5,-5], "max": [5,5,-4], "medium": "glass"} ],
   "sources": [ {"type": "beam", "origin": [0,0,-10], "direction": [0,0,1], "radius": 1} ] })";
-    EXPECT_EQ(sceneErrorOf(issueExample),
+    EXPECT_EQ(sceneErrorOf(formatExample),
               R"(scene.json: shapes[3].medium: unknown medium "glass" (defined: air, water, ink))");
 }
 

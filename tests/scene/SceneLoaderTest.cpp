@@ -18,8 +18,8 @@ using test::sceneWithShapes;
 const std::string kDataDir = DROPSCOPE_TEST_DATA_DIR;
 const std::string kSourceDir = DROPSCOPE_SOURCE_DIR;
 
-TEST(SceneLoader, LoadsTheIssueExampleWithGlassDefined) {
-    const Scene scene = loadScene(kDataDir + "/scenes/issue_example.json");
+TEST(SceneLoader, LoadsTheFormatExampleWithGlassDefined) {
+    const Scene scene = loadScene(kDataDir + "/scenes/format_example.json");
     EXPECT_EQ(scene.formatVersion, 1);
     EXPECT_EQ(scene.unit, "mm");
     EXPECT_EQ(scene.unitInMetres, 1e-3);
@@ -63,7 +63,7 @@ TEST(SceneLoader, LoadsTheIssueExampleWithGlassDefined) {
     EXPECT_EQ(scene.sources[0].origin, Point(0, 0, -10));
     EXPECT_EQ(scene.sources[0].direction.vector(), Eigen::Vector3d(0, 0, 1));
     EXPECT_EQ(scene.sources[0].radius, 1.0);
-    EXPECT_EQ(scene.origin, kDataDir + "/scenes/issue_example.json");
+    EXPECT_EQ(scene.origin, kDataDir + "/scenes/format_example.json");
 }
 
 TEST(SceneLoader, RotatedEllipsoidHasItsSemiAxesAlongTheRotatedAxes) {
@@ -179,7 +179,7 @@ TEST(SceneLoader, ReadsEverySourceType) {
 }
 
 TEST(SceneLoader, FindMediumByName) {
-    const Scene scene = loadScene(kDataDir + "/scenes/issue_example.json");
+    const Scene scene = loadScene(kDataDir + "/scenes/format_example.json");
     EXPECT_EQ(scene.findMedium("ink"), MediumId{2});
     EXPECT_FALSE(scene.findMedium("glas"));
 }

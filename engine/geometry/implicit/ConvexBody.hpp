@@ -30,7 +30,7 @@ RadialExit radialExit(const ImplicitFunction& f, const Point& center, const Eige
 // per quadrant, H = diag). With lambda(s, t) the exit parameter and n the unit normal there:
 //   dV = lambda^3 det H / 3 ds dt                 (the cone from the centre: Jacobian lambda'^2 det[u, u_s, u_t])
 //   dA = lambda^2 det H / (u . n) ds dt           (dV = (r - C) . n dA / 3 with r - C = lambda u)
-//   placed dA' = |det M| |M^-T n| dA              (seed 000 Appendix A: the image of a surface element).
+//   placed dA' = |det M| |M^-T n| dA              (Nanson's formula; docs/general-shapes.md).
 // The panel edges are where the superellipsoids' rounded edges and non-smooth planes lie, so the
 // integrands are smooth inside each panel and tensor Gauss-Legendre converges fast. Computed with
 // `order` and 2 `order` nodes per panel side: the finer values, error estimates

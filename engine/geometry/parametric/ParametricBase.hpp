@@ -65,8 +65,8 @@ struct CellPatch {
     double slabHigh = std::numeric_limits<double>::infinity();
 };
 
-// A node of the tree over the parameter domain (a quadtree, but a cell next to a pole splits in one direction): leaves are the base's cells; an inner node's box is the
-// union of its children's.
+// A node of the tree over the parameter domain (a quadtree, but a cell next to a pole splits in one direction): leaves
+// are the base's cells; an inner node's box is the union of its children's.
 struct CellNode {
     CellPatch patch;
     CurvatureBound curvature;      // sampled over this node's cell; sub-cells below a leaf reuse it
@@ -89,7 +89,7 @@ CellPatch describeSubCell(const ParametricSurface& surface, const ParameterCell&
 // pole, where the direction of eq. 1.71 is undefined (or lost to rounding).
 bool isDegenerate(const SurfaceJet& jet);
 
-// Everything shapes on one surface share (seed 000 1.4: "a shared pointer to a common base shape"), computed
+// Everything shapes on one surface share (the shared base of seed 000 1.4), computed
 // once by makeParametricBase: the cell tree, orientation, area, signed volume, extremes, mesh and cover.
 class ParametricBase {
 public:

@@ -55,9 +55,9 @@ Bounds searchRegion(const ParametricBase& base, const ParameterCell& cell) {
 }
 
 // Newton on 1/2 |p - M r(u, v) - r0|^2 (eqs. 1.74, 1.75) with Levenberg-Marquardt damping, projected onto the
-// region (an active-set projected Newton). The full Hessian J^T J - sum_k R_k H_k (H_k of seed 1.4, through M) rather than Gauss-Newton's
-// J^T J: far from the surface (p near a sphere's centre) the residual is as large as the curvature radius and
-// Gauss-Newton would crawl.
+// region (an active-set projected Newton). The full Hessian J^T J - sum_k R_k H_k (H_k of seed 1.4, through M) rather
+// than Gauss-Newton's J^T J: far from the surface (p near a sphere's centre) the residual is as large as the curvature
+// radius and Gauss-Newton would crawl.
 SurfaceProjection leastSquares(const ParametricBase& base, const AffineTransform& transform, const Point& p,
                                const ParameterCell& cell) {
     const Bounds region = searchRegion(base, cell);

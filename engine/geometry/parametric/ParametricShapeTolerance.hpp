@@ -123,8 +123,9 @@ inline constexpr double kParityMinCosine = 1e-3;
 // Newton / Levenberg-Marquardt for the closest point (eqs. 1.74, 1.75): iterations, damping, and the relative
 // step (in units of the cell) below which it has converged.
 // 80 iterations: ~6 near a regular minimum, ~35 to approach a minimum 1e-6 from a pole by halving steps (the
-// square-root parametrisation of the ellipsoid preset). The damping (relative to |M r_u|^2 + |M r_v|^2) shrinks tenfold after a successful step, grows tenfold after a
-// failed one, and the run stops when it would exceed kClosestPointMaxDamping (steps ~1e-12 of a gradient step).
+// square-root parametrisation of the ellipsoid preset). The damping (relative to |M r_u|^2 + |M r_v|^2) shrinks tenfold
+// after a successful step, grows tenfold after a failed one, and the run stops when it would exceed
+// kClosestPointMaxDamping (steps ~1e-12 of a gradient step).
 inline constexpr int kClosestPointMaxIterations = 80;
 inline constexpr double kClosestPointInitialDamping = 1e-6;
 inline constexpr double kClosestPointMaxDamping = 1e12;
