@@ -59,7 +59,6 @@ void ViewportScene::rebuild(AppState& state) {
         }
     }
     render::uploadScene(renderer_, octree.shapes(), layers_, options);
-    shapesDrawn_ = octree.shapeCount();
     ++rebuilds_;
     state.drawnRevision = document.revision();
     state.viewDirty = false;

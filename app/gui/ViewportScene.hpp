@@ -16,7 +16,6 @@ public:
 
     // What the last rebuild handed to the renderer, for the UI tests.
     const render::SceneLayers& layers() const { return layers_; }
-    std::size_t shapesDrawn() const { return shapesDrawn_; }
     std::uint64_t rebuilds() const { return rebuilds_; }
 
 private:
@@ -25,7 +24,6 @@ private:
     render::Renderer renderer_;
     render::SceneLayers layers_{render::LineBatch(render::Anchor{}), {}};
     Eigen::AlignedBox3d bounds_;
-    std::size_t shapesDrawn_ = 0;
     std::uint64_t rebuilds_ = 0;
 };
 
