@@ -27,7 +27,6 @@ std::string shapeLabel(const SceneDocument& document, ShapeId id) {
 void forgetTraces(AppState& state) {
     state.trace.reset();
     state.rayTree.reset();
-    state.rayTreeRay.reset();
     state.traversal.reset();
     state.selectedPath = -1;
     state.selectedEvent = 0;
@@ -83,7 +82,6 @@ namespace {
 
 void startTrace(AppState& state, bool automatic) {
     state.firedRevision = state.document->revision();
-    state.retraceWanted = false;
     if (state.document->sources().empty()) return state.refuse("nothing to fire: add a source first (Fire panel)");
     TraceSettings settings;
     settings.photons = std::max<std::uint64_t>(state.fire.photons, 1);
@@ -106,7 +104,6 @@ void traceRayTree(AppState& state, bool automatic) {
         const OpticalScene optical(state.document->toScene());
         const Ray ray{source.origin, source.direction};
         state.rayTree = traceRayTree(optical, ray, 1.0, RayTreeSettings{});
-        state.rayTreeRay = ray;
         state.layers.rayTree = true;
         state.viewDirty = true;
         if (!automatic) {

@@ -85,7 +85,6 @@ struct AppState {
     render::LayerOptions layers;
     SliceSettings slice;
     ShapeId selected = RayHit::kNone;
-    ShapeId hovered = RayHit::kNone;
 
     bool placementMode = false;
     double placementRadius = 0.25;
@@ -95,12 +94,10 @@ struct AppState {
     std::size_t selectedSource = 0;
     FireSettings fire;
     TraceJob job;
-    bool retraceWanted = false;         // the scene changed under a shown trace
     std::vector<ShapeId> pendingSlots;  // slotOfShape of the run in progress
     std::uint64_t firedRevision = 0;    // the document revision the last run traced
     std::optional<TraceShown> trace;    // the last finished Monte Carlo run
     std::optional<RayTree> rayTree;     // the last ray fired as a tree
-    std::optional<Ray> rayTreeRay;
     std::uint64_t rayTreeRevision = 0;
     bool automaticTrace = false;  // the run in progress was started by "live", not the user
 

@@ -42,10 +42,7 @@ void ViewportControls::handle(AppState& state) {
     const int width = static_cast<int>(io.DisplaySize.x);
     const int height = static_cast<int>(io.DisplaySize.y);
     const bool mouseValid = ImGui::IsMousePosValid(&io.MousePos) && width > 0 && height > 0;
-    if (!mouseValid) {
-        state.hovered = RayHit::kNone;
-        return;
-    }
+    if (!mouseValid) return;
     const Ray ray = cameraRay(state.camera, io.MousePos.x, io.MousePos.y, width, height);
     const bool mine = !io.WantCaptureMouse || drag_ != Drag::None;
 
@@ -70,8 +67,6 @@ void ViewportControls::handle(AppState& state) {
     if (mine) {
         hover(state, ray);
         if (!io.WantTextInput && state.prompt == FilePrompt::None) sourceKeys(state, ray);
-    } else {
-        state.hovered = RayHit::kNone;
     }
 }
 
@@ -180,8 +175,6 @@ void ViewportControls::click(AppState& state, const Ray& ray) {
 
 void ViewportControls::hover(AppState& state, const Ray& ray) {
     if (drag_ == Drag::Orbit || drag_ == Drag::Pan) return;
-    const auto pick = pickShape(state, ray);
-    state.hovered = pick ? pick->shape : RayHit::kNone;
     if (state.placementMode) {
         const auto centre = placementCentre(state, ray);
         ImGui::BeginTooltip();
@@ -200,7 +193,7 @@ void ViewportControls::hover(AppState& state, const Ray& ray) {
         ImGui::EndTooltip();
         return;
     }
-    if (pick) ImGui::SetTooltip("%s", describe(state, pick->shape, "\n").c_str());
+    if (const auto pick = pickShape(state, ray)) ImGui::SetTooltip("%s", describe(state, pick->shape, "\n").c_str());
 }
 
 void ViewportControls::sourceKeys(AppState& state, const Ray& ray) {
