@@ -25,6 +25,7 @@ std::string shapeLabel(const SceneDocument& document, ShapeId id) {
 }
 
 void forgetTraces(AppState& state) {
+    if (state.trace || state.rayTree) ++state.shownTraces;
     state.trace.reset();
     state.rayTree.reset();
     state.traversal.reset();
@@ -104,8 +105,8 @@ void traceRayTree(AppState& state, bool automatic) {
         const OpticalScene optical(state.document->toScene());
         const Ray ray{source.origin, source.direction};
         state.rayTree = traceRayTree(optical, ray, 1.0, RayTreeSettings{});
+        ++state.shownTraces;
         state.layers.rayTree = true;
-        state.viewDirty = true;
         if (!automatic) {
             state.say("ray tree: " + std::to_string(state.rayTree->nodes.size()) + " events, " +
                       std::to_string(state.rayTree->absorbed) + " absorbed");
@@ -138,9 +139,9 @@ void updateTraces(AppState& state) {
             text << (outcome->result.partial ? "trace stopped: " : "traced ") << tally.photons << " photons in "
                  << std::fixed << std::setprecision(2) << outcome->result.seconds << " s";
             state.trace = TraceShown{std::move(*outcome), std::move(state.pendingSlots), nullptr};
+            ++state.shownTraces;
             const auto paths = static_cast<int>(state.trace->outcome.result.paths.size());
             selectEvent(state, state.selectedPath < paths ? state.selectedPath : -1, state.selectedEvent);
-            state.viewDirty = true;
             if (!state.automaticTrace) state.say(text.str());
         }
     }
@@ -159,7 +160,6 @@ MediumId firstDropletMedium(const SceneDocument& document) {
 
 void selectEvent(AppState& state, int path, int event) {
     state.traversal.reset();
-    state.viewDirty = true;
     if (!state.trace || path < 0 || path >= static_cast<int>(state.trace->outcome.result.paths.size())) {
         state.selectedPath = -1;
         return;
@@ -194,6 +194,7 @@ bool openScene(AppState& state, const std::filesystem::path& file) {
         auto document = std::make_unique<SceneDocument>(loadScene(file));
         state.job.discard();  // a run of the old scene must not arrive as this one's
         state.document = std::move(document);
+        ++state.opened;
         state.scenePath = file;
         state.selected = RayHit::kNone;
         state.selectedSource = 0;
@@ -201,7 +202,6 @@ bool openScene(AppState& state, const std::filesystem::path& file) {
         forgetTraces(state);
         state.fitRequested = !state.document->view();
         if (const auto& view = state.document->view()) state.camera = render::Camera::fromView(*view);
-        state.viewDirty = true;
         state.say("opened " + file.string() + ": " + std::to_string(state.document->shapeCount()) + " shapes");
         return true;
     } catch (const std::exception& error) {

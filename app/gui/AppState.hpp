@@ -38,6 +38,8 @@ struct SliceSettings {
     int axis = 2;
     double offset = 0.0;
     bool flip = false;
+
+    bool operator==(const SliceSettings&) const = default;
 };
 
 // What the fire controls start: N Monte Carlo photons, of which the first `paths` are recorded.
@@ -78,6 +80,7 @@ struct ItemRect {
 // Everything the panels read and change. The App owns one; panels get it by reference.
 struct AppState {
     std::unique_ptr<SceneDocument> document;
+    std::uint64_t opened = 0;         // scenes opened since the first: tells one document from the next
     std::filesystem::path scenePath;  // where Save writes; empty for a new scene
 
     render::Camera camera;
@@ -99,6 +102,8 @@ struct AppState {
     std::optional<TraceShown> trace;    // the last finished Monte Carlo run
     std::optional<RayTree> rayTree;     // the last ray fired as a tree
     std::uint64_t rayTreeRevision = 0;
+    // Which results are shown: moves on whenever `trace` or `rayTree` is replaced or dropped.
+    std::uint64_t shownTraces = 0;
     bool automaticTrace = false;  // the run in progress was started by "live", not the user
 
     int selectedPath = -1;                          // index into trace->outcome.result.paths
@@ -117,9 +122,7 @@ struct AppState {
     // to type into them, as a user would, without depending on the panel's layout.
     std::map<std::string, ItemRect> itemRects;
 
-    Eigen::AlignedBox3d sceneBounds;                  // of the shapes, as last drawn (render::sceneBounds)
-    std::uint64_t drawnRevision = ~std::uint64_t{0};  // the document revision the view was built from
-    bool viewDirty = true;                            // something drawn changed: rebuild the layers
+    Eigen::AlignedBox3d sceneBounds;  // of the shapes, as last drawn (render::sceneBounds)
 
     void say(std::string text) { status = {std::move(text), false}; }
     void refuse(std::string text) { status = {std::move(text), true}; }

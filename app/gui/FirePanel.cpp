@@ -69,7 +69,6 @@ void sourceEditor(AppState& state) {
     if (changed) {
         try {
             state.document->setSources(std::move(sources));
-            state.viewDirty = true;
         } catch (const std::exception& error) {
             state.refuse(std::string("source not changed: ") + error.what());
         }

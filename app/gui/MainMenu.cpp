@@ -30,17 +30,15 @@ void drawMainMenu(AppState& state) {
     }
     if (ImGui::BeginMenu("View")) {
         if (ImGui::MenuItem("Fit to scene", "F")) state.fitRequested = true;
-        bool changed = false;
-        changed |= ImGui::MenuItem("Octree cells", "C", &state.layers.octree);
-        changed |= ImGui::MenuItem("Slice plane", "L", &state.slice.enabled);
-        changed |= ImGui::MenuItem("Sources", nullptr, &state.layers.sources);
-        changed |= ImGui::MenuItem("Paths", nullptr, &state.layers.paths);
-        changed |= ImGui::MenuItem("Ray tree", nullptr, &state.layers.rayTree);
-        changed |= ImGui::MenuItem("Event markers", nullptr, &state.layers.markers);
-        changed |= ImGui::MenuItem("Axes", nullptr, &state.layers.axes);
-        changed |= ImGui::MenuItem("Grid", nullptr, &state.layers.grid);
-        changed |= ImGui::MenuItem("Translucent shapes", nullptr, &state.layers.render.translucent);
-        state.viewDirty |= changed;
+        ImGui::MenuItem("Octree cells", "C", &state.layers.octree);
+        ImGui::MenuItem("Slice plane", "L", &state.slice.enabled);
+        ImGui::MenuItem("Sources", nullptr, &state.layers.sources);
+        ImGui::MenuItem("Paths", nullptr, &state.layers.paths);
+        ImGui::MenuItem("Ray tree", nullptr, &state.layers.rayTree);
+        ImGui::MenuItem("Event markers", nullptr, &state.layers.markers);
+        ImGui::MenuItem("Axes", nullptr, &state.layers.axes);
+        ImGui::MenuItem("Grid", nullptr, &state.layers.grid);
+        ImGui::MenuItem("Translucent shapes", nullptr, &state.layers.render.translucent);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {

@@ -52,7 +52,7 @@ void traversalList(AppState& state) {
         return;
     }
     const TraversalRecord& record = state.traversal->record;
-    if (ImGui::Checkbox("draw the traversal", &state.layers.traversal)) state.viewDirty = true;
+    ImGui::Checkbox("draw the traversal", &state.layers.traversal);
     // The traversal ran in the traced scene, whose ids are compact; the panel shows the document's.
     const auto& slots = state.trace->slotOfShape;
     const auto slot = [&](ShapeId id) { return id < slots.size() ? slots[id] : id; };
@@ -82,7 +82,7 @@ void drawOctreePanel(AppState& state) {
     const std::vector<LevelStatistics>& statistics = levelStatistics(*state.document);
     const int deepest = std::max(0, static_cast<int>(statistics.size()) - 1);
     render::OctreeFilter& filter = state.layers.octreeFilter;
-    const bool toggled = ImGui::Checkbox("show cells (C)", &state.layers.octree);
+    ImGui::Checkbox("show cells (C)", &state.layers.octree);
     bool changed = ImGui::SliderInt("depth ([ ])", &filter.level, 0, deepest);
     int mode = filter.mode == render::OctreeFilter::Mode::UpToLevel    ? 1
                : filter.mode == render::OctreeFilter::Mode::LeavesOnly ? 2
@@ -97,7 +97,6 @@ void drawOctreePanel(AppState& state) {
                               : render::OctreeFilter::Mode::OnlyLevel;
     changed |= ImGui::Checkbox("occupancy colour", &filter.occupancyColour);
     if (changed) state.layers.octree = true;  // moving a filter means: show me
-    state.viewDirty |= toggled || changed;
     statisticsTable(statistics);
     ImGui::Separator();
     traversalList(state);

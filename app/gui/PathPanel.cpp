@@ -89,16 +89,14 @@ void drawPathPanel(AppState& state) {
         ImGui::End();
         return;
     }
-    bool changed = ImGui::Checkbox("paths", &state.layers.paths);
+    ImGui::Checkbox("paths", &state.layers.paths);
     ImGui::SameLine();
-    changed |= ImGui::Checkbox("markers", &state.layers.markers);
+    ImGui::Checkbox("markers", &state.layers.markers);
     ImGui::SameLine();
     bool byEvent = state.layers.pathColouring == render::PathColouring::Event;
     if (ImGui::Checkbox("colour by event", &byEvent)) {
         state.layers.pathColouring = byEvent ? render::PathColouring::Event : render::PathColouring::Weight;
-        changed = true;
     }
-    state.viewDirty |= changed;
     if (!state.trace || state.trace->outcome.result.paths.empty()) {
         ImGui::TextDisabled("fire photons (Space) with 'paths kept' > 0 to inspect them here");
         ImGui::End();

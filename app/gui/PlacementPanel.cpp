@@ -27,11 +27,10 @@ void drawPlacementPanel(AppState& state) {
     ImGui::Combo("plane normal", &state.placementPlane.axis, kAxes, 3);
     ImGui::InputDouble("plane at", &state.placementPlane.offset, 0.1, 1.0, "%.4g");
     ImGui::Separator();
-    bool changed = ImGui::Checkbox("slice plane (L)", &state.slice.enabled);
-    changed |= ImGui::Combo("slice normal", &state.slice.axis, kAxes, 3);
-    changed |= ImGui::DragScalar("slice at", ImGuiDataType_Double, &state.slice.offset, 0.01f);
-    changed |= ImGui::Checkbox("keep the other side", &state.slice.flip);
-    state.viewDirty |= changed;
+    ImGui::Checkbox("slice plane (L)", &state.slice.enabled);
+    ImGui::Combo("slice normal", &state.slice.axis, kAxes, 3);
+    ImGui::DragScalar("slice at", ImGuiDataType_Double, &state.slice.offset, 0.01f);
+    ImGui::Checkbox("keep the other side", &state.slice.flip);
     ImGui::End();
 }
 

@@ -40,10 +40,7 @@ void shapeList(AppState& state) {
         for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
             const ShapeId id = shown[static_cast<std::size_t>(row)];
             const std::string label = listLabel(document, id, *octree.shape(id));
-            if (ImGui::Selectable(label.c_str(), id == state.selected)) {
-                state.selected = id;
-                state.viewDirty = true;
-            }
+            if (ImGui::Selectable(label.c_str(), id == state.selected)) state.selected = id;
         }
     }
     ImGui::EndChild();

@@ -35,22 +35,14 @@ void escape(AppState& state) {
     if (state.job.running()) return cancelTrace(state);
     if (state.placementMode) return togglePlacement(state);
     state.selected = RayHit::kNone;
-    state.viewDirty = true;
 }
 void fit(AppState& state) { state.fitRequested = true; }
-void toggleSlice(AppState& state) {
-    state.slice.enabled = !state.slice.enabled;
-    state.viewDirty = true;
-}
-void toggleOctree(AppState& state) {
-    state.layers.octree = !state.layers.octree;
-    state.viewDirty = true;
-}
+void toggleSlice(AppState& state) { state.slice.enabled = !state.slice.enabled; }
+void toggleOctree(AppState& state) { state.layers.octree = !state.layers.octree; }
 void octreeLevel(AppState& state, int delta) {
     state.layers.octree = true;
     const int deepest = std::max(0, static_cast<int>(state.document->octree().statistics().size()) - 1);
     state.layers.octreeFilter.level = std::clamp(state.layers.octreeFilter.level + delta, 0, deepest);
-    state.viewDirty = true;
 }
 void levelDown(AppState& state) { octreeLevel(state, -1); }
 void levelUp(AppState& state) { octreeLevel(state, +1); }

@@ -151,7 +151,6 @@ void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
     try {
         state.document->setSources(std::move(sources), movedThisDrag_);
         movedThisDrag_ = true;
-        state.viewDirty = true;
         state.say(handle_ == SourceHandle::Origin ? "moving the source" : "aiming the source");
     } catch (const std::exception& error) {
         state.refuse(std::string("source not changed: ") + error.what());
@@ -169,7 +168,6 @@ void ViewportControls::click(AppState& state, const Ray& ray) {
     }
     const auto pick = pickShape(state, ray);
     state.selected = pick ? pick->shape : RayHit::kNone;
-    state.viewDirty = true;
     if (pick) state.say("selected " + describe(state, pick->shape, ": "));
 }
 

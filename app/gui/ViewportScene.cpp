@@ -22,7 +22,23 @@ Eigen::AlignedBox3d viewBounds(const AppState& state, const Eigen::AlignedBox3d&
     return box;
 }
 
-void ViewportScene::rebuild(AppState& state) {
+ViewKey viewKey(const AppState& state) {
+    const auto& sources = state.document->sources();
+    return ViewKey{
+        .document = state.opened,
+        .revision = state.document->revision(),
+        .layers = state.layers,
+        .slice = state.slice,
+        .selectedShape = state.selected,
+        .selectedSource = sources.empty() ? 0 : selectedSourceIndex(state, sources),
+        .traces = state.shownTraces,
+        .selectedPath = state.selectedPath,
+        .selectedEvent = state.selectedEvent,
+        .up = state.camera.up,
+    };
+}
+
+void ViewportScene::rebuild(AppState& state, const ViewKey& key) {
     const SceneDocument& document = *state.document;
     const Octree& octree = document.octree();
     bounds_ = render::sceneBounds(octree.shapes());
@@ -60,12 +76,11 @@ void ViewportScene::rebuild(AppState& state) {
     }
     render::uploadScene(renderer_, octree.shapes(), layers_, options);
     ++rebuilds_;
-    state.drawnRevision = document.revision();
-    state.viewDirty = false;
+    builtFrom_ = key;
 }
 
 void ViewportScene::draw(AppState& state, int width, int height) {
-    if (state.viewDirty || state.drawnRevision != state.document->revision()) rebuild(state);
+    if (const ViewKey key = viewKey(state); key != builtFrom_) rebuild(state, key);
     const double aspect = static_cast<double>(width) / static_cast<double>(std::max(height, 1));
     if (state.fitRequested) {
         state.camera.fitTo(bounds_, aspect);
