@@ -34,7 +34,7 @@ public:
     App& operator=(const App&) = delete;
 
     void frame(const InputFrame& input) override;
-    bool quitRequested() const override { return state_.quit; }
+    bool quitRequested() const override { return state_.ui.quit; }
 
     AppState& state() { return state_; }
     const AppState& state() const { return state_; }

@@ -1,6 +1,6 @@
 #include "gui/PanelWidgets.hpp"
 
-#include "gui/Actions.hpp"
+#include "gui/TraceActions.hpp"
 
 #include <imgui.h>
 
@@ -36,11 +36,11 @@ bool mediumCombo(const char* label, const SceneDocument& document, MediumId& med
 void recordItemRect(AppState& state, const std::string& name) {
     const ImVec2 min = ImGui::GetItemRectMin();
     const ImVec2 max = ImGui::GetItemRectMax();
-    state.itemRects[name] = ItemRect{min.x, min.y, max.x, max.y};
+    state.ui.itemRects[name] = ItemRect{min.x, min.y, max.x, max.y};
 }
 
 void drawTraceProgress(AppState& state, float barWidth) {
-    const TraceJobProgress progress = state.job.progress();
+    const TraceJobProgress progress = state.traces.job.progress();
     const float fraction =
         progress.total > 0 ? static_cast<float>(progress.done) / static_cast<float>(progress.total) : 0.0f;
     const std::string label = progress.buildingOctree

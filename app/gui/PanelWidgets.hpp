@@ -10,7 +10,7 @@ namespace dropscope::gui {
 bool inputVector3(const char* label, Eigen::Vector3d& v, const char* format = "%.6g");
 // A choice among the document's media; true when another one was chosen.
 bool mediumCombo(const char* label, const SceneDocument& document, MediumId& medium);
-// Notes where the last widget was drawn this frame under `name` (AppState::itemRects).
+// Notes where the last widget was drawn this frame under `name` (UiState::itemRects).
 void recordItemRect(AppState& state, const std::string& name);
 // The running trace's progress bar (or "building the octree") with its Cancel button, on one line.
 void drawTraceProgress(AppState& state, float barWidth);

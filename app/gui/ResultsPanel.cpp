@@ -37,12 +37,12 @@ void drawResultsPanel(AppState& state) {
         ImGui::End();
         return;
     }
-    if (!state.trace) {
+    if (!state.traces.trace) {
         ImGui::TextDisabled("no trace yet: fire photons (Space)");
         ImGui::End();
         return;
     }
-    const TraceResult& result = state.trace->outcome.result;
+    const TraceResult& result = state.traces.trace->outcome.result;
     const TraceTally& tally = result.tally;
     const double n = tally.photons > 0 ? static_cast<double>(tally.photons) : 1.0;
     ImGui::Text("%llu photons%s, %.2f s", static_cast<unsigned long long>(tally.photons),

@@ -25,7 +25,7 @@ std::string listLabel(const SceneDocument& document, ShapeId id, const Shape& sh
 void shapeList(AppState& state) {
     static ImGuiTextFilter filter;
     filter.Draw("filter", 180.0f);
-    const SceneDocument& document = *state.document;
+    const SceneDocument& document = state.scene.document();
     const Octree& octree = document.octree();
     std::vector<ShapeId> shown;
     for (ShapeId id = 0; id < octree.slotCount(); ++id) {
@@ -40,7 +40,7 @@ void shapeList(AppState& state) {
         for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
             const ShapeId id = shown[static_cast<std::size_t>(row)];
             const std::string label = listLabel(document, id, *octree.shape(id));
-            if (ImGui::Selectable(label.c_str(), id == state.selected)) state.selected = id;
+            if (ImGui::Selectable(label.c_str(), id == state.scene.selectedShape())) state.scene.selectShape(id);
         }
     }
     ImGui::EndChild();
@@ -58,14 +58,16 @@ void generalShapeDetails(const GeneralShape& shape) {
 }
 
 void selectedShapeEditor(AppState& state) {
-    state.itemRects.erase("centre");
-    const Shape* shape = state.document->octree().shape(state.selected);
+    state.ui.itemRects.erase("centre");
+    SceneDocument& document = state.scene.document();
+    const ShapeId selected = state.scene.selectedShape();
+    const Shape* shape = document.octree().shape(selected);
     if (!shape) {
         ImGui::TextDisabled("click a shape (or a row above) to edit it");
         return;
     }
     ShapeSpec spec = describeShape(*shape);
-    ImGui::Text("shape %u: %s", state.selected, shapeTypeLabel(*shape).c_str());
+    ImGui::Text("shape %u: %s", selected, shapeTypeLabel(*shape).c_str());
     bool changed = false;
     ImGuiID editedItem = 0;
     auto track = [&](bool edited, const char* label) {
@@ -92,40 +94,42 @@ void selectedShapeEditor(AppState& state) {
             track(ImGui::InputDouble("angle (deg)", &spec.rotationAngleDeg, 1.0, 10.0, "%.4g"), "angle (deg)");
         }
     }
-    track(mediumCombo("medium", *state.document, spec.medium), "medium");
+    track(mediumCombo("medium", document, spec.medium), "medium");
     if (spec.general) generalShapeDetails(*spec.general);  // below the fields, which stay in view
     if (changed) {
         try {
             // One activation of one field (typing a number, dragging a value) is one undo step.
-            state.document->modifyShape(state.selected, spec, editedItem == state.editingItem);
-            state.editingItem = editedItem;
+            document.modifyShape(selected, spec, editedItem == state.ui.editingItem);
+            state.ui.editingItem = editedItem;
         } catch (const std::exception& error) {
-            state.refuse(std::string("not changed: ") + error.what());
+            state.ui.status.refuse(std::string("not changed: ") + error.what());
         }
     }
-    if (!ImGui::IsAnyItemActive()) state.editingItem = 0;
+    if (!ImGui::IsAnyItemActive()) state.ui.editingItem = 0;
     if (ImGui::Button("Delete")) deleteSelected(state);
 }
 
 void addButtons(AppState& state) {
-    const glm::dvec3 target = state.camera.target;
+    const glm::dvec3 target = state.view.camera.target;
+    const double radius = state.placement.radius;
     ShapeSpec spec;
     spec.center = Point(target.x, target.y, target.z);
-    spec.radius = state.placementRadius;
-    spec.semiAxes = Eigen::Vector3d(1.5, 1.0, 0.7) * state.placementRadius;
-    spec.boxMin = spec.center - Eigen::Vector3d::Constant(2.0 * state.placementRadius);
-    spec.boxMax = spec.center + Eigen::Vector3d::Constant(2.0 * state.placementRadius);
-    spec.medium = state.placementMedium;
+    spec.radius = radius;
+    spec.semiAxes = Eigen::Vector3d(1.5, 1.0, 0.7) * radius;
+    spec.boxMin = spec.center - Eigen::Vector3d::Constant(2.0 * radius);
+    spec.boxMax = spec.center + Eigen::Vector3d::Constant(2.0 * radius);
+    spec.medium = state.placement.medium;
     const std::array<std::pair<const char*, ShapeKind>, 3> kinds{
         {{"Add sphere", ShapeKind::Sphere}, {"Add ellipsoid", ShapeKind::Ellipsoid}, {"Add box", ShapeKind::Box}}};
     for (const auto& [label, kind] : kinds) {
         if (ImGui::Button(label)) {
             spec.kind = kind;
             try {
-                state.selected = state.document->addShape(spec);
-                state.say("added shape " + std::to_string(state.selected) + " at the view's target");
+                const ShapeId id = state.scene.document().addShape(spec);
+                state.scene.selectShape(id);
+                state.ui.status.say("added shape " + std::to_string(id) + " at the view's target");
             } catch (const std::exception& error) {
-                state.refuse(std::string("not added: ") + error.what());
+                state.ui.status.refuse(std::string("not added: ") + error.what());
             }
         }
         ImGui::SameLine();
@@ -149,7 +153,7 @@ void cloudGenerator(AppState& state) {
     ImGui::InputInt("seed", &seed);
     if (ImGui::Button("Region = scene bounds")) {
         Eigen::AlignedBox3d box;
-        for (const auto& shape : state.document->octree().shapes()) {
+        for (const auto& shape : state.scene.document().octree().shapes()) {
             if (shape) box.extend(shape->bounds());
         }
         if (!box.isEmpty()) {
@@ -171,11 +175,11 @@ void cloudGenerator(AppState& state) {
             spec.radius = radiusMax > radiusMin ? RadiusDistribution::uniform(radiusMin, radiusMax)
                                                 : RadiusDistribution::fixed(radiusMin);
             spec.seed = static_cast<std::uint64_t>(std::max(seed, 0));
-            const auto ids = state.document->generateCloud(spec, state.placementMedium);
-            state.say("generated " + std::to_string(ids.size()) + " droplets" +
-                      (ids.size() < static_cast<std::size_t>(count) ? " (the region filled up)" : ""));
+            const auto ids = state.scene.document().generateCloud(spec, state.placement.medium);
+            state.ui.status.say("generated " + std::to_string(ids.size()) + " droplets" +
+                                (ids.size() < static_cast<std::size_t>(count) ? " (the region filled up)" : ""));
         } catch (const std::exception& error) {
-            state.refuse(std::string("no cloud: ") + error.what());
+            state.ui.status.refuse(std::string("no cloud: ") + error.what());
         }
     }
     ImGui::TreePop();

@@ -13,7 +13,7 @@ namespace dropscope::gui {
 // themselves: a frame whose key differs from the one the view was last built from rebuilds it, and only
 // such a frame does.
 struct ViewKey {
-    std::uint64_t document = 0;  // which document (scenes opened), and its revision
+    std::uint64_t document = 0;  // which document (SceneState::generation), and its revision
     std::uint64_t revision = 0;
     render::LayerOptions layers;
     SliceSettings slice;
@@ -38,12 +38,14 @@ public:
     // Rebuilds what changed, fits or clips the camera, and draws into the bound framebuffer.
     void draw(AppState& state, int width, int height);
 
+    // The bounds of the shapes as last drawn (render::sceneBounds): they size the source handles.
+    const Eigen::AlignedBox3d& sceneBounds() const { return bounds_; }
     // What the last rebuild handed to the renderer, for the UI tests.
     const render::SceneLayers& layers() const { return layers_; }
     std::uint64_t rebuilds() const { return rebuilds_; }
 
 private:
-    void rebuild(AppState& state, const ViewKey& key);
+    void rebuild(const AppState& state, const ViewKey& key);
 
     render::Renderer renderer_;
     render::SceneLayers layers_{render::LineBatch(render::Anchor{}), {}};

@@ -75,7 +75,7 @@ public:
         const auto end = std::chrono::steady_clock::now() + limit;
         do {
             frame();
-            if (!state().job.running() && state().trace) return true;
+            if (!state().traces.job.running() && state().traces.trace) return true;
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         } while (std::chrono::steady_clock::now() < end);
         return false;

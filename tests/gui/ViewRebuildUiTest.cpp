@@ -5,6 +5,7 @@
 
 #include "edit/ShapeSpec.hpp"
 #include "gui/Actions.hpp"
+#include "gui/TraceActions.hpp"
 
 #include <gtest/gtest.h>
 
@@ -51,21 +52,21 @@ TEST_F(ViewRebuild, EachInputRebuildsTheViewOnceAndAFrameWithoutChangeNever) {
     droplet.center = Point(3.0, 0.0, 0.0);
     droplet.radius = 0.5;
     droplet.medium = 1;
-    EXPECT_EQ(rebuildsAfter([&] { state_.document->addShape(droplet); }), 1u) << "a document edit";
-    EXPECT_EQ(rebuildsAfter([&] { state_.document->undo(); }), 1u) << "an undo";
-    EXPECT_EQ(rebuildsAfter([&] { state_.layers.axes = true; }), 1u) << "a layer option";
-    EXPECT_EQ(rebuildsAfter([&] { state_.layers.octreeFilter.level = 1; }), 1u) << "the octree filter";
-    EXPECT_EQ(rebuildsAfter([&] { state_.slice.enabled = true; }), 1u) << "the slice plane switched on";
-    EXPECT_EQ(rebuildsAfter([&] { state_.slice.offset = 0.5; }), 1u) << "the slice plane moved";
-    EXPECT_EQ(rebuildsAfter([&] { state_.selected = 0; }), 1u) << "a shape selected";
-    EXPECT_EQ(rebuildsAfter([&] { state_.selected = RayHit::kNone; }), 1u) << "the selection cleared";
-    std::vector<Source> sources = state_.document->sources();
+    EXPECT_EQ(rebuildsAfter([&] { state_.scene.document().addShape(droplet); }), 1u) << "a document edit";
+    EXPECT_EQ(rebuildsAfter([&] { state_.scene.document().undo(); }), 1u) << "an undo";
+    EXPECT_EQ(rebuildsAfter([&] { state_.view.layers.axes = true; }), 1u) << "a layer option";
+    EXPECT_EQ(rebuildsAfter([&] { state_.view.layers.octreeFilter.level = 1; }), 1u) << "the octree filter";
+    EXPECT_EQ(rebuildsAfter([&] { state_.view.slice.enabled = true; }), 1u) << "the slice plane switched on";
+    EXPECT_EQ(rebuildsAfter([&] { state_.view.slice.offset = 0.5; }), 1u) << "the slice plane moved";
+    EXPECT_EQ(rebuildsAfter([&] { state_.scene.selectShape(0); }), 1u) << "a shape selected";
+    EXPECT_EQ(rebuildsAfter([&] { state_.scene.selectShape(RayHit::kNone); }), 1u) << "the selection cleared";
+    std::vector<Source> sources = state_.scene.document().sources();
     sources.push_back(Source{SourceType::Ray, Point(0, 0, 5), Direction(0, 0, -1), 0.0});
-    EXPECT_EQ(rebuildsAfter([&] { state_.document->setSources(sources); }), 1u) << "a source added";
-    EXPECT_EQ(rebuildsAfter([&] { state_.selectedSource = 1; }), 1u) << "another source selected (its handles)";
+    EXPECT_EQ(rebuildsAfter([&] { state_.scene.document().setSources(sources); }), 1u) << "a source added";
+    EXPECT_EQ(rebuildsAfter([&] { state_.scene.selectSource(1); }), 1u) << "another source selected (its handles)";
     // Things the view does not draw change nothing.
-    EXPECT_EQ(rebuildsAfter([&] { state_.placementRadius = 0.1; }), 0u) << "the placement radius";
-    EXPECT_EQ(rebuildsAfter([&] { state_.fire.photons = 20; }), 0u) << "the photon count";
+    EXPECT_EQ(rebuildsAfter([&] { state_.placement.radius = 0.1; }), 0u) << "the placement radius";
+    EXPECT_EQ(rebuildsAfter([&] { state_.traces.fire.photons = 20; }), 0u) << "the photon count";
 
     // A new trace: the frames while it runs rebuild nothing, the one that shows it rebuilds once.
     const std::uint64_t beforeTrace = harness_.app().viewport().rebuilds();
@@ -73,8 +74,8 @@ TEST_F(ViewRebuild, EachInputRebuildsTheViewOnceAndAFrameWithoutChangeNever) {
     ASSERT_TRUE(harness_.waitForTrace());
     EXPECT_EQ(harness_.app().viewport().rebuilds(), beforeTrace + 1) << "a new trace";
     EXPECT_EQ(rebuildsAfter([] {}), 0u);
-    EXPECT_EQ(rebuildsAfter([&] { stepEvent(state_, +1); }), 1u) << "a photon event selected";
-    EXPECT_EQ(rebuildsAfter([&] { stepEvent(state_, +1); }), 1u) << "the next event";
+    EXPECT_EQ(rebuildsAfter([&] { stepEvent(state_.traces, +1); }), 1u) << "a photon event selected";
+    EXPECT_EQ(rebuildsAfter([&] { stepEvent(state_.traces, +1); }), 1u) << "the next event";
     EXPECT_EQ(rebuildsAfter([&] { fireRayTree(state_); }), 1u) << "a ray tree";
 }
 
@@ -84,9 +85,9 @@ TEST_F(ViewRebuild, OpeningASceneRebuildsTheViewEvenWhenItsRevisionIsTheOldOnes)
         ("dropscope-view-rebuild-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".json");
     std::ofstream(file) << kAxisScene;
     // Both documents are fresh (revision 0): only which document it is tells them apart.
-    ASSERT_EQ(state_.document->revision(), 0u);
+    ASSERT_EQ(state_.scene.document().revision(), 0u);
     EXPECT_EQ(rebuildsAfter([&] { ASSERT_TRUE(openScene(state_, file)); }), 1u);
-    EXPECT_EQ(state_.document->revision(), 0u);
+    EXPECT_EQ(state_.scene.document().revision(), 0u);
     std::filesystem::remove(file);
 }
 
