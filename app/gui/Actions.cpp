@@ -8,7 +8,6 @@
 #include "scene/SceneWriter.hpp"
 
 #include <ctime>
-#include <exception>
 #include <iomanip>
 #include <sstream>
 
@@ -59,18 +58,14 @@ bool placeDroplet(AppState& state, const Point& centre) {
     spec.center = centre;
     spec.radius = state.placement.radius;
     spec.medium = state.placement.medium;
-    try {
+    return state.ui.status.attempt("droplet not placed", [&] {
         const ShapeId id = state.scene.document().addShape(spec);
         state.scene.selectShape(id);
         std::ostringstream text;
         text << "placed droplet " << id << " at ";
         printPoint(text, centre) << ", radius " << state.placement.radius;
         state.ui.status.say(text.str());
-        return true;
-    } catch (const std::exception& error) {
-        state.ui.status.refuse(std::string("droplet not placed: ") + error.what());
-        return false;
-    }
+    });
 }
 
 MediumId firstDropletMedium(const SceneDocument& document) {
@@ -81,7 +76,7 @@ MediumId firstDropletMedium(const SceneDocument& document) {
 }
 
 bool openScene(AppState& state, const std::filesystem::path& file) {
-    try {
+    return state.ui.status.attempt("could not open", [&] {
         auto document = std::make_unique<SceneDocument>(loadScene(file));
         state.traces.job.discard();  // a run of the old scene must not arrive as this one's
         state.scene.replace(std::move(document), file);
@@ -91,11 +86,7 @@ bool openScene(AppState& state, const std::filesystem::path& file) {
         state.view.fitRequested = !opened.view();
         if (const auto& view = opened.view()) state.view.camera = render::Camera::fromView(*view);
         state.ui.status.say("opened " + file.string() + ": " + std::to_string(opened.shapeCount()) + " shapes");
-        return true;
-    } catch (const std::exception& error) {
-        state.ui.status.refuse(std::string("could not open: ") + error.what());
-        return false;
-    }
+    });
 }
 
 bool saveScene(AppState& state, const std::filesystem::path& file) {
@@ -103,17 +94,13 @@ bool saveScene(AppState& state, const std::filesystem::path& file) {
         state.ui.status.refuse("give a file name to save the scene to");
         return false;
     }
-    try {
+    return state.ui.status.attempt("not saved", [&] {
         Scene scene = state.scene.document().toScene();
         scene.view = state.view.camera.toView();
         writeFileAtomically(file, [&](std::ostream& out) { writeScene(scene, out); });
         state.scene.setFile(file);
         state.ui.status.say("saved " + file.string());
-        return true;
-    } catch (const std::exception& error) {
-        state.ui.status.refuse(std::string("not saved: ") + error.what());
-        return false;
-    }
+    });
 }
 
 bool exportPaths(AppState& state, const std::filesystem::path& file) {
@@ -121,18 +108,14 @@ bool exportPaths(AppState& state, const std::filesystem::path& file) {
         state.ui.status.refuse("no recorded paths to export: fire photons first");
         return false;
     }
-    try {
+    return state.ui.status.attempt("paths not exported", [&] {
         const TraceShown& shown = *state.traces.trace;
         writeFileAtomically(file, [&](std::ostream& out) {
             writePathsJsonl(shown.outcome.result.paths, shown.outcome.scene.media, out);
         });
         state.ui.status.say("exported " + std::to_string(shown.outcome.result.paths.size()) + " paths to " +
                             file.string());
-        return true;
-    } catch (const std::exception& error) {
-        state.ui.status.refuse(std::string("paths not exported: ") + error.what());
-        return false;
-    }
+    });
 }
 
 std::filesystem::path timestampedScreenshotPath(const std::filesystem::path& directory,

@@ -11,7 +11,6 @@
 #include <imgui.h>
 
 #include <chrono>
-#include <exception>
 
 namespace dropscope::gui {
 
@@ -82,7 +81,7 @@ void App::frame(const InputFrame& input) {
 void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {
     const ScreenshotRequest request = *state_.ui.screenshot;
     state_.ui.screenshot.reset();
-    try {
+    state_.ui.status.attempt("screenshot not saved", [&] {
         snapshot::Image image;
         if (request.panels) {
             image = readFramebuffer(gl_, framebufferWidth, framebufferHeight);
@@ -95,9 +94,7 @@ void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {
         state_.ui.lastScreenshot = request.file;
         state_.ui.status.say("screenshot saved: " +
                              std::filesystem::absolute(request.file).lexically_normal().string());
-    } catch (const std::exception& error) {
-        state_.ui.status.refuse(std::string("screenshot not saved: ") + error.what());
-    }
+    });
 }
 
 }  // namespace dropscope::gui

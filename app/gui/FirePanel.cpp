@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <exception>
 
 namespace dropscope::gui {
 
@@ -67,13 +66,8 @@ void sourceEditor(AppState& state) {
         scene.selectSource(0);
         changed = true;
     }
-    if (changed) {
-        try {
-            scene.document().setSources(std::move(sources));
-        } catch (const std::exception& error) {
-            state.ui.status.refuse(std::string("source not changed: ") + error.what());
-        }
-    }
+    if (changed)
+        state.ui.status.attempt("source not changed", [&] { scene.document().setSources(std::move(sources)); });
 }
 
 void fireControls(AppState& state) {

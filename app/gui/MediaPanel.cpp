@@ -4,8 +4,6 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include <exception>
-
 namespace dropscope::gui {
 
 namespace {
@@ -38,12 +36,10 @@ void mediumRow(SceneDocument& document, StatusLine& status, MediumId id) {
         }
     }
     if (changed) {
-        try {
+        status.attempt("medium not changed", [&] {
             document.setMedium(id, medium);
             status.say("medium " + medium.name + " changed");
-        } catch (const std::exception& error) {
-            status.refuse(std::string("medium not changed: ") + error.what());
-        }
+        });
     }
     ImGui::PopID();
 }
@@ -70,11 +66,7 @@ void drawMediaPanel(SceneDocument& document, StatusLine& status) {
         Medium medium;
         medium.name = "medium" + std::to_string(media.size());
         medium.n = 1.33;
-        try {
-            document.addMedium(medium);
-        } catch (const std::exception& error) {
-            status.refuse(std::string("no medium added: ") + error.what());
-        }
+        status.attempt("no medium added", [&] { document.addMedium(medium); });
     }
     ImGui::End();
 }

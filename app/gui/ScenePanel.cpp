@@ -9,7 +9,7 @@
 
 #include <algorithm>
 #include <array>
-#include <exception>
+#include <stdexcept>
 
 namespace dropscope::gui {
 
@@ -97,13 +97,11 @@ void selectedShapeEditor(AppState& state) {
     track(mediumCombo("medium", document, spec.medium), "medium");
     if (spec.general) generalShapeDetails(*spec.general);  // below the fields, which stay in view
     if (changed) {
-        try {
+        state.ui.status.attempt("not changed", [&] {
             // One activation of one field (typing a number, dragging a value) is one undo step.
             document.modifyShape(selected, spec, editedItem == state.ui.editingItem);
             state.ui.editingItem = editedItem;
-        } catch (const std::exception& error) {
-            state.ui.status.refuse(std::string("not changed: ") + error.what());
-        }
+        });
     }
     if (!ImGui::IsAnyItemActive()) state.ui.editingItem = 0;
     if (ImGui::Button("Delete")) deleteSelected(state);
@@ -124,13 +122,11 @@ void addButtons(AppState& state) {
     for (const auto& [label, kind] : kinds) {
         if (ImGui::Button(label)) {
             spec.kind = kind;
-            try {
+            state.ui.status.attempt("not added", [&] {
                 const ShapeId id = state.scene.document().addShape(spec);
                 state.scene.selectShape(id);
                 state.ui.status.say("added shape " + std::to_string(id) + " at the view's target");
-            } catch (const std::exception& error) {
-                state.ui.status.refuse(std::string("not added: ") + error.what());
-            }
+            });
         }
         ImGui::SameLine();
     }
@@ -163,7 +159,7 @@ void cloudGenerator(AppState& state) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Generate")) {
-        try {
+        state.ui.status.attempt("no cloud", [&] {
             if (count < 0) throw std::invalid_argument("count must be >= 0");
             if (!(radiusMin > 0.0) || !(radiusMax >= radiusMin))
                 throw std::invalid_argument("need 0 < radius min <= radius max");
@@ -178,9 +174,7 @@ void cloudGenerator(AppState& state) {
             const auto ids = state.scene.document().generateCloud(spec, state.placement.medium);
             state.ui.status.say("generated " + std::to_string(ids.size()) + " droplets" +
                                 (ids.size() < static_cast<std::size_t>(count) ? " (the region filled up)" : ""));
-        } catch (const std::exception& error) {
-            state.ui.status.refuse(std::string("no cloud: ") + error.what());
-        }
+        });
     }
     ImGui::TreePop();
 }

@@ -3,7 +3,6 @@
 #include "transport/OpticalScene.hpp"
 
 #include <algorithm>
-#include <exception>
 #include <iomanip>
 #include <sstream>
 
@@ -35,7 +34,7 @@ void traceRayTree(AppState& state, bool automatic) {
     const auto& sources = document.sources();
     if (sources.empty()) return state.ui.status.refuse("nothing to fire: add a source first (Fire panel)");
     const Source& source = sources[state.scene.selectedSource()];
-    try {
+    state.ui.status.attempt("ray tree failed", [&] {
         const OpticalScene optical(document.toScene());
         const Ray ray{source.origin, source.direction};
         traces.rayTree = traceRayTree(optical, ray, 1.0, RayTreeSettings{});
@@ -45,9 +44,7 @@ void traceRayTree(AppState& state, bool automatic) {
             state.ui.status.say("ray tree: " + std::to_string(traces.rayTree->nodes.size()) + " events, " +
                                 std::to_string(traces.rayTree->absorbed) + " absorbed");
         }
-    } catch (const std::exception& error) {
-        state.ui.status.refuse(std::string("ray tree failed: ") + error.what());
-    }
+    });
 }
 
 }  // namespace

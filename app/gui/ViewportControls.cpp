@@ -121,14 +121,12 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
         const auto on = rayPlaneAxis(ray, axis, spec.center[axis]);
         if (!on) break;
         spec.center = *on + grabOffset_;
-        try {
+        state.ui.status.attempt("not moved there", [&] {
             // The first move of a drag opens an undo step; the rest of the drag folds into it.
             state.scene.document().modifyShape(moving_, spec, movedThisDrag_);
             movedThisDrag_ = true;
             state.ui.status.say("moving shape " + std::to_string(moving_));
-        } catch (const std::exception& error) {
-            state.ui.status.refuse(std::string("not moved there: ") + error.what());
-        }
+        });
         break;
     }
     case Drag::MoveHandle: moveHandle(state, ray); break;
@@ -150,13 +148,11 @@ void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
         if (!direction) return;
         source.direction = direction;
     }
-    try {
+    state.ui.status.attempt("source not changed", [&] {
         state.scene.document().setSources(std::move(sources), movedThisDrag_);
         movedThisDrag_ = true;
         state.ui.status.say(handle_ == SourceHandle::Origin ? "moving the source" : "aiming the source");
-    } catch (const std::exception& error) {
-        state.ui.status.refuse(std::string("source not changed: ") + error.what());
-    }
+    });
 }
 
 void ViewportControls::click(AppState& state, const Ray& ray) {
