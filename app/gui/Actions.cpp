@@ -80,6 +80,7 @@ bool openScene(AppState& state, const std::filesystem::path& file) {
         auto document = std::make_unique<SceneDocument>(loadScene(file));
         state.traces.job.discard();  // a run of the old scene must not arrive as this one's
         state.scene.replace(std::move(document), file);
+        state.ui.panels = {};
         const SceneDocument& opened = state.scene.document();
         state.placement.medium = firstDropletMedium(opened);
         forgetTraces(state.traces);

@@ -33,14 +33,6 @@ std::string suggestedName(const AppState& state, FilePrompt prompt) {
     return "";
 }
 
-// The screenshot prompt's own choices: panels or the 3D view alone, the window's size or another.
-struct ScreenshotChoice {
-    bool panels = false;
-    bool windowSize = true;
-    int width = 1920;
-    int height = 1080;
-};
-
 void screenshotOptions(ScreenshotChoice& choice) {
     ImGui::Checkbox("with the panels", &choice.panels);
     if (choice.panels) choice.windowSize = true;  // panels are laid out for the window
@@ -56,25 +48,25 @@ void screenshotOptions(ScreenshotChoice& choice) {
 }  // namespace
 
 void drawFilePrompts(AppState& state) {
-    static std::string path;
-    static FilePrompt opened = FilePrompt::None;
-    static ScreenshotChoice choice;
     if (state.ui.prompt == FilePrompt::None) return;
+    FilePromptFields& fields = state.ui.panels.filePrompt;
+    std::string& path = fields.path;
+    const ScreenshotChoice& choice = fields.screenshot;
     const char* title = promptTitle(state.ui.prompt);
-    if (opened != state.ui.prompt) {
+    if (fields.filledFor != state.ui.prompt) {
         path = suggestedName(state, state.ui.prompt);
-        opened = state.ui.prompt;
+        fields.filledFor = state.ui.prompt;
         ImGui::OpenPopup(title);
     }
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
                             ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        state.ui.prompt = opened = FilePrompt::None;
+        state.ui.prompt = fields.filledFor = FilePrompt::None;
         return;
     }
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     const bool entered = ImGui::InputText("file", &path, ImGuiInputTextFlags_EnterReturnsTrue);
-    if (state.ui.prompt == FilePrompt::Screenshot) screenshotOptions(choice);
+    if (state.ui.prompt == FilePrompt::Screenshot) screenshotOptions(fields.screenshot);
     bool done = false;
     if (ImGui::Button("OK") || entered) {
         switch (state.ui.prompt) {
@@ -95,7 +87,7 @@ void drawFilePrompts(AppState& state) {
     if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(kKeyEscape, false)) done = true;
     if (done) {
         ImGui::CloseCurrentPopup();
-        state.ui.prompt = opened = FilePrompt::None;
+        state.ui.prompt = fields.filledFor = FilePrompt::None;
     }
     ImGui::EndPopup();
 }

@@ -9,17 +9,14 @@ namespace dropscope::gui {
 
 namespace {
 
-// The octree's per-level statistics walk every cell: computed again only when the document changed.
-const std::vector<LevelStatistics>& levelStatistics(const SceneDocument& document) {
-    static const SceneDocument* cachedDocument = nullptr;
-    static std::uint64_t cachedRevision = 0;
-    static std::vector<LevelStatistics> cached;
-    if (cachedDocument != &document || cachedRevision != document.revision() || cached.empty()) {
-        cached = document.octree().statistics();
-        cachedDocument = &document;
-        cachedRevision = document.revision();
+const std::vector<LevelStatistics>& levelStatistics(OctreeStatistics& cache, const SceneState& scene) {
+    const SceneDocument& document = scene.document();
+    if (cache.levels.empty() || cache.generation != scene.generation() || cache.revision != document.revision()) {
+        cache.levels = document.octree().statistics();
+        cache.generation = scene.generation();
+        cache.revision = document.revision();
     }
-    return cached;
+    return cache.levels;
 }
 
 void statisticsTable(const std::vector<LevelStatistics>& statistics) {
@@ -79,7 +76,7 @@ void drawOctreePanel(AppState& state) {
         ImGui::End();
         return;
     }
-    const std::vector<LevelStatistics>& statistics = levelStatistics(state.scene.document());
+    const std::vector<LevelStatistics>& statistics = levelStatistics(state.ui.panels.octreeStatistics, state.scene);
     const int deepest = std::max(0, static_cast<int>(statistics.size()) - 1);
     render::LayerOptions& layers = state.view.layers;
     render::OctreeFilter& filter = layers.octreeFilter;

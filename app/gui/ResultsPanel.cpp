@@ -51,7 +51,7 @@ void drawResultsPanel(AppState& state) {
                 static_cast<double>(tally.absorbed) / n);
     ImGui::Text("lost %.5f  unscattered %.5f", static_cast<double>(tally.lost) / n,
                 static_cast<double>(tally.unscattered) / n);
-    static bool logScale = true;
+    bool& logScale = state.ui.panels.logScale;
     ImGui::Checkbox("log scale", &logScale);
     std::vector<float> values = perSteradian(tally);
     if (logScale) {

@@ -6,6 +6,7 @@
 #include "gui/ShapeDescription.hpp"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <array>
@@ -23,8 +24,10 @@ std::string listLabel(const SceneDocument& document, ShapeId id, const Shape& sh
 }
 
 void shapeList(AppState& state) {
-    static ImGuiTextFilter filter;
-    filter.Draw("filter", 180.0f);
+    std::string& text = state.ui.panels.scenePanel.filter;
+    ImGui::SetNextItemWidth(180.0f);
+    ImGui::InputText("filter", &text);
+    const ImGuiTextFilter filter(text.c_str());
     const SceneDocument& document = state.scene.document();
     const Octree& octree = document.octree();
     std::vector<ShapeId> shown;
@@ -66,6 +69,7 @@ void selectedShapeEditor(AppState& state) {
         ImGui::TextDisabled("click a shape (or a row above) to edit it");
         return;
     }
+    std::uint32_t& editingItem = state.ui.panels.scenePanel.editingItem;
     ShapeSpec spec = describeShape(*shape);
     ImGui::Text("shape %u: %s", selected, shapeTypeLabel(*shape).c_str());
     bool changed = false;
@@ -99,11 +103,11 @@ void selectedShapeEditor(AppState& state) {
     if (changed) {
         state.ui.status.attempt("not changed", [&] {
             // One activation of one field (typing a number, dragging a value) is one undo step.
-            document.modifyShape(selected, spec, editedItem == state.ui.editingItem);
-            state.ui.editingItem = editedItem;
+            document.modifyShape(selected, spec, editedItem == editingItem);
+            editingItem = editedItem;
         });
     }
-    if (!ImGui::IsAnyItemActive()) state.ui.editingItem = 0;
+    if (!ImGui::IsAnyItemActive()) editingItem = 0;
     if (ImGui::Button("Delete")) deleteSelected(state);
 }
 
@@ -134,46 +138,42 @@ void addButtons(AppState& state) {
 }
 
 void cloudGenerator(AppState& state) {
-    static Eigen::Vector3d lower(-1, -1, -1);
-    static Eigen::Vector3d upper(1, 1, 1);
-    static int count = 100;
-    static double radiusMin = 0.02;
-    static double radiusMax = 0.06;
-    static int seed = 1;
     if (!ImGui::TreeNode("Generate droplet cloud")) return;
-    inputVector3("region min", lower);
-    inputVector3("region max", upper);
-    ImGui::InputInt("count", &count);
-    ImGui::InputDouble("radius min", &radiusMin, 0.0, 0.0, "%.4g");
-    ImGui::InputDouble("radius max", &radiusMax, 0.0, 0.0, "%.4g");
-    ImGui::InputInt("seed", &seed);
+    CloudFields& cloud = state.ui.panels.scenePanel.cloud;
+    inputVector3("region min", cloud.lower);
+    inputVector3("region max", cloud.upper);
+    ImGui::InputInt("count", &cloud.count);
+    ImGui::InputDouble("radius min", &cloud.radiusMin, 0.0, 0.0, "%.4g");
+    ImGui::InputDouble("radius max", &cloud.radiusMax, 0.0, 0.0, "%.4g");
+    ImGui::InputInt("seed", &cloud.seed);
     if (ImGui::Button("Region = scene bounds")) {
         Eigen::AlignedBox3d box;
         for (const auto& shape : state.scene.document().octree().shapes()) {
             if (shape) box.extend(shape->bounds());
         }
         if (!box.isEmpty()) {
-            lower = box.min();
-            upper = box.max();
+            cloud.lower = box.min();
+            cloud.upper = box.max();
         }
     }
     ImGui::SameLine();
     if (ImGui::Button("Generate")) {
         state.ui.status.attempt("no cloud", [&] {
-            if (count < 0) throw std::invalid_argument("count must be >= 0");
-            if (!(radiusMin > 0.0) || !(radiusMax >= radiusMin))
+            if (cloud.count < 0) throw std::invalid_argument("count must be >= 0");
+            if (!(cloud.radiusMin > 0.0) || !(cloud.radiusMax >= cloud.radiusMin))
                 throw std::invalid_argument("need 0 < radius min <= radius max");
-            if (!(lower.array() < upper.array()).all())
+            if (!(cloud.lower.array() < cloud.upper.array()).all())
                 throw std::invalid_argument("region min must be below max on every axis");
             DropletCloudSpec spec;
-            spec.region = Eigen::AlignedBox3d(lower, upper);
-            spec.count = static_cast<std::uint64_t>(count);
-            spec.radius = radiusMax > radiusMin ? RadiusDistribution::uniform(radiusMin, radiusMax)
-                                                : RadiusDistribution::fixed(radiusMin);
-            spec.seed = static_cast<std::uint64_t>(std::max(seed, 0));
+            spec.region = Eigen::AlignedBox3d(cloud.lower, cloud.upper);
+            spec.count = static_cast<std::uint64_t>(cloud.count);
+            spec.radius = cloud.radiusMax > cloud.radiusMin
+                              ? RadiusDistribution::uniform(cloud.radiusMin, cloud.radiusMax)
+                              : RadiusDistribution::fixed(cloud.radiusMin);
+            spec.seed = static_cast<std::uint64_t>(std::max(cloud.seed, 0));
             const auto ids = state.scene.document().generateCloud(spec, state.placement.medium);
             state.ui.status.say("generated " + std::to_string(ids.size()) + " droplets" +
-                                (ids.size() < static_cast<std::size_t>(count) ? " (the region filled up)" : ""));
+                                (ids.size() < static_cast<std::size_t>(cloud.count) ? " (the region filled up)" : ""));
         });
     }
     ImGui::TreePop();

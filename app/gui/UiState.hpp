@@ -1,17 +1,14 @@
 #pragma once
 
+#include "gui/PanelState.hpp"
 #include "gui/StatusLine.hpp"
 
-#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
 
 namespace dropscope::gui {
-
-// The file-name prompt open, if any (File menu, Ctrl+O).
-enum class FilePrompt { None, Open, SaveAs, ExportPaths, Screenshot };
 
 // The screenshot the next frame writes, after everything is drawn.
 struct ScreenshotRequest {
@@ -30,12 +27,12 @@ struct ItemRect {
     float maxY = 0.0f;
 };
 
-// The window around the scene: the status line, the Help window, the file prompt, screenshots, quitting.
+// The window around the scene: the status line, the Help window, the file prompt, screenshots, quitting,
+// and what the panels keep between frames.
 struct UiState {
     StatusLine status;
     bool showHelp = false;
     FilePrompt prompt = FilePrompt::None;
-    std::uint32_t editingItem = 0;  // the ImGui item whose edits merge into one undo step (0: none)
     bool quit = false;
     std::optional<ScreenshotRequest> screenshot;
     std::filesystem::path screenshotDirectory = ".";  // F12's timestamped PNGs
@@ -43,6 +40,7 @@ struct UiState {
     // A few fields' places as last drawn (the shape editor's "centre"), by name: where the UI tests click
     // to type into them, as a user would, without depending on the panel's layout.
     std::map<std::string, ItemRect> itemRects;
+    PanelState panels;  // started afresh when a scene is opened
 };
 
 }  // namespace dropscope::gui
