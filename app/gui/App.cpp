@@ -30,6 +30,7 @@ App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
     state_.view.layers.sources = true;
     state_.view.layers.traversal = true;
     state_.ui.screenshotDirectory = options.screenshotDirectory;
+    state_.ui.itemProbe = options.itemProbe;
     if (const auto& view = document.view()) {
         state_.view.camera = render::Camera::fromView(*view);
         state_.view.fitRequested = false;

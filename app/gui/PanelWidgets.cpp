@@ -33,10 +33,11 @@ bool mediumCombo(const char* label, const SceneDocument& document, MediumId& med
     return changed;
 }
 
-void recordItemRect(AppState& state, const std::string& name) {
+void reportItemRect(const ItemProbe& probe, std::string_view name) {
+    if (!probe) return;
     const ImVec2 min = ImGui::GetItemRectMin();
     const ImVec2 max = ImGui::GetItemRectMax();
-    state.ui.itemRects[name] = ItemRect{min.x, min.y, max.x, max.y};
+    probe(name, ItemRect{min.x, min.y, max.x, max.y});
 }
 
 void drawTraceProgress(AppState& state, float barWidth) {

@@ -61,7 +61,6 @@ void generalShapeDetails(const GeneralShape& shape) {
 }
 
 void selectedShapeEditor(AppState& state) {
-    state.ui.itemRects.erase("centre");
     SceneDocument& document = state.scene.document();
     const ShapeId selected = state.scene.selectedShape();
     const Shape* shape = document.octree().shape(selected);
@@ -85,11 +84,11 @@ void selectedShapeEditor(AppState& state) {
     } else if (spec.general) {
         // The base is shared and read-only here: only where it stands (r0) and its medium are edited.
         track(inputVector3("centre", spec.center), "centre");
-        recordItemRect(state, "centre");
+        reportItemRect(state.ui.itemProbe, "centre");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("the translation r0 of M r + r0");
     } else {
         track(inputVector3("centre", spec.center), "centre");
-        recordItemRect(state, "centre");
+        reportItemRect(state.ui.itemProbe, "centre");
         if (spec.kind == ShapeKind::Sphere) {
             track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"), "radius");
         } else {

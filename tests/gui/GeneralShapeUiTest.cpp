@@ -54,8 +54,8 @@ Point translationOf(AppHarness& harness, ShapeId id) {
 // Types `text` into the first box (x) of the shape editor's centre field and leaves the field.
 void typeCentreX(AppHarness& harness, const char* text) {
     harness.frame();  // the editor of a shape selected by the last frame's click is drawn in the next one
-    const auto field = harness.state().ui.itemRects.find("centre");
-    ASSERT_NE(field, harness.state().ui.itemRects.end()) << "the shape editor shows no centre field";
+    const auto field = harness.itemRects().find("centre");
+    ASSERT_NE(field, harness.itemRects().end()) << "the shape editor shows no centre field";
     const float y = 0.5f * (field->second.minY + field->second.maxY);
     harness.click(field->second.minX + 8.0f, y);
     ASSERT_TRUE(ImGui::GetIO().WantTextInput) << "the click did not reach the centre field";
@@ -146,7 +146,7 @@ TEST(GeneralShapeUi, AClickInATorusHoleSelectsNothingAndOnItsTubeSelectsIt) {
     EXPECT_EQ(harness.state().scene.selectedShape(), 0u);
     EXPECT_EQ(harness.state().ui.status.text(), "selected shape 0: parametric torus, glass");
     harness.frame();
-    EXPECT_EQ(harness.state().ui.itemRects.count("centre"), 1u) << "the editor shows the centre field";
+    EXPECT_EQ(harness.itemRects().count("centre"), 1u) << "the editor shows the centre field";
 }
 
 }  // namespace
