@@ -56,8 +56,8 @@ void App::buildUi() {
     drawPlacementPanel(state_.placement, state_.view.slice, state_.scene.document());
     drawFirePanel(state_);
     drawOctreePanel(state_);
-    drawPathPanel(state_);
-    drawResultsPanel(state_);
+    drawPathPanel(state_.view.layers, state_.traces);
+    drawResultsPanel(state_.traces, state_.ui.panels.logScale);
     drawFilePrompts(state_);
     drawHelpWindow(state_.ui);
     drawStatusBar(state_);

@@ -7,6 +7,7 @@
 #include "gui/ViewState.hpp"
 
 #include <filesystem>
+#include <utility>
 
 namespace dropscope::gui {
 

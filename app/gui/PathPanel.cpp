@@ -84,13 +84,12 @@ void eventTable(TraceState& traces) {
 
 }  // namespace
 
-void drawPathPanel(AppState& state) {
+void drawPathPanel(render::LayerOptions& layers, TraceState& traces) {
     placeNextPanel(PanelSide::Right, 0.65f, 0.35f);
     if (!ImGui::Begin("Paths")) {
         ImGui::End();
         return;
     }
-    render::LayerOptions& layers = state.view.layers;
     ImGui::Checkbox("paths", &layers.paths);
     ImGui::SameLine();
     ImGui::Checkbox("markers", &layers.markers);
@@ -99,7 +98,6 @@ void drawPathPanel(AppState& state) {
     if (ImGui::Checkbox("colour by event", &byEvent)) {
         layers.pathColouring = byEvent ? render::PathColouring::Event : render::PathColouring::Weight;
     }
-    TraceState& traces = state.traces;
     if (!traces.trace || traces.trace->outcome.result.paths.empty()) {
         ImGui::TextDisabled("fire photons (Space) with 'paths kept' > 0 to inspect them here");
         ImGui::End();

@@ -31,18 +31,18 @@ std::vector<float> perSteradian(const TraceTally& tally) {
 
 }  // namespace
 
-void drawResultsPanel(AppState& state) {
+void drawResultsPanel(const TraceState& traces, bool& logScale) {
     placeNextPanel(PanelSide::Left, 0.79f, 0.21f);
     if (!ImGui::Begin("Results")) {
         ImGui::End();
         return;
     }
-    if (!state.traces.trace) {
+    if (!traces.trace) {
         ImGui::TextDisabled("no trace yet: fire photons (Space)");
         ImGui::End();
         return;
     }
-    const TraceResult& result = state.traces.trace->outcome.result;
+    const TraceResult& result = traces.trace->outcome.result;
     const TraceTally& tally = result.tally;
     const double n = tally.photons > 0 ? static_cast<double>(tally.photons) : 1.0;
     ImGui::Text("%llu photons%s, %.2f s", static_cast<unsigned long long>(tally.photons),
@@ -51,7 +51,6 @@ void drawResultsPanel(AppState& state) {
                 static_cast<double>(tally.absorbed) / n);
     ImGui::Text("lost %.5f  unscattered %.5f", static_cast<double>(tally.lost) / n,
                 static_cast<double>(tally.unscattered) / n);
-    bool& logScale = state.ui.panels.logScale;
     ImGui::Checkbox("log scale", &logScale);
     std::vector<float> values = perSteradian(tally);
     if (logScale) {

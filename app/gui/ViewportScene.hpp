@@ -4,7 +4,6 @@
 #include "render/Renderer.hpp"
 
 #include <cstdint>
-
 #include <optional>
 
 namespace dropscope::gui {
@@ -35,7 +34,8 @@ class ViewportScene {
 public:
     explicit ViewportScene(const render::GlFunctions& gl) : renderer_(gl) {}
 
-    // Rebuilds what changed, fits or clips the camera, and draws into the bound framebuffer.
+    // Rebuilds the shapes and layers when the key changed, fits or clips the camera, and draws into the
+    // bound framebuffer.
     void draw(AppState& state, int width, int height);
 
     // The bounds of the shapes as last drawn (render::sceneBounds): they size the source handles.
