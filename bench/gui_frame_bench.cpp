@@ -4,14 +4,15 @@
 // tooltip). A frame is App::frame followed by glFinish. Measured, interleaved so that load drift reaches
 // all alike:
 //   steady   nothing changes: ImGui's panels, the pick, and the renderer's draw of uploaded data;
-//   rebuild  every frame rebuilds the layers (what a change of a view option costs);
+//   rebuild  every frame rebuilds the layers (what a change of a view option costs; here the selection
+//            changes);
 //   reference ViewportScene::draw alone on the same state: the 3D view without ImGui and picking.
 // docs/performance.md ("The app") has the figures.
 //
 // Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--png FILE]
-#include "gui/Actions.hpp"
 #include "gui/App.hpp"
 #include "gui/Screenshot.hpp"
+#include "gui/TraceActions.hpp"
 #include "gui/ViewportScene.hpp"
 #include "octree/CountArgument.hpp"
 #include "octree/Measure.hpp"
@@ -82,7 +83,8 @@ int run(const Options& options) {
     std::cout << "context: " << context.gl().describe() << "\n";
     Stopwatch loading;
     gui::App app(context.gl(), parseScene(cloudScene(options.droplets), "cloud"), {});
-    std::printf("scene: %zu droplets, app ready in %.2f s\n", app.state().document->shapeCount(), loading.seconds());
+    std::printf("scene: %zu droplets, app ready in %.2f s\n", app.state().scene.document().shapeCount(),
+                loading.seconds());
 
     gui::InputFrame input;
     input.windowWidth = input.framebufferWidth = kWidth;
@@ -92,26 +94,27 @@ int run(const Options& options) {
     input.mouseY = 380.0f;
     for (int k = 0; k < 3; ++k) app.frame(input);
 
-    app.state().fire.photons = options.paths;
-    app.state().fire.paths = options.paths;
-    app.state().layers.octree = true;
-    app.state().layers.octreeFilter.level = 2;
+    app.state().traces.fire.photons = options.paths;
+    app.state().traces.fire.paths = options.paths;
+    app.state().view.layers.octree = true;
+    app.state().view.layers.octreeFilter.level = 2;
     input.keysDown.set(gui::kKeySpace);
     app.frame(input);
     input.keysDown.reset(gui::kKeySpace);
     Stopwatch tracing;
-    while (app.state().job.running() || !app.state().trace) {
+    while (app.state().traces.job.running() || !app.state().traces.trace) {
         app.frame(input);
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     std::printf("traced %zu paths (%zu line vertices drawn) in %.2f s of frames\n",
-                app.state().trace->outcome.result.paths.size(), app.viewport().layers().lines.vertices().size(),
+                app.state().traces.trace->outcome.result.paths.size(), app.viewport().layers().lines.vertices().size(),
                 tracing.seconds());
 
     gui::ViewportScene reference(context.gl());
-    app.state().viewDirty = true;  // the reference uploads the same layers once, then only draws
-    reference.draw(app.state(), kWidth, kHeight);
+    reference.draw(app.state(), kWidth, kHeight);  // uploads the same layers once, then only draws
     Series steady, rebuild, alone;
+    // Droplet 0 selected for one timed frame and nothing again for the next: both rebuild, and the
+    // reference always draws the state it was built from (nothing selected).
     for (int k = 0; k < options.frames; ++k) {
         {
             Stopwatch watch;
@@ -119,8 +122,8 @@ int run(const Options& options) {
             context.gl().Finish();
             steady.ms.push_back(1e3 * watch.seconds());
         }
-        {
-            app.state().viewDirty = true;
+        for (const ShapeId selected : {ShapeId{0}, RayHit::kNone}) {
+            app.state().scene.selectShape(selected);
             Stopwatch watch;
             app.frame(input);
             context.gl().Finish();
@@ -146,7 +149,7 @@ int run(const Options& options) {
     Stopwatch rayTree;
     gui::fireRayTree(app.state());
     std::printf("ray tree on the UI thread (optical scene build included): %.1f ms, %zu events\n",
-                1e3 * rayTree.seconds(), app.state().rayTree ? app.state().rayTree->nodes.size() : 0);
+                1e3 * rayTree.seconds(), app.state().traces.rayTree ? app.state().traces.rayTree->nodes.size() : 0);
     if (!options.png.empty()) {
         app.frame(input);
         gui::writePng(gui::readFramebuffer(context.gl(), kWidth, kHeight), options.png);

@@ -1,15 +1,13 @@
 #include "gui/Actions.hpp"
 
 #include "gui/ShapeDescription.hpp"
+#include "gui/TraceActions.hpp"
 #include "results/AtomicFile.hpp"
 #include "results/PathsJsonl.hpp"
 #include "scene/SceneLoader.hpp"
 #include "scene/SceneWriter.hpp"
-#include "transport/OpticalScene.hpp"
 
-#include <algorithm>
 #include <ctime>
-#include <exception>
 #include <iomanip>
 #include <sstream>
 
@@ -24,132 +22,50 @@ std::string shapeLabel(const SceneDocument& document, ShapeId id) {
     return text;
 }
 
-void forgetTraces(AppState& state) {
-    state.trace.reset();
-    state.rayTree.reset();
-    state.rayTreeRay.reset();
-    state.traversal.reset();
-    state.selectedPath = -1;
-    state.selectedEvent = 0;
-}
-
 }  // namespace
 
 void undo(AppState& state) {
-    if (!state.document->canUndo()) return state.refuse("nothing to undo");
-    const std::string label = state.document->undoLabel();
-    state.document->undo();
-    state.say("undid: " + label);
+    SceneDocument& document = state.scene.document();
+    if (!document.canUndo()) return state.ui.status.refuse("nothing to undo");
+    const std::string label = document.undoLabel();
+    document.undo();
+    state.ui.status.say("undid: " + label);
 }
 
 void redo(AppState& state) {
-    if (!state.document->canRedo()) return state.refuse("nothing to redo");
-    const std::string label = state.document->redoLabel();
-    state.document->redo();
-    state.say("redid: " + label);
+    SceneDocument& document = state.scene.document();
+    if (!document.canRedo()) return state.ui.status.refuse("nothing to redo");
+    const std::string label = document.redoLabel();
+    document.redo();
+    state.ui.status.say("redid: " + label);
 }
 
 void deleteSelected(AppState& state) {
-    if (state.selected == RayHit::kNone || !state.document->octree().shape(state.selected)) {
-        return state.refuse("select a shape to delete (click it)");
+    SceneDocument& document = state.scene.document();
+    const ShapeId selected = state.scene.selectedShape();
+    if (selected == RayHit::kNone || !document.octree().shape(selected)) {
+        return state.ui.status.refuse("select a shape to delete (click it)");
     }
-    const std::string label = shapeLabel(*state.document, state.selected);
-    state.document->removeShape(state.selected);
-    state.selected = RayHit::kNone;
-    state.say("deleted " + label + " (Ctrl+Z brings it back)");
+    const std::string label = shapeLabel(document, selected);
+    document.removeShape(selected);
+    state.scene.selectShape(RayHit::kNone);
+    state.ui.status.say("deleted " + label + " (Ctrl+Z brings it back)");
 }
 
-bool placeDroplet(AppState& state, const Point& centre) {
+bool placeDroplet(AppState& state, const Point& center) {
     ShapeSpec spec;
     spec.kind = ShapeKind::Sphere;
-    spec.center = centre;
-    spec.radius = state.placementRadius;
-    spec.medium = state.placementMedium;
-    try {
-        const ShapeId id = state.document->addShape(spec);
-        state.selected = id;
+    spec.center = center;
+    spec.radius = state.placement.radius;
+    spec.medium = state.placement.medium;
+    return state.ui.status.attempt("droplet not placed", [&] {
+        const ShapeId id = state.scene.document().addShape(spec);
+        state.scene.selectShape(id);
         std::ostringstream text;
         text << "placed droplet " << id << " at ";
-        printPoint(text, centre) << ", radius " << state.placementRadius;
-        state.say(text.str());
-        return true;
-    } catch (const std::exception& error) {
-        state.refuse(std::string("droplet not placed: ") + error.what());
-        return false;
-    }
-}
-
-namespace {
-
-void startTrace(AppState& state, bool automatic) {
-    state.firedRevision = state.document->revision();
-    state.retraceWanted = false;
-    if (state.document->sources().empty()) return state.refuse("nothing to fire: add a source first (Fire panel)");
-    TraceSettings settings;
-    settings.photons = std::max<std::uint64_t>(state.fire.photons, 1);
-    settings.paths = std::min(state.fire.paths, settings.photons);
-    settings.seed = state.fire.seed;
-    std::vector<ShapeId> slots;
-    Scene scene = state.document->toScene(&slots);
-    state.pendingSlots = std::move(slots);
-    state.job.start(std::move(scene), settings);
-    state.automaticTrace = automatic;
-    if (!automatic) state.say("tracing " + std::to_string(settings.photons) + " photons ...");
-}
-
-void traceRayTree(AppState& state, bool automatic) {
-    state.rayTreeRevision = state.document->revision();
-    const auto& sources = state.document->sources();
-    if (sources.empty()) return state.refuse("nothing to fire: add a source first (Fire panel)");
-    const Source& source = sources[selectedSourceIndex(state, sources)];
-    try {
-        const OpticalScene optical(state.document->toScene());
-        const Ray ray{source.origin, source.direction};
-        state.rayTree = traceRayTree(optical, ray, 1.0, RayTreeSettings{});
-        state.rayTreeRay = ray;
-        state.layers.rayTree = true;
-        state.viewDirty = true;
-        if (!automatic) {
-            state.say("ray tree: " + std::to_string(state.rayTree->nodes.size()) + " events, " +
-                      std::to_string(state.rayTree->absorbed) + " absorbed");
-        }
-    } catch (const std::exception& error) {
-        state.refuse(std::string("ray tree failed: ") + error.what());
-    }
-}
-
-}  // namespace
-
-void fireTrace(AppState& state) { startTrace(state, false); }
-void fireTraceAutomatically(AppState& state) { startTrace(state, true); }
-
-void cancelTrace(AppState& state) {
-    if (!state.job.running()) return;
-    state.job.cancel();
-    state.say("trace cancelled; the photons traced so far are shown");
-}
-
-void fireRayTree(AppState& state) { traceRayTree(state, false); }
-
-void updateTraces(AppState& state) {
-    if (auto outcome = state.job.takeResult()) {
-        if (outcome->error) {
-            state.refuse("trace failed: " + *outcome->error);
-        } else {
-            std::ostringstream text;
-            text << (outcome->result.partial ? "trace stopped: " : "traced ") << outcome->result.photons
-                 << " photons in " << std::fixed << std::setprecision(2) << outcome->result.seconds << " s";
-            state.trace = TraceShown{std::move(*outcome), std::move(state.pendingSlots), nullptr};
-            const auto paths = static_cast<int>(state.trace->outcome.result.paths.size());
-            selectEvent(state, state.selectedPath < paths ? state.selectedPath : -1, state.selectedEvent);
-            state.viewDirty = true;
-            if (!state.automaticTrace) state.say(text.str());
-        }
-    }
-    const std::uint64_t revision = state.document->revision();
-    if (!state.fire.live) return;
-    if (state.trace && !state.job.running() && state.firedRevision != revision) fireTraceAutomatically(state);
-    if (state.rayTree && state.rayTreeRevision != revision) traceRayTree(state, true);
+        printPoint(text, center) << ", radius " << state.placement.radius;
+        state.ui.status.say(text.str());
+    });
 }
 
 MediumId firstDropletMedium(const SceneDocument& document) {
@@ -159,93 +75,48 @@ MediumId firstDropletMedium(const SceneDocument& document) {
     return document.ambient();
 }
 
-void selectEvent(AppState& state, int path, int event) {
-    state.traversal.reset();
-    state.viewDirty = true;
-    if (!state.trace || path < 0 || path >= static_cast<int>(state.trace->outcome.result.paths.size())) {
-        state.selectedPath = -1;
-        return;
-    }
-    const auto& events = state.trace->outcome.result.paths[static_cast<std::size_t>(path)].events;
-    state.selectedPath = path;
-    state.selectedEvent = std::clamp(event, 0, std::max(0, static_cast<int>(events.size()) - 1));
-    if (events.empty()) return;
-    const Event& from = events[static_cast<std::size_t>(state.selectedEvent)];
-    if (from.type == EventType::Escape || from.type == EventType::Absorb || from.type == EventType::Lost) return;
-    // The segment leaving this event, searched in the octree of the traced scene (built once per trace):
-    // the cells visited and the shapes tested, as the photon saw them.
-    if (!state.trace->octree) {
-        const Scene& scene = state.trace->outcome.scene;
-        std::vector<std::unique_ptr<Shape>> shapes;
-        for (const auto& shape : scene.shapes) shapes.push_back(shape->clone());
-        state.trace->octree = std::make_shared<const Octree>(std::move(shapes), scene.octree);
-    }
-    state.traversal = render::traceTraversal(*state.trace->octree, Ray{from.position, from.direction});
-}
-
-void stepEvent(AppState& state, int delta) {
-    if (state.selectedPath < 0) {
-        if (state.trace && !state.trace->outcome.result.paths.empty()) selectEvent(state, 0, 0);
-        return;
-    }
-    selectEvent(state, state.selectedPath, state.selectedEvent + delta);
-}
-
 bool openScene(AppState& state, const std::filesystem::path& file) {
-    try {
+    return state.ui.status.attempt("could not open", [&] {
         auto document = std::make_unique<SceneDocument>(loadScene(file));
-        state.job.discard();  // a run of the old scene must not arrive as this one's
-        state.document = std::move(document);
-        state.scenePath = file;
-        state.selected = RayHit::kNone;
-        state.selectedSource = 0;
-        state.placementMedium = firstDropletMedium(*state.document);
-        forgetTraces(state);
-        state.fitRequested = !state.document->view();
-        if (const auto& view = state.document->view()) state.camera = render::Camera::fromView(*view);
-        state.viewDirty = true;
-        state.say("opened " + file.string() + ": " + std::to_string(state.document->shapeCount()) + " shapes");
-        return true;
-    } catch (const std::exception& error) {
-        state.refuse(std::string("could not open: ") + error.what());
-        return false;
-    }
+        state.traces.job.discard();  // a run of the old scene must not arrive as this one's
+        state.scene.replace(std::move(document), file);
+        state.ui.panels = {};
+        const SceneDocument& opened = state.scene.document();
+        state.placement.medium = firstDropletMedium(opened);
+        forgetTraces(state.traces);
+        state.view.fitRequested = !opened.view();
+        if (const auto& view = opened.view()) state.view.camera = render::Camera::fromView(*view);
+        state.ui.status.say("opened " + file.string() + ": " + std::to_string(opened.shapeCount()) + " shapes");
+    });
 }
 
 bool saveScene(AppState& state, const std::filesystem::path& file) {
     if (file.empty()) {
-        state.refuse("give a file name to save the scene to");
+        state.ui.status.refuse("give a file name to save the scene to");
         return false;
     }
-    try {
-        Scene scene = state.document->toScene();
-        scene.view = state.camera.toView();
+    return state.ui.status.attempt("not saved", [&] {
+        Scene scene = state.scene.document().toScene();
+        scene.view = state.view.camera.toView();
         writeFileAtomically(file, [&](std::ostream& out) { writeScene(scene, out); });
-        state.scenePath = file;
-        state.say("saved " + file.string());
-        return true;
-    } catch (const std::exception& error) {
-        state.refuse(std::string("not saved: ") + error.what());
-        return false;
-    }
+        state.scene.setFile(file);
+        state.ui.status.say("saved " + file.string());
+    });
 }
 
 bool exportPaths(AppState& state, const std::filesystem::path& file) {
-    if (!state.trace || state.trace->outcome.result.paths.empty()) {
-        state.refuse("no recorded paths to export: fire photons first");
+    if (!state.traces.trace || state.traces.trace->outcome.result.paths.empty()) {
+        state.ui.status.refuse("no recorded paths to export: fire photons first");
         return false;
     }
-    try {
-        const TraceShown& shown = *state.trace;
+    return state.ui.status.attempt("paths not exported", [&] {
+        const TraceShown& shown = *state.traces.trace;
         writeFileAtomically(file, [&](std::ostream& out) {
             writePathsJsonl(shown.outcome.result.paths, shown.outcome.scene.media, out);
         });
-        state.say("exported " + std::to_string(shown.outcome.result.paths.size()) + " paths to " + file.string());
-        return true;
-    } catch (const std::exception& error) {
-        state.refuse(std::string("paths not exported: ") + error.what());
-        return false;
-    }
+        state.ui.status.say("exported " + std::to_string(shown.outcome.result.paths.size()) + " paths to " +
+                            file.string());
+    });
 }
 
 std::filesystem::path timestampedScreenshotPath(const std::filesystem::path& directory,

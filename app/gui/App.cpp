@@ -4,18 +4,18 @@
 #include "gui/Panels.hpp"
 #include "gui/Screenshot.hpp"
 #include "gui/Shortcuts.hpp"
+#include "gui/TraceActions.hpp"
 #include "gui/platform/ImGuiInput.hpp"
 #include "gui/platform/ImGuiRenderer.hpp"
 
 #include <imgui.h>
 
 #include <chrono>
-#include <exception>
 
 namespace dropscope::gui {
 
 App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
-    : gl_(gl), options_(options), iniFile_(options.iniFile.string()) {
+    : gl_(gl), options_(options), iniFile_(options.iniFile.string()), state_(std::move(scene), options.scenePath) {
     context_ = ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = iniFile_.empty() ? nullptr : iniFile_.c_str();
@@ -24,25 +24,25 @@ App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
     imguiRenderer_ = std::make_unique<ImGuiRenderer>(gl);
     scene_ = std::make_unique<ViewportScene>(gl);
 
-    const std::optional<SceneView> view = scene.view;
-    state_.document = std::make_unique<SceneDocument>(std::move(scene));
+    const SceneDocument& document = state_.scene.document();
     // A debugger shows where the light comes from (with the source's handles) and, once a path segment is
     // selected, the octree cells its search visited.
-    state_.layers.sources = true;
-    state_.layers.traversal = true;
-    state_.scenePath = options.scenePath;
-    state_.screenshotDirectory = options.screenshotDirectory;
-    if (view) {
-        state_.camera = render::Camera::fromView(*view);
-        state_.fitRequested = false;
+    state_.view.layers.sources = true;
+    state_.view.layers.traversal = true;
+    state_.ui.screenshotDirectory = options.screenshotDirectory;
+    state_.ui.itemProbe = options.itemProbe;
+    if (const auto& view = document.view()) {
+        state_.view.camera = render::Camera::fromView(*view);
+        state_.view.fitRequested = false;
     }
-    state_.placementMedium = firstDropletMedium(*state_.document);
-    state_.say(options.scenePath.empty() ? "the bundled default scene (File > Save as keeps your changes) - F1 for help"
-                                         : "opened " + options.scenePath.string() + " - F1 for help");
+    state_.placement.medium = firstDropletMedium(document);
+    state_.ui.status.say(options.scenePath.empty()
+                             ? "the bundled default scene (File > Save as keeps your changes) - F1 for help"
+                             : "opened " + options.scenePath.string() + " - F1 for help");
 }
 
 App::~App() {
-    state_.job.cancel();
+    state_.traces.job.cancel();
     imguiRenderer_.reset();
     scene_.reset();
     ImGui::DestroyContext(context_);
@@ -52,16 +52,16 @@ void App::buildUi() {
     handleShortcuts(state_);
     drawMainMenu(state_);
     drawScenePanel(state_);
-    drawMediaPanel(state_);
-    drawPlacementPanel(state_);
+    drawMediaPanel(state_.scene.document(), state_.ui.status);
+    drawPlacementPanel(state_.placement, state_.view.slice, state_.scene.document());
     drawFirePanel(state_);
     drawOctreePanel(state_);
-    drawPathPanel(state_);
-    drawResultsPanel(state_);
+    drawPathPanel(state_.view.layers, state_.traces);
+    drawResultsPanel(state_.traces, state_.ui.panels.logScale);
     drawFilePrompts(state_);
-    drawHelpWindow(state_);
+    drawHelpWindow(state_.ui);
     drawStatusBar(state_);
-    controls_.handle(state_);
+    controls_.handle(state_, scene_->sceneBounds());
 }
 
 void App::frame(const InputFrame& input) {
@@ -76,13 +76,13 @@ void App::frame(const InputFrame& input) {
     const int height = std::max(input.framebufferHeight, 1);
     scene_->draw(state_, width, height);
     imguiRenderer_->render(ImGui::GetDrawData());
-    if (state_.screenshot && state_.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
+    if (state_.ui.screenshot && state_.ui.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
 }
 
 void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {
-    const ScreenshotRequest request = *state_.screenshot;
-    state_.screenshot.reset();
-    try {
+    const ScreenshotRequest request = *state_.ui.screenshot;
+    state_.ui.screenshot.reset();
+    state_.ui.status.attempt("screenshot not saved", [&] {
         snapshot::Image image;
         if (request.panels) {
             image = readFramebuffer(gl_, framebufferWidth, framebufferHeight);
@@ -92,11 +92,10 @@ void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {
             image = renderViewport(gl_, *scene_, state_, width, height);
         }
         writePng(image, request.file);
-        state_.lastScreenshot = request.file;
-        state_.say("screenshot saved: " + std::filesystem::absolute(request.file).lexically_normal().string());
-    } catch (const std::exception& error) {
-        state_.refuse(std::string("screenshot not saved: ") + error.what());
-    }
+        state_.ui.lastScreenshot = request.file;
+        state_.ui.status.say("screenshot saved: " +
+                             std::filesystem::absolute(request.file).lexically_normal().string());
+    });
 }
 
 }  // namespace dropscope::gui

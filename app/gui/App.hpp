@@ -2,6 +2,7 @@
 
 #include "gui/AppState.hpp"
 #include "gui/FrameClient.hpp"
+#include "gui/ItemProbe.hpp"
 #include "gui/ViewportControls.hpp"
 #include "gui/ViewportScene.hpp"
 #include "render/GlFunctions.hpp"
@@ -21,6 +22,7 @@ struct AppOptions {
     std::filesystem::path scenePath;                  // where the scene came from (Save writes there); may be empty
     std::filesystem::path iniFile;                    // ImGui's panel layout, remembered between runs; empty: not kept
     std::filesystem::path screenshotDirectory = ".";  // where F12 puts its timestamped PNGs
+    ItemProbe itemProbe;                              // the UI tests' (ItemProbe.hpp); none in the app
 };
 
 // The interactive app: the 3D view with its mouse controls, the panels, the shortcuts, screenshots.
@@ -34,7 +36,7 @@ public:
     App& operator=(const App&) = delete;
 
     void frame(const InputFrame& input) override;
-    bool quitRequested() const override { return state_.quit; }
+    bool quitRequested() const override { return state_.ui.quit; }
 
     AppState& state() { return state_; }
     const AppState& state() const { return state_; }

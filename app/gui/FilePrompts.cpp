@@ -25,21 +25,13 @@ const char* promptTitle(FilePrompt prompt) {
 std::string suggestedName(const AppState& state, FilePrompt prompt) {
     switch (prompt) {
     case FilePrompt::Open:
-    case FilePrompt::SaveAs: return state.scenePath.empty() ? "scene.json" : state.scenePath.string();
+    case FilePrompt::SaveAs: return state.scene.file().empty() ? "scene.json" : state.scene.file().string();
     case FilePrompt::ExportPaths: return "paths.jsonl";
     case FilePrompt::Screenshot: return "dropscope.png";
     case FilePrompt::None: break;
     }
     return "";
 }
-
-// The screenshot prompt's own choices: panels or the 3D view alone, the window's size or another.
-struct ScreenshotChoice {
-    bool panels = false;
-    bool windowSize = true;
-    int width = 1920;
-    int height = 1080;
-};
 
 void screenshotOptions(ScreenshotChoice& choice) {
     ImGui::Checkbox("with the panels", &choice.panels);
@@ -56,35 +48,36 @@ void screenshotOptions(ScreenshotChoice& choice) {
 }  // namespace
 
 void drawFilePrompts(AppState& state) {
-    static std::string path;
-    static FilePrompt opened = FilePrompt::None;
-    static ScreenshotChoice choice;
-    if (state.prompt == FilePrompt::None) return;
-    const char* title = promptTitle(state.prompt);
-    if (opened != state.prompt) {
-        path = suggestedName(state, state.prompt);
-        opened = state.prompt;
+    if (state.ui.prompt == FilePrompt::None) return;
+    FilePromptFields& fields = state.ui.panels.filePrompt;
+    std::string& path = fields.path;
+    const ScreenshotChoice& choice = fields.screenshot;
+    const char* title = promptTitle(state.ui.prompt);
+    if (fields.filledFor != state.ui.prompt) {
+        path = suggestedName(state, state.ui.prompt);
+        fields.filledFor = state.ui.prompt;
         ImGui::OpenPopup(title);
     }
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
                             ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        state.prompt = opened = FilePrompt::None;
+        state.ui.prompt = fields.filledFor = FilePrompt::None;
         return;
     }
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     const bool entered = ImGui::InputText("file", &path, ImGuiInputTextFlags_EnterReturnsTrue);
-    if (state.prompt == FilePrompt::Screenshot) screenshotOptions(choice);
+    if (state.ui.prompt == FilePrompt::Screenshot) screenshotOptions(fields.screenshot);
     bool done = false;
     if (ImGui::Button("OK") || entered) {
-        switch (state.prompt) {
+        switch (state.ui.prompt) {
         case FilePrompt::Open: done = openScene(state, path); break;
         case FilePrompt::SaveAs: done = saveScene(state, path); break;
         case FilePrompt::ExportPaths: done = exportPaths(state, path); break;
         case FilePrompt::Screenshot:
             // Two frames later: this dialog has closed and is not in the picture.
-            state.screenshot = ScreenshotRequest{path, choice.panels, choice.windowSize ? 0 : std::max(choice.width, 1),
-                                                 choice.windowSize ? 0 : std::max(choice.height, 1), 2};
+            state.ui.screenshot =
+                ScreenshotRequest{path, choice.panels, choice.windowSize ? 0 : std::max(choice.width, 1),
+                                  choice.windowSize ? 0 : std::max(choice.height, 1), 2};
             done = true;
             break;
         case FilePrompt::None: break;
@@ -94,7 +87,7 @@ void drawFilePrompts(AppState& state) {
     if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(kKeyEscape, false)) done = true;
     if (done) {
         ImGui::CloseCurrentPopup();
-        state.prompt = opened = FilePrompt::None;
+        state.ui.prompt = fields.filledFor = FilePrompt::None;
     }
     ImGui::EndPopup();
 }

@@ -1,14 +1,13 @@
-#include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
 #include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
+#include "gui/TraceActions.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <exception>
 
 namespace dropscope::gui {
 
@@ -21,15 +20,16 @@ constexpr std::uint64_t kMaxPhotons = 1'000'000'000;
 constexpr std::uint64_t kMaxPaths = 100'000;
 
 void sourceEditor(AppState& state) {
-    std::vector<Source> sources = state.document->sources();
-    if (!sources.empty()) state.selectedSource = selectedSourceIndex(state, sources);
+    SceneState& scene = state.scene;
+    std::vector<Source> sources = scene.document().sources();
+    if (!sources.empty()) scene.selectSource(scene.selectedSource());
     for (std::size_t k = 0; k < sources.size(); ++k) {
         const std::string label = "source " + std::to_string(k) + ": " + std::string(sourceTypeName(sources[k].type));
-        if (ImGui::Selectable(label.c_str(), k == state.selectedSource)) state.selectedSource = k;
+        if (ImGui::Selectable(label.c_str(), k == scene.selectedSource())) scene.selectSource(k);
     }
     bool changed = false;
     if (!sources.empty()) {
-        Source& source = sources[state.selectedSource];
+        Source& source = sources[scene.selectedSource()];
         int type = static_cast<int>(source.type);
         if (ImGui::Combo("type", &type, kSourceTypes, 3)) {
             source.type = static_cast<SourceType>(type);
@@ -43,7 +43,7 @@ void sourceEditor(AppState& state) {
                 source.direction = Direction(direction);
                 changed = true;
             } else {
-                state.refuse("a direction must be a non-zero vector");
+                state.ui.status.refuse("a direction must be a non-zero vector");
             }
         }
         if (source.type == SourceType::Beam) {
@@ -52,42 +52,37 @@ void sourceEditor(AppState& state) {
         }
     }
     if (ImGui::Button("Add source")) {
+        const render::Camera& camera = state.view.camera;
         Source source;
-        source.origin = Point(state.camera.eye.x, state.camera.eye.y, state.camera.eye.z);
-        source.direction =
-            Direction(Point(state.camera.target.x, state.camera.target.y, state.camera.target.z) - source.origin);
+        source.origin = Point(camera.eye.x, camera.eye.y, camera.eye.z);
+        source.direction = Direction(Point(camera.target.x, camera.target.y, camera.target.z) - source.origin);
         sources.push_back(source);
-        state.selectedSource = sources.size() - 1;
+        scene.selectSource(sources.size() - 1);
         changed = true;
     }
     ImGui::SameLine();
     if (ImGui::Button("Remove source") && !sources.empty()) {
-        sources.erase(sources.begin() + static_cast<std::ptrdiff_t>(state.selectedSource));
-        state.selectedSource = 0;
+        sources.erase(sources.begin() + static_cast<std::ptrdiff_t>(scene.selectedSource()));
+        scene.selectSource(0);
         changed = true;
     }
-    if (changed) {
-        try {
-            state.document->setSources(std::move(sources));
-            state.viewDirty = true;
-        } catch (const std::exception& error) {
-            state.refuse(std::string("source not changed: ") + error.what());
-        }
-    }
+    if (changed)
+        state.ui.status.attempt("source not changed", [&] { scene.document().setSources(std::move(sources)); });
 }
 
 void fireControls(AppState& state) {
+    FireSettings& fire = state.traces.fire;
     const std::uint64_t one = 1;
-    ImGui::InputScalar("photons", ImGuiDataType_U64, &state.fire.photons, &one);
-    ImGui::InputScalar("paths kept", ImGuiDataType_U64, &state.fire.paths, &one);
-    ImGui::InputScalar("seed", ImGuiDataType_U64, &state.fire.seed, &one);
-    state.fire.photons = std::clamp<std::uint64_t>(state.fire.photons, 1, kMaxPhotons);
-    state.fire.paths = std::min(state.fire.paths, kMaxPaths);
-    ImGui::Checkbox("live: trace again when the scene changes", &state.fire.live);
+    ImGui::InputScalar("photons", ImGuiDataType_U64, &fire.photons, &one);
+    ImGui::InputScalar("paths kept", ImGuiDataType_U64, &fire.paths, &one);
+    ImGui::InputScalar("seed", ImGuiDataType_U64, &fire.seed, &one);
+    fire.photons = std::clamp<std::uint64_t>(fire.photons, 1, kMaxPhotons);
+    fire.paths = std::min(fire.paths, kMaxPaths);
+    ImGui::Checkbox("live: trace again when the scene changes", &fire.live);
     if (ImGui::Button("Fire photons (Space)")) fireTrace(state);
     ImGui::SameLine();
     if (ImGui::Button("Fire ray tree (R)")) fireRayTree(state);
-    if (state.job.running()) drawTraceProgress(state, ImGui::GetContentRegionAvail().x - 60.0f);
+    if (state.traces.job.running()) drawTraceProgress(state, ImGui::GetContentRegionAvail().x - 60.0f);
 }
 
 }  // namespace

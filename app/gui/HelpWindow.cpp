@@ -7,11 +7,11 @@
 
 namespace dropscope::gui {
 
-void drawHelpWindow(AppState& state) {
-    if (!state.showHelp) return;
+void drawHelpWindow(UiState& ui) {
+    if (!ui.showHelp) return;
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
                             ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-    if (!ImGui::Begin("Help", &state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (!ImGui::Begin("Help", &ui.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
         return;
     }

@@ -8,43 +8,47 @@ namespace dropscope::gui {
 void drawMainMenu(AppState& state) {
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("Open scene...", "Ctrl+O")) state.prompt = FilePrompt::Open;
-        if (ImGui::MenuItem("Save scene", "Ctrl+S", false, !state.scenePath.empty())) saveScene(state, state.scenePath);
-        if (ImGui::MenuItem("Save scene as...")) state.prompt = FilePrompt::SaveAs;
+        FilePrompt& prompt = state.ui.prompt;
+        const std::filesystem::path& file = state.scene.file();
+        if (ImGui::MenuItem("Open scene...", "Ctrl+O")) prompt = FilePrompt::Open;
+        if (ImGui::MenuItem("Save scene", "Ctrl+S", false, !file.empty())) saveScene(state, file);
+        if (ImGui::MenuItem("Save scene as...")) prompt = FilePrompt::SaveAs;
         ImGui::Separator();
-        if (ImGui::MenuItem("Export paths (JSONL)...", nullptr, false, state.trace.has_value())) {
-            state.prompt = FilePrompt::ExportPaths;
+        if (ImGui::MenuItem("Export paths (JSONL)...", nullptr, false, state.traces.trace.has_value())) {
+            prompt = FilePrompt::ExportPaths;
         }
-        if (ImGui::MenuItem("Screenshot...")) state.prompt = FilePrompt::Screenshot;
+        if (ImGui::MenuItem("Screenshot...")) prompt = FilePrompt::Screenshot;
         ImGui::Separator();
-        if (ImGui::MenuItem("Quit", "Ctrl+Q")) state.quit = true;
+        if (ImGui::MenuItem("Quit", "Ctrl+Q")) state.ui.quit = true;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        const std::string undoText = state.document->canUndo() ? "Undo " + state.document->undoLabel() : "Undo";
-        const std::string redoText = state.document->canRedo() ? "Redo " + state.document->redoLabel() : "Redo";
-        if (ImGui::MenuItem(undoText.c_str(), "Ctrl+Z", false, state.document->canUndo())) undo(state);
-        if (ImGui::MenuItem(redoText.c_str(), "Ctrl+Y", false, state.document->canRedo())) redo(state);
-        if (ImGui::MenuItem("Delete selected", "Delete", false, state.selected != RayHit::kNone)) deleteSelected(state);
+        const SceneDocument& document = state.scene.document();
+        const std::string undoText = document.canUndo() ? "Undo " + document.undoLabel() : "Undo";
+        const std::string redoText = document.canRedo() ? "Redo " + document.redoLabel() : "Redo";
+        if (ImGui::MenuItem(undoText.c_str(), "Ctrl+Z", false, document.canUndo())) undo(state);
+        if (ImGui::MenuItem(redoText.c_str(), "Ctrl+Y", false, document.canRedo())) redo(state);
+        if (ImGui::MenuItem("Delete selected", "Delete", false, state.scene.selectedShape() != RayHit::kNone)) {
+            deleteSelected(state);
+        }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
-        if (ImGui::MenuItem("Fit to scene", "F")) state.fitRequested = true;
-        bool changed = false;
-        changed |= ImGui::MenuItem("Octree cells", "C", &state.layers.octree);
-        changed |= ImGui::MenuItem("Slice plane", "L", &state.slice.enabled);
-        changed |= ImGui::MenuItem("Sources", nullptr, &state.layers.sources);
-        changed |= ImGui::MenuItem("Paths", nullptr, &state.layers.paths);
-        changed |= ImGui::MenuItem("Ray tree", nullptr, &state.layers.rayTree);
-        changed |= ImGui::MenuItem("Event markers", nullptr, &state.layers.markers);
-        changed |= ImGui::MenuItem("Axes", nullptr, &state.layers.axes);
-        changed |= ImGui::MenuItem("Grid", nullptr, &state.layers.grid);
-        changed |= ImGui::MenuItem("Translucent shapes", nullptr, &state.layers.render.translucent);
-        state.viewDirty |= changed;
+        ViewState& view = state.view;
+        if (ImGui::MenuItem("Fit to scene", "F")) view.fitRequested = true;
+        ImGui::MenuItem("Octree cells", "C", &view.layers.octree);
+        ImGui::MenuItem("Slice plane", "L", &view.slice.enabled);
+        ImGui::MenuItem("Sources", nullptr, &view.layers.sources);
+        ImGui::MenuItem("Paths", nullptr, &view.layers.paths);
+        ImGui::MenuItem("Ray tree", nullptr, &view.layers.rayTree);
+        ImGui::MenuItem("Event markers", nullptr, &view.layers.markers);
+        ImGui::MenuItem("Axes", nullptr, &view.layers.axes);
+        ImGui::MenuItem("Grid", nullptr, &view.layers.grid);
+        ImGui::MenuItem("Translucent shapes", nullptr, &view.layers.render.translucent);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {
-        if (ImGui::MenuItem("Shortcuts and mouse", "F1")) state.showHelp = true;
+        if (ImGui::MenuItem("Shortcuts and mouse", "F1")) state.ui.showHelp = true;
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();

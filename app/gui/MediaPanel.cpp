@@ -4,15 +4,13 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include <exception>
-
 namespace dropscope::gui {
 
 namespace {
 
 // One medium's row: name, n, and its absorption as kappa or sigma (the form the file gave).
-void mediumRow(AppState& state, MediumId id) {
-    Medium medium = state.document->media()[id];
+void mediumRow(SceneDocument& document, StatusLine& status, MediumId id) {
+    Medium medium = document.media()[id];
     ImGui::PushID(static_cast<int>(id));
     bool changed = false;
     ImGui::TableNextRow();
@@ -38,43 +36,37 @@ void mediumRow(AppState& state, MediumId id) {
         }
     }
     if (changed) {
-        try {
-            state.document->setMedium(id, medium);
-            state.say("medium " + medium.name + " changed");
-        } catch (const std::exception& error) {
-            state.refuse(std::string("medium not changed: ") + error.what());
-        }
+        status.attempt("medium not changed", [&] {
+            document.setMedium(id, medium);
+            status.say("medium " + medium.name + " changed");
+        });
     }
     ImGui::PopID();
 }
 
 }  // namespace
 
-void drawMediaPanel(AppState& state) {
+void drawMediaPanel(SceneDocument& document, StatusLine& status) {
     placeNextPanel(PanelSide::Left, 0.36f, 0.15f);
     if (!ImGui::Begin("Media")) {
         ImGui::End();
         return;
     }
-    const auto& media = state.document->media();
-    ImGui::Text("ambient: %s (Enter applies an edit)", media.at(state.document->ambient()).name.c_str());
+    const auto& media = document.media();
+    ImGui::Text("ambient: %s (Enter applies an edit)", media.at(document.ambient()).name.c_str());
     if (ImGui::BeginTable("media", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("name");
         ImGui::TableSetupColumn("n");
         ImGui::TableSetupColumn("absorption");
         ImGui::TableHeadersRow();
-        for (MediumId id = 0; id < media.size(); ++id) mediumRow(state, id);
+        for (MediumId id = 0; id < media.size(); ++id) mediumRow(document, status, id);
         ImGui::EndTable();
     }
     if (ImGui::Button("Add medium")) {
         Medium medium;
         medium.name = "medium" + std::to_string(media.size());
         medium.n = 1.33;
-        try {
-            state.document->addMedium(medium);
-        } catch (const std::exception& error) {
-            state.refuse(std::string("no medium added: ") + error.what());
-        }
+        status.attempt("no medium added", [&] { document.addMedium(medium); });
     }
     ImGui::End();
 }

@@ -9,17 +9,14 @@ namespace dropscope::gui {
 
 namespace {
 
-// The octree's per-level statistics walk every cell: computed again only when the document changed.
-const std::vector<LevelStatistics>& levelStatistics(const SceneDocument& document) {
-    static const SceneDocument* cachedDocument = nullptr;
-    static std::uint64_t cachedRevision = 0;
-    static std::vector<LevelStatistics> cached;
-    if (cachedDocument != &document || cachedRevision != document.revision() || cached.empty()) {
-        cached = document.octree().statistics();
-        cachedDocument = &document;
-        cachedRevision = document.revision();
+const std::vector<LevelStatistics>& levelStatistics(OctreeStatistics& cache, const SceneState& scene) {
+    const SceneDocument& document = scene.document();
+    if (cache.levels.empty() || cache.generation != scene.generation() || cache.revision != document.revision()) {
+        cache.levels = document.octree().statistics();
+        cache.generation = scene.generation();
+        cache.revision = document.revision();
     }
-    return cached;
+    return cache.levels;
 }
 
 void statisticsTable(const std::vector<LevelStatistics>& statistics) {
@@ -46,15 +43,15 @@ void statisticsTable(const std::vector<LevelStatistics>& statistics) {
     ImGui::EndTable();
 }
 
-void traversalList(AppState& state) {
-    if (!state.traversal || !state.trace) {
+void traversalList(const TraceState& traces, render::LayerOptions& layers) {
+    if (!traces.traversal || !traces.trace) {
         ImGui::TextDisabled("select a path event (Paths panel) to see its segment's traversal");
         return;
     }
-    const TraversalRecord& record = state.traversal->record;
-    if (ImGui::Checkbox("draw the traversal", &state.layers.traversal)) state.viewDirty = true;
+    const TraversalRecord& record = traces.traversal->record;
+    ImGui::Checkbox("draw the traversal", &layers.traversal);
     // The traversal ran in the traced scene, whose ids are compact; the panel shows the document's.
-    const auto& slots = state.trace->slotOfShape;
+    const auto& slots = traces.trace->slotOfShape;
     const auto slot = [&](ShapeId id) { return id < slots.size() ? slots[id] : id; };
     ImGui::Text("%zu cells visited, %zu shape tests, hit %s", record.cells.size(), record.shapesTested.size(),
                 record.hit ? ("shape " + std::to_string(slot(record.hit.shape))).c_str() : "nothing");
@@ -79,10 +76,11 @@ void drawOctreePanel(AppState& state) {
         ImGui::End();
         return;
     }
-    const std::vector<LevelStatistics>& statistics = levelStatistics(*state.document);
+    const std::vector<LevelStatistics>& statistics = levelStatistics(state.ui.panels.octreeStatistics, state.scene);
     const int deepest = std::max(0, static_cast<int>(statistics.size()) - 1);
-    render::OctreeFilter& filter = state.layers.octreeFilter;
-    const bool toggled = ImGui::Checkbox("show cells (C)", &state.layers.octree);
+    render::LayerOptions& layers = state.view.layers;
+    render::OctreeFilter& filter = layers.octreeFilter;
+    ImGui::Checkbox("show cells (C)", &layers.octree);
     bool changed = ImGui::SliderInt("depth ([ ])", &filter.level, 0, deepest);
     int mode = filter.mode == render::OctreeFilter::Mode::UpToLevel    ? 1
                : filter.mode == render::OctreeFilter::Mode::LeavesOnly ? 2
@@ -96,11 +94,10 @@ void drawOctreePanel(AppState& state) {
                   : mode == 2 ? render::OctreeFilter::Mode::LeavesOnly
                               : render::OctreeFilter::Mode::OnlyLevel;
     changed |= ImGui::Checkbox("occupancy colour", &filter.occupancyColour);
-    if (changed) state.layers.octree = true;  // moving a filter means: show me
-    state.viewDirty |= toggled || changed;
+    if (changed) layers.octree = true;  // moving a filter means: show me
     statisticsTable(statistics);
     ImGui::Separator();
-    traversalList(state);
+    traversalList(state.traces, layers);
     ImGui::End();
 }
 

@@ -1,6 +1,6 @@
 #include "gui/PanelWidgets.hpp"
 
-#include "gui/Actions.hpp"
+#include "gui/TraceActions.hpp"
 
 #include <imgui.h>
 
@@ -33,14 +33,15 @@ bool mediumCombo(const char* label, const SceneDocument& document, MediumId& med
     return changed;
 }
 
-void recordItemRect(AppState& state, const std::string& name) {
+void reportItemRect(const ItemProbe& probe, std::string_view name) {
+    if (!probe) return;
     const ImVec2 min = ImGui::GetItemRectMin();
     const ImVec2 max = ImGui::GetItemRectMax();
-    state.itemRects[name] = ItemRect{min.x, min.y, max.x, max.y};
+    probe(name, ItemRect{min.x, min.y, max.x, max.y});
 }
 
 void drawTraceProgress(AppState& state, float barWidth) {
-    const TraceJobProgress progress = state.job.progress();
+    const TraceJobProgress progress = state.traces.job.progress();
     const float fraction =
         progress.total > 0 ? static_cast<float>(progress.done) / static_cast<float>(progress.total) : 0.0f;
     const std::string label = progress.buildingOctree

@@ -2,6 +2,8 @@
 
 #include "gui/AppState.hpp"
 
+#include <string_view>
+
 namespace dropscope::gui {
 
 // Widgets more than one panel uses.
@@ -10,8 +12,8 @@ namespace dropscope::gui {
 bool inputVector3(const char* label, Eigen::Vector3d& v, const char* format = "%.6g");
 // A choice among the document's media; true when another one was chosen.
 bool mediumCombo(const char* label, const SceneDocument& document, MediumId& medium);
-// Notes where the last widget was drawn this frame under `name` (AppState::itemRects).
-void recordItemRect(AppState& state, const std::string& name);
+// Tells the probe, if there is one, where the last widget was drawn, under `name`.
+void reportItemRect(const ItemProbe& probe, std::string_view name);
 // The running trace's progress bar (or "building the octree") with its Cancel button, on one line.
 void drawTraceProgress(AppState& state, float barWidth);
 

@@ -4,18 +4,26 @@
 
 namespace dropscope::gui {
 
-// One function a panel (house style: one file each). Each reads and edits the state; edits of the
-// scene go through the document, so every one of them is undoable.
+// One function a panel (house style: one file each), named by its file. Each reads and edits the parts
+// of the state it shows (the whole state when it spans several); edits of the scene go through the
+// document, so every one of them is undoable.
 void drawMainMenu(AppState& state);
-void drawScenePanel(AppState& state);      // ScenePanel.cpp: shapes, selected shape, add, cloud
-void drawMediaPanel(AppState& state);      // MediaPanel.cpp
-void drawPlacementPanel(AppState& state);  // PlacementPanel.cpp: placement mode and plane, slice plane
-void drawFirePanel(AppState& state);       // FirePanel.cpp: sources, fire, progress
-void drawOctreePanel(AppState& state);     // OctreePanel.cpp: levels, statistics, traversal
-void drawPathPanel(AppState& state);       // PathPanel.cpp: photons and their events
-void drawResultsPanel(AppState& state);    // ResultsPanel.cpp: fractions, angular distribution
-void drawFilePrompts(AppState& state);     // FilePrompts.cpp: open, save as, export, screenshot
-void drawHelpWindow(AppState& state);      // HelpWindow.cpp
-void drawStatusBar(AppState& state);       // StatusBar.cpp
+// Shapes, the selected shape's editor, add, droplet cloud.
+void drawScenePanel(AppState& state);
+void drawMediaPanel(SceneDocument& document, StatusLine& status);
+// Placement mode and plane, slice plane.
+void drawPlacementPanel(PlacementState& placement, SliceSettings& slice, const SceneDocument& document);
+// Sources, fire, progress.
+void drawFirePanel(AppState& state);
+// Levels, statistics, traversal.
+void drawOctreePanel(AppState& state);
+// The recorded photons and their events.
+void drawPathPanel(render::LayerOptions& layers, TraceState& traces);
+// Fractions and the angular distribution (on a log scale or not).
+void drawResultsPanel(const TraceState& traces, bool& logScale);
+// Open, save as, export, screenshot.
+void drawFilePrompts(AppState& state);
+void drawHelpWindow(UiState& ui);
+void drawStatusBar(AppState& state);
 
 }  // namespace dropscope::gui

@@ -1,6 +1,6 @@
-#include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
 #include "gui/Panels.hpp"
+#include "gui/TraceActions.hpp"
 
 #include <imgui.h>
 
@@ -11,8 +11,8 @@ namespace dropscope::gui {
 
 namespace {
 
-void photonList(AppState& state) {
-    const auto& paths = state.trace->outcome.result.paths;
+void photonList(TraceState& traces) {
+    const auto& paths = traces.trace->outcome.result.paths;
     ImGui::BeginChild("photons", ImVec2(0.0f, 80.0f), true);
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(paths.size()));
@@ -22,26 +22,27 @@ void photonList(AppState& state) {
             const std::string label = "photon " + std::to_string(path.photon) + ": " +
                                       std::string(photonFateName(path.fate)) + ", " +
                                       std::to_string(path.events.size()) + " events";
-            if (ImGui::Selectable(label.c_str(), row == state.selectedPath)) selectEvent(state, row, 0);
+            if (ImGui::Selectable(label.c_str(), row == traces.selectedPath)) selectEvent(traces, row, 0);
         }
     }
     ImGui::EndChild();
 }
 
-std::string shapeText(const AppState& state, ShapeId shape) {
+std::string shapeText(const TraceShown& trace, ShapeId shape) {
     if (shape == RayHit::kNone) return "-";
-    const auto& slots = state.trace->slotOfShape;
+    const auto& slots = trace.slotOfShape;
     return std::to_string(shape < slots.size() ? slots[shape] : shape);
 }
 
-void eventTable(AppState& state) {
-    const PhotonPath& path = state.trace->outcome.result.paths[static_cast<std::size_t>(state.selectedPath)];
-    const auto& media = state.trace->outcome.scene.media;
-    if (ImGui::ArrowButton("previous", ImGuiDir_Left)) stepEvent(state, -1);
+void eventTable(TraceState& traces) {
+    const TraceShown& trace = *traces.trace;
+    const PhotonPath& path = trace.outcome.result.paths[static_cast<std::size_t>(traces.selectedPath)];
+    const auto& media = trace.outcome.scene.media;
+    if (ImGui::ArrowButton("previous", ImGuiDir_Left)) stepEvent(traces, -1);
     ImGui::SameLine();
-    if (ImGui::ArrowButton("next", ImGuiDir_Right)) stepEvent(state, +1);
+    if (ImGui::ArrowButton("next", ImGuiDir_Right)) stepEvent(traces, +1);
     ImGui::SameLine();
-    ImGui::Text("event %d of %zu (Left/Right keys)", state.selectedEvent + 1, path.events.size());
+    ImGui::Text("event %d of %zu (Left/Right keys)", traces.selectedEvent + 1, path.events.size());
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
                                   ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("events", 8, flags, ImVec2(0.0f, 150.0f))) return;
@@ -55,9 +56,9 @@ void eventTable(AppState& state) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         const std::string index = std::to_string(k);
-        if (ImGui::Selectable(index.c_str(), static_cast<int>(k) == state.selectedEvent,
+        if (ImGui::Selectable(index.c_str(), static_cast<int>(k) == traces.selectedEvent,
                               ImGuiSelectableFlags_SpanAllColumns)) {
-            selectEvent(state, state.selectedPath, static_cast<int>(k));
+            selectEvent(traces, traces.selectedPath, static_cast<int>(k));
         }
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(std::string(eventTypeName(event.type)).c_str());
@@ -66,7 +67,7 @@ void eventTable(AppState& state) {
         ImGui::TableNextColumn();
         ImGui::Text("%.3f %.3f %.3f", event.direction.x(), event.direction.y(), event.direction.z());
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(shapeText(state, event.shape).c_str());
+        ImGui::TextUnformatted(shapeText(trace, event.shape).c_str());
         ImGui::TableNextColumn();
         ImGui::Text("%.4g -> %.4g", media.at(event.from).n, media.at(event.to).n);
         ImGui::TableNextColumn();
@@ -83,29 +84,27 @@ void eventTable(AppState& state) {
 
 }  // namespace
 
-void drawPathPanel(AppState& state) {
+void drawPathPanel(render::LayerOptions& layers, TraceState& traces) {
     placeNextPanel(PanelSide::Right, 0.65f, 0.35f);
     if (!ImGui::Begin("Paths")) {
         ImGui::End();
         return;
     }
-    bool changed = ImGui::Checkbox("paths", &state.layers.paths);
+    ImGui::Checkbox("paths", &layers.paths);
     ImGui::SameLine();
-    changed |= ImGui::Checkbox("markers", &state.layers.markers);
+    ImGui::Checkbox("markers", &layers.markers);
     ImGui::SameLine();
-    bool byEvent = state.layers.pathColouring == render::PathColouring::Event;
+    bool byEvent = layers.pathColouring == render::PathColouring::Event;
     if (ImGui::Checkbox("colour by event", &byEvent)) {
-        state.layers.pathColouring = byEvent ? render::PathColouring::Event : render::PathColouring::Weight;
-        changed = true;
+        layers.pathColouring = byEvent ? render::PathColouring::Event : render::PathColouring::Weight;
     }
-    state.viewDirty |= changed;
-    if (!state.trace || state.trace->outcome.result.paths.empty()) {
+    if (!traces.trace || traces.trace->outcome.result.paths.empty()) {
         ImGui::TextDisabled("fire photons (Space) with 'paths kept' > 0 to inspect them here");
         ImGui::End();
         return;
     }
-    photonList(state);
-    if (state.selectedPath >= 0) eventTable(state);
+    photonList(traces);
+    if (traces.selectedPath >= 0) eventTable(traces);
     ImGui::End();
 }
 

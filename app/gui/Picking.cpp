@@ -8,7 +8,7 @@ namespace {
 constexpr int kMaxPickCrossings = 64;
 
 bool hiddenBySlice(const AppState& state, const Shape& shape) {
-    const auto plane = slicePlane(state.slice);
+    const auto plane = slicePlane(state.view.slice);
     return plane && !plane->keeps(shape.bounds().center());
 }
 
@@ -20,7 +20,7 @@ Ray cameraRay(const render::Camera& camera, double x, double y, int width, int h
 }
 
 std::optional<Pick> pickShape(const AppState& state, const Ray& ray) {
-    const Octree& octree = state.document->octree();
+    const Octree& octree = state.scene.document().octree();
     std::optional<Pick> container;
     Point from = ray.origin;
     for (int crossing = 0; crossing < kMaxPickCrossings; ++crossing) {
@@ -39,12 +39,12 @@ std::optional<Pick> pickShape(const AppState& state, const Ray& ray) {
     return container;
 }
 
-std::optional<Point> placementCentre(const AppState& state, const Ray& ray) {
+std::optional<Point> placementCenter(const AppState& state, const Ray& ray) {
     if (const auto pick = pickShape(state, ray);
-        pick && pick->normal && state.document->octree().shape(pick->shape)->kind() != ShapeKind::Box) {
-        return Point(pick->point + state.placementRadius * pick->normal.vector());
+        pick && pick->normal && state.scene.document().octree().shape(pick->shape)->kind() != ShapeKind::Box) {
+        return Point(pick->point + state.placement.radius * pick->normal.vector());
     }
-    return rayPlaneAxis(ray, state.placementPlane.axis, state.placementPlane.offset);
+    return rayPlaneAxis(ray, state.placement.plane.axis, state.placement.plane.offset);
 }
 
 std::optional<Point> rayPlaneAxis(const Ray& ray, int axis, double offset) {

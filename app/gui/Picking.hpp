@@ -24,7 +24,7 @@ std::optional<Pick> pickShape(const AppState& state, const Ray& ray);
 
 // Where a click in placement mode puts a new droplet's centre: touching the surface under the cursor
 // (on the outside, along its normal), else on the placement plane; nullopt when the ray meets neither.
-std::optional<Point> placementCentre(const AppState& state, const Ray& ray);
+std::optional<Point> placementCenter(const AppState& state, const Ray& ray);
 
 // Where the ray meets the plane normal to coordinate `axis` at `offset` along it (the point's
 // coordinate set exactly); nullopt when the ray is parallel to it or it lies behind.

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 namespace dropscope::gui {
@@ -27,18 +26,18 @@ std::vector<float> perSteradian(const AngularTally& angular) {
 
 }  // namespace
 
-void drawResultsPanel(AppState& state) {
+void drawResultsPanel(const TraceState& traces, bool& logScale) {
     placeNextPanel(PanelSide::Left, 0.79f, 0.21f);
     if (!ImGui::Begin("Results")) {
         ImGui::End();
         return;
     }
-    if (!state.trace) {
+    if (!traces.trace) {
         ImGui::TextDisabled("no trace yet: fire photons (Space)");
         ImGui::End();
         return;
     }
-    const TraceResult& result = state.trace->outcome.result;
+    const TraceResult& result = traces.trace->outcome.result;
     const FateTally& fates = result.tallies.get<FateTally>();
     const double n = fates.photons() > 0 ? static_cast<double>(fates.photons()) : 1.0;
     ImGui::Text("%llu photons%s, %.2f s", static_cast<unsigned long long>(fates.photons()),
@@ -47,7 +46,6 @@ void drawResultsPanel(AppState& state) {
                 static_cast<double>(fates.absorbed()) / n);
     ImGui::Text("lost %.5f  unscattered %.5f", static_cast<double>(fates.lost()) / n,
                 static_cast<double>(fates.unscattered()) / n);
-    static bool logScale = true;
     ImGui::Checkbox("log scale", &logScale);
     std::vector<float> values = perSteradian(result.tallies.get<AngularTally>());
     if (logScale) {

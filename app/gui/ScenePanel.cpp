@@ -6,10 +6,11 @@
 #include "scene/ShapeSpec.hpp"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <array>
-#include <exception>
+#include <stdexcept>
 
 namespace dropscope::gui {
 
@@ -23,9 +24,11 @@ std::string listLabel(const SceneDocument& document, ShapeId id, const Shape& sh
 }
 
 void shapeList(AppState& state) {
-    static ImGuiTextFilter filter;
-    filter.Draw("filter", 180.0f);
-    const SceneDocument& document = *state.document;
+    std::string& text = state.ui.panels.scenePanel.filter;
+    ImGui::SetNextItemWidth(180.0f);
+    ImGui::InputText("filter", &text);
+    const ImGuiTextFilter filter(text.c_str());
+    const SceneDocument& document = state.scene.document();
     const Octree& octree = document.octree();
     std::vector<ShapeId> shown;
     for (ShapeId id = 0; id < octree.slotCount(); ++id) {
@@ -40,10 +43,7 @@ void shapeList(AppState& state) {
         for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
             const ShapeId id = shown[static_cast<std::size_t>(row)];
             const std::string label = listLabel(document, id, *octree.shape(id));
-            if (ImGui::Selectable(label.c_str(), id == state.selected)) {
-                state.selected = id;
-                state.viewDirty = true;
-            }
+            if (ImGui::Selectable(label.c_str(), id == state.scene.selectedShape())) state.scene.selectShape(id);
         }
     }
     ImGui::EndChild();
@@ -61,14 +61,16 @@ void generalShapeDetails(const GeneralShape& shape) {
 }
 
 void selectedShapeEditor(AppState& state) {
-    state.itemRects.erase("centre");
-    const Shape* shape = state.document->octree().shape(state.selected);
+    SceneDocument& document = state.scene.document();
+    const ShapeId selected = state.scene.selectedShape();
+    const Shape* shape = document.octree().shape(selected);
     if (!shape) {
         ImGui::TextDisabled("click a shape (or a row above) to edit it");
         return;
     }
+    std::uint32_t& editingItem = state.ui.panels.scenePanel.editingItem;
     ShapeSpec spec = describeShape(*shape);
-    ImGui::Text("shape %u: %s", state.selected, shapeTypeLabel(*shape).c_str());
+    ImGui::Text("shape %u: %s", selected, shapeTypeLabel(*shape).c_str());
     bool changed = false;
     ImGuiID editedItem = 0;
     auto track = [&](bool edited, const char* label) {
@@ -82,11 +84,11 @@ void selectedShapeEditor(AppState& state) {
     } else if (spec.general) {
         // The base is shared and read-only here: only where it stands (r0) and its medium are edited.
         track(inputVector3("centre", spec.center), "centre");
-        recordItemRect(state, "centre");
+        reportItemRect(state.ui.itemProbe, "centre");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("the translation r0 of M r + r0");
     } else {
         track(inputVector3("centre", spec.center), "centre");
-        recordItemRect(state, "centre");
+        reportItemRect(state.ui.itemProbe, "centre");
         if (spec.kind == ShapeKind::Sphere) {
             track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"), "radius");
         } else {
@@ -95,41 +97,39 @@ void selectedShapeEditor(AppState& state) {
             track(ImGui::InputDouble("angle (deg)", &spec.rotationAngleDeg, 1.0, 10.0, "%.4g"), "angle (deg)");
         }
     }
-    track(mediumCombo("medium", *state.document, spec.medium), "medium");
+    track(mediumCombo("medium", document, spec.medium), "medium");
     if (spec.general) generalShapeDetails(*spec.general);  // below the fields, which stay in view
     if (changed) {
-        try {
+        state.ui.status.attempt("not changed", [&] {
             // One activation of one field (typing a number, dragging a value) is one undo step.
-            state.document->modifyShape(state.selected, spec, editedItem == state.editingItem);
-            state.editingItem = editedItem;
-        } catch (const std::exception& error) {
-            state.refuse(std::string("not changed: ") + error.what());
-        }
+            document.modifyShape(selected, spec, editedItem == editingItem);
+            editingItem = editedItem;
+        });
     }
-    if (!ImGui::IsAnyItemActive()) state.editingItem = 0;
+    if (!ImGui::IsAnyItemActive()) editingItem = 0;
     if (ImGui::Button("Delete")) deleteSelected(state);
 }
 
 void addButtons(AppState& state) {
-    const glm::dvec3 target = state.camera.target;
+    const glm::dvec3 target = state.view.camera.target;
+    const double radius = state.placement.radius;
     ShapeSpec spec;
     spec.center = Point(target.x, target.y, target.z);
-    spec.radius = state.placementRadius;
-    spec.semiAxes = Eigen::Vector3d(1.5, 1.0, 0.7) * state.placementRadius;
-    spec.boxMin = spec.center - Eigen::Vector3d::Constant(2.0 * state.placementRadius);
-    spec.boxMax = spec.center + Eigen::Vector3d::Constant(2.0 * state.placementRadius);
-    spec.medium = state.placementMedium;
+    spec.radius = radius;
+    spec.semiAxes = Eigen::Vector3d(1.5, 1.0, 0.7) * radius;
+    spec.boxMin = spec.center - Eigen::Vector3d::Constant(2.0 * radius);
+    spec.boxMax = spec.center + Eigen::Vector3d::Constant(2.0 * radius);
+    spec.medium = state.placement.medium;
     const std::array<std::pair<const char*, ShapeKind>, 3> kinds{
         {{"Add sphere", ShapeKind::Sphere}, {"Add ellipsoid", ShapeKind::Ellipsoid}, {"Add box", ShapeKind::Box}}};
     for (const auto& [label, kind] : kinds) {
         if (ImGui::Button(label)) {
             spec.kind = kind;
-            try {
-                state.selected = state.document->addShape(spec);
-                state.say("added shape " + std::to_string(state.selected) + " at the view's target");
-            } catch (const std::exception& error) {
-                state.refuse(std::string("not added: ") + error.what());
-            }
+            state.ui.status.attempt("not added", [&] {
+                const ShapeId id = state.scene.document().addShape(spec);
+                state.scene.selectShape(id);
+                state.ui.status.say("added shape " + std::to_string(id) + " at the view's target");
+            });
         }
         ImGui::SameLine();
     }
@@ -137,49 +137,43 @@ void addButtons(AppState& state) {
 }
 
 void cloudGenerator(AppState& state) {
-    static Eigen::Vector3d lower(-1, -1, -1);
-    static Eigen::Vector3d upper(1, 1, 1);
-    static int count = 100;
-    static double radiusMin = 0.02;
-    static double radiusMax = 0.06;
-    static int seed = 1;
     if (!ImGui::TreeNode("Generate droplet cloud")) return;
-    inputVector3("region min", lower);
-    inputVector3("region max", upper);
-    ImGui::InputInt("count", &count);
-    ImGui::InputDouble("radius min", &radiusMin, 0.0, 0.0, "%.4g");
-    ImGui::InputDouble("radius max", &radiusMax, 0.0, 0.0, "%.4g");
-    ImGui::InputInt("seed", &seed);
+    CloudFields& cloud = state.ui.panels.scenePanel.cloud;
+    inputVector3("region min", cloud.lower);
+    inputVector3("region max", cloud.upper);
+    ImGui::InputInt("count", &cloud.count);
+    ImGui::InputDouble("radius min", &cloud.radiusMin, 0.0, 0.0, "%.4g");
+    ImGui::InputDouble("radius max", &cloud.radiusMax, 0.0, 0.0, "%.4g");
+    ImGui::InputInt("seed", &cloud.seed);
     if (ImGui::Button("Region = scene bounds")) {
         Eigen::AlignedBox3d box;
-        for (const auto& shape : state.document->octree().shapes()) {
+        for (const auto& shape : state.scene.document().octree().shapes()) {
             if (shape) box.extend(shape->bounds());
         }
         if (!box.isEmpty()) {
-            lower = box.min();
-            upper = box.max();
+            cloud.lower = box.min();
+            cloud.upper = box.max();
         }
     }
     ImGui::SameLine();
     if (ImGui::Button("Generate")) {
-        try {
-            if (count < 0) throw std::invalid_argument("count must be >= 0");
-            if (!(radiusMin > 0.0) || !(radiusMax >= radiusMin))
+        state.ui.status.attempt("no cloud", [&] {
+            if (cloud.count < 0) throw std::invalid_argument("count must be >= 0");
+            if (!(cloud.radiusMin > 0.0) || !(cloud.radiusMax >= cloud.radiusMin))
                 throw std::invalid_argument("need 0 < radius min <= radius max");
-            if (!(lower.array() < upper.array()).all())
+            if (!(cloud.lower.array() < cloud.upper.array()).all())
                 throw std::invalid_argument("region min must be below max on every axis");
             DropletCloudSpec spec;
-            spec.region = Eigen::AlignedBox3d(lower, upper);
-            spec.count = static_cast<std::uint64_t>(count);
-            spec.radius = radiusMax > radiusMin ? RadiusDistribution::uniform(radiusMin, radiusMax)
-                                                : RadiusDistribution::fixed(radiusMin);
-            spec.seed = static_cast<std::uint64_t>(std::max(seed, 0));
-            const auto ids = state.document->generateCloud(spec, state.placementMedium);
-            state.say("generated " + std::to_string(ids.size()) + " droplets" +
-                      (ids.size() < static_cast<std::size_t>(count) ? " (the region filled up)" : ""));
-        } catch (const std::exception& error) {
-            state.refuse(std::string("no cloud: ") + error.what());
-        }
+            spec.region = Eigen::AlignedBox3d(cloud.lower, cloud.upper);
+            spec.count = static_cast<std::uint64_t>(cloud.count);
+            spec.radius = cloud.radiusMax > cloud.radiusMin
+                              ? RadiusDistribution::uniform(cloud.radiusMin, cloud.radiusMax)
+                              : RadiusDistribution::fixed(cloud.radiusMin);
+            spec.seed = static_cast<std::uint64_t>(std::max(cloud.seed, 0));
+            const auto ids = state.scene.document().generateCloud(spec, state.placement.medium);
+            state.ui.status.say("generated " + std::to_string(ids.size()) + " droplets" +
+                                (ids.size() < static_cast<std::size_t>(cloud.count) ? " (the region filled up)" : ""));
+        });
     }
     ImGui::TreePop();
 }

@@ -1,6 +1,7 @@
 #include "gui/Shortcuts.hpp"
 
 #include "gui/Actions.hpp"
+#include "gui/TraceActions.hpp"
 #include "gui/platform/InputFrame.hpp"
 
 #include <imgui.h>
@@ -12,50 +13,43 @@ namespace dropscope::gui {
 
 namespace {
 
-void toggleHelp(AppState& state) { state.showHelp = !state.showHelp; }
+void toggleHelp(AppState& state) { state.ui.showHelp = !state.ui.showHelp; }
 void screenshotNow(AppState& state) {
-    state.screenshot = ScreenshotRequest{
-        timestampedScreenshotPath(state.screenshotDirectory, std::chrono::system_clock::now()), false, 0, 0};
+    state.ui.screenshot = ScreenshotRequest{
+        timestampedScreenshotPath(state.ui.screenshotDirectory, std::chrono::system_clock::now()), false, 0, 0};
 }
 void save(AppState& state) {
-    if (state.scenePath.empty()) {
-        state.refuse("no file yet: use File > Save as");
+    if (state.scene.file().empty()) {
+        state.ui.status.refuse("no file yet: use File > Save as");
         return;
     }
-    saveScene(state, state.scenePath);
+    saveScene(state, state.scene.file());
 }
-void askOpen(AppState& state) { state.prompt = FilePrompt::Open; }
-void quit(AppState& state) { state.quit = true; }
+void askOpen(AppState& state) { state.ui.prompt = FilePrompt::Open; }
+void quit(AppState& state) { state.ui.quit = true; }
 void togglePlacement(AppState& state) {
-    state.placementMode = !state.placementMode;
-    state.say(state.placementMode ? "placement mode: click to drop a droplet (P or Esc to leave)"
-                                  : "placement mode off");
+    bool& active = state.placement.active;
+    active = !active;
+    state.ui.status.say(active ? "placement mode: click to drop a droplet (P or Esc to leave)" : "placement mode off");
 }
 void escape(AppState& state) {
-    if (state.job.running()) return cancelTrace(state);
-    if (state.placementMode) return togglePlacement(state);
-    state.selected = RayHit::kNone;
-    state.viewDirty = true;
+    if (state.traces.job.running()) return cancelTrace(state);
+    if (state.placement.active) return togglePlacement(state);
+    state.scene.selectShape(RayHit::kNone);
 }
-void fit(AppState& state) { state.fitRequested = true; }
-void toggleSlice(AppState& state) {
-    state.slice.enabled = !state.slice.enabled;
-    state.viewDirty = true;
-}
-void toggleOctree(AppState& state) {
-    state.layers.octree = !state.layers.octree;
-    state.viewDirty = true;
-}
+void fit(AppState& state) { state.view.fitRequested = true; }
+void toggleSlice(AppState& state) { state.view.slice.enabled = !state.view.slice.enabled; }
+void toggleOctree(AppState& state) { state.view.layers.octree = !state.view.layers.octree; }
 void octreeLevel(AppState& state, int delta) {
-    state.layers.octree = true;
-    const int deepest = std::max(0, static_cast<int>(state.document->octree().statistics().size()) - 1);
-    state.layers.octreeFilter.level = std::clamp(state.layers.octreeFilter.level + delta, 0, deepest);
-    state.viewDirty = true;
+    render::LayerOptions& layers = state.view.layers;
+    layers.octree = true;
+    const int deepest = std::max(0, static_cast<int>(state.scene.document().octree().statistics().size()) - 1);
+    layers.octreeFilter.level = std::clamp(layers.octreeFilter.level + delta, 0, deepest);
 }
 void levelDown(AppState& state) { octreeLevel(state, -1); }
 void levelUp(AppState& state) { octreeLevel(state, +1); }
-void previousEvent(AppState& state) { stepEvent(state, -1); }
-void nextEvent(AppState& state) { stepEvent(state, +1); }
+void previousEvent(AppState& state) { stepEvent(state.traces, -1); }
+void nextEvent(AppState& state) { stepEvent(state.traces, +1); }
 
 }  // namespace
 
@@ -105,7 +99,7 @@ const std::vector<std::pair<std::string_view, std::string_view>>& mouseGestures(
 
 void handleShortcuts(AppState& state) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput || state.prompt != FilePrompt::None) return;  // keys belong to the field or dialog
+    if (io.WantTextInput || state.ui.prompt != FilePrompt::None) return;  // keys belong to the field or dialog
     for (const Shortcut& shortcut : shortcuts()) {
         if (!shortcut.run || shortcut.ctrl != io.KeyCtrl || shortcut.shift != io.KeyShift) continue;
         if (ImGui::IsKeyPressed(shortcut.key, false)) shortcut.run(state);

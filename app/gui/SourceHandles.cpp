@@ -21,23 +21,23 @@ double distanceToRay(const Ray& ray, const Point& point) {
 
 }  // namespace
 
-std::optional<SourceHandlePlaces> sourceHandles(const AppState& state) {
-    const auto& sources = state.document->sources();
-    if (!state.layers.sources || sources.empty() || state.sceneBounds.isEmpty()) return std::nullopt;
-    const Source& source = sources[selectedSourceIndex(state, sources)];
-    const double diagonal = state.sceneBounds.diagonal().norm();
+std::optional<SourceHandlePlaces> sourceHandles(const AppState& state, const Eigen::AlignedBox3d& sceneBounds) {
+    const auto& sources = state.scene.document().sources();
+    if (!state.view.layers.sources || sources.empty() || sceneBounds.isEmpty()) return std::nullopt;
+    const Source& source = sources[state.scene.selectedSource()];
+    const double diagonal = sceneBounds.diagonal().norm();
     const double arrow = render::kSourceGlyph * diagonal;
     const Eigen::Vector3d direction = source.direction ? source.direction.vector() : Eigen::Vector3d::UnitZ();
     return SourceHandlePlaces{source.origin, source.origin + arrow * direction,
                               kHandleMarkerScale * render::kMarkerRadius * diagonal};
 }
 
-SourceHandle handleUnder(const AppState& state, const Ray& ray) {
-    const auto handles = sourceHandles(state);
+SourceHandle handleUnder(const AppState& state, const Eigen::AlignedBox3d& sceneBounds, const Ray& ray) {
+    const auto handles = sourceHandles(state, sceneBounds);
     if (!handles) return SourceHandle::None;
     const double origin = distanceToRay(ray, handles->origin);
-    const auto& sources = state.document->sources();
-    const double aim = sources[selectedSourceIndex(state, sources)].type == SourceType::PointSource
+    const auto& sources = state.scene.document().sources();
+    const double aim = sources[state.scene.selectedSource()].type == SourceType::PointSource
                            ? std::numeric_limits<double>::infinity()
                            : distanceToRay(ray, handles->aim);
     const double reach = kGrabScale * handles->radius;

@@ -19,10 +19,11 @@ struct SourceHandlePlaces {
 inline constexpr render::Colour kOriginHandleColour{1.0f, 1.0f, 1.0f, 1.0f};
 inline constexpr render::Colour kAimHandleColour{1.0f, 0.55f, 0.1f, 1.0f};
 
-// Where the selected source's handles are; nullopt without sources or with the sources layer off.
-std::optional<SourceHandlePlaces> sourceHandles(const AppState& state);
+// Where the selected source's handles are, sized by the bounds of the shapes drawn; nullopt without
+// sources or with the sources layer off.
+std::optional<SourceHandlePlaces> sourceHandles(const AppState& state, const Eigen::AlignedBox3d& sceneBounds);
 
 // The handle the ray passes closest to, within grabbing distance, in front of the eye.
-SourceHandle handleUnder(const AppState& state, const Ray& ray);
+SourceHandle handleUnder(const AppState& state, const Eigen::AlignedBox3d& sceneBounds, const Ray& ray);
 
 }  // namespace dropscope::gui

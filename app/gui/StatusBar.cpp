@@ -1,4 +1,3 @@
-#include "gui/Actions.hpp"
 #include "gui/PanelLayout.hpp"
 #include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
@@ -15,18 +14,20 @@ void drawStatusBar(AppState& state) {
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::Begin("##status", nullptr, flags);
-    if (state.job.running()) {
+    if (state.traces.job.running()) {
         drawTraceProgress(state, 220.0f);
         ImGui::SameLine();
     }
-    if (state.status.error) {
-        ImGui::TextColored(kErrorColour, "%s", state.status.text.c_str());
+    const StatusLine& status = state.ui.status;
+    if (status.error()) {
+        ImGui::TextColored(kErrorColour, "%s", status.text().c_str());
     } else {
-        ImGui::TextUnformatted(state.status.text.c_str());
+        ImGui::TextUnformatted(status.text().c_str());
     }
     ImGui::SameLine(display.x - 260.0f);
-    ImGui::Text("%zu shapes  %s%s", state.document->shapeCount(), state.placementMode ? "PLACING  " : "",
-                state.scenePath.empty() ? "(unsaved scene)" : state.scenePath.filename().c_str());
+    const std::filesystem::path& file = state.scene.file();
+    ImGui::Text("%zu shapes  %s%s", state.scene.document().shapeCount(), state.placement.active ? "PLACING  " : "",
+                file.empty() ? "(unsaved scene)" : file.filename().c_str());
     ImGui::End();
 }
 

@@ -20,7 +20,7 @@ constexpr double kOrbitPerPixel = 0.008;  // radians
 constexpr double kZoomPerWheelLine = 0.88;
 
 std::string describe(const AppState& state, ShapeId id, const char* separator) {
-    const SceneDocument& document = *state.document;
+    const SceneDocument& document = state.scene.document();
     const Shape& shape = *document.octree().shape(id);
     std::ostringstream text;
     text << "shape " << id;
@@ -32,29 +32,27 @@ std::string describe(const AppState& state, ShapeId id, const char* separator) {
 // A point for the source keys: on the shape under the cursor, else on the placement plane.
 std::optional<Point> pointUnderCursor(const AppState& state, const Ray& ray) {
     if (const auto pick = pickShape(state, ray)) return pick->point;
-    return rayPlaneAxis(ray, state.placementPlane.axis, state.placementPlane.offset);
+    return rayPlaneAxis(ray, state.placement.plane.axis, state.placement.plane.offset);
 }
 
 }  // namespace
 
-void ViewportControls::handle(AppState& state) {
+void ViewportControls::handle(AppState& state, const Eigen::AlignedBox3d& sceneBounds) {
     const ImGuiIO& io = ImGui::GetIO();
     const int width = static_cast<int>(io.DisplaySize.x);
     const int height = static_cast<int>(io.DisplaySize.y);
     const bool mouseValid = ImGui::IsMousePosValid(&io.MousePos) && width > 0 && height > 0;
-    if (!mouseValid) {
-        state.hovered = RayHit::kNone;
-        return;
-    }
-    const Ray ray = cameraRay(state.camera, io.MousePos.x, io.MousePos.y, width, height);
+    if (!mouseValid) return;
+    render::Camera& camera = state.view.camera;
+    const Ray ray = cameraRay(camera, io.MousePos.x, io.MousePos.y, width, height);
     const bool mine = !io.WantCaptureMouse || drag_ != Drag::None;
 
     if (drag_ == Drag::None && mine) {
-        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) press(state, ray);
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) press(state, sceneBounds, ray);
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) {
             drag_ = Drag::Pan;
         }
-        if (io.MouseWheel != 0.0f) state.camera.zoom(std::pow(kZoomPerWheelLine, static_cast<double>(io.MouseWheel)));
+        if (io.MouseWheel != 0.0f) camera.zoom(std::pow(kZoomPerWheelLine, static_cast<double>(io.MouseWheel)));
     }
     if (drag_ != Drag::None) {
         dragTo(state, ray, io.MouseDelta.x, io.MouseDelta.y);
@@ -69,39 +67,38 @@ void ViewportControls::handle(AppState& state) {
     }
     if (mine) {
         hover(state, ray);
-        if (!io.WantTextInput && state.prompt == FilePrompt::None) sourceKeys(state, ray);
-    } else {
-        state.hovered = RayHit::kNone;
+        if (!io.WantTextInput && state.ui.prompt == FilePrompt::None) sourceKeys(state, ray);
     }
 }
 
-void ViewportControls::press(AppState& state, const Ray& ray) {
+void ViewportControls::press(AppState& state, const Eigen::AlignedBox3d& sceneBounds, const Ray& ray) {
     drag_ = Drag::Pending;
     travelled_ = 0.0f;
     handle_ = SourceHandle::None;
     movedThisDrag_ = false;
-    if (state.placementMode) return;
-    if (const SourceHandle handle = handleUnder(state, ray); handle != SourceHandle::None) {
+    if (state.placement.active) return;
+    const int axis = state.placement.plane.axis;
+    if (const SourceHandle handle = handleUnder(state, sceneBounds, ray); handle != SourceHandle::None) {
         // Grabbed a source handle: it slides in the plane parallel to the placement plane through it.
-        const auto places = sourceHandles(state);
+        const auto places = sourceHandles(state, sceneBounds);
         const Point at = handle == SourceHandle::Origin ? places->origin : places->aim;
-        handlePlane_ = at[state.placementPlane.axis];
-        if (const auto grabbed = rayPlaneAxis(ray, state.placementPlane.axis, handlePlane_)) {
+        handlePlane_ = at[axis];
+        if (const auto grabbed = rayPlaneAxis(ray, axis, handlePlane_)) {
             grabOffset_ = at - *grabbed;
             handle_ = handle;
         }
         return;
     }
-    if (state.selected == RayHit::kNone) return;
+    const ShapeId selected = state.scene.selectedShape();
+    if (selected == RayHit::kNone) return;
     const auto pick = pickShape(state, ray);
-    const Shape* shape = state.document->octree().shape(state.selected);
-    if (!pick || pick->shape != state.selected || !shape || shape->kind() == ShapeKind::Box) return;
+    const Shape* shape = state.scene.document().octree().shape(selected);
+    if (!pick || pick->shape != selected || !shape || shape->kind() == ShapeKind::Box) return;
     // Grabbed the selected droplet: it slides in the plane parallel to the placement plane through its centre.
     const ShapeSpec spec = describeShape(*shape);
-    const int axis = state.placementPlane.axis;
     if (const auto grabbed = rayPlaneAxis(ray, axis, spec.center[axis])) {
         grabOffset_ = spec.center - *grabbed;
-        moving_ = state.selected;
+        moving_ = selected;
     }
 }
 
@@ -114,24 +111,22 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
     }
     const ImGuiIO& io = ImGui::GetIO();
     switch (drag_) {
-    case Drag::Orbit: state.camera.orbit(-kOrbitPerPixel * dx, -kOrbitPerPixel * dy); break;
-    case Drag::Pan: state.camera.pan(-dx / io.DisplaySize.y, dy / io.DisplaySize.y); break;
+    case Drag::Orbit: state.view.camera.orbit(-kOrbitPerPixel * dx, -kOrbitPerPixel * dy); break;
+    case Drag::Pan: state.view.camera.pan(-dx / io.DisplaySize.y, dy / io.DisplaySize.y); break;
     case Drag::MoveShape: {
-        const Shape* shape = state.document->octree().shape(moving_);
+        const Shape* shape = state.scene.document().octree().shape(moving_);
         if (!shape) break;
         ShapeSpec spec = describeShape(*shape);
-        const int axis = state.placementPlane.axis;
+        const int axis = state.placement.plane.axis;
         const auto on = rayPlaneAxis(ray, axis, spec.center[axis]);
         if (!on) break;
         spec.center = *on + grabOffset_;
-        try {
+        state.ui.status.attempt("not moved there", [&] {
             // The first move of a drag opens an undo step; the rest of the drag folds into it.
-            state.document->modifyShape(moving_, spec, movedThisDrag_);
+            state.scene.document().modifyShape(moving_, spec, movedThisDrag_);
             movedThisDrag_ = true;
-            state.say("moving shape " + std::to_string(moving_));
-        } catch (const std::exception& error) {
-            state.refuse(std::string("not moved there: ") + error.what());
-        }
+            state.ui.status.say("moving shape " + std::to_string(moving_));
+        });
         break;
     }
     case Drag::MoveHandle: moveHandle(state, ray); break;
@@ -140,10 +135,10 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
 }
 
 void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
-    std::vector<Source> sources = state.document->sources();
+    std::vector<Source> sources = state.scene.document().sources();
     if (sources.empty()) return;
-    Source& source = sources[selectedSourceIndex(state, sources)];
-    const auto on = rayPlaneAxis(ray, state.placementPlane.axis, handlePlane_);
+    Source& source = sources[state.scene.selectedSource()];
+    const auto on = rayPlaneAxis(ray, state.placement.plane.axis, handlePlane_);
     if (!on) return;
     const Point target = *on + grabOffset_;
     if (handle_ == SourceHandle::Origin) {
@@ -153,74 +148,69 @@ void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
         if (!direction) return;
         source.direction = direction;
     }
-    try {
-        state.document->setSources(std::move(sources), movedThisDrag_);
+    state.ui.status.attempt("source not changed", [&] {
+        state.scene.document().setSources(std::move(sources), movedThisDrag_);
         movedThisDrag_ = true;
-        state.viewDirty = true;
-        state.say(handle_ == SourceHandle::Origin ? "moving the source" : "aiming the source");
-    } catch (const std::exception& error) {
-        state.refuse(std::string("source not changed: ") + error.what());
-    }
+        state.ui.status.say(handle_ == SourceHandle::Origin ? "moving the source" : "aiming the source");
+    });
 }
 
 void ViewportControls::click(AppState& state, const Ray& ray) {
-    if (state.placementMode) {
-        if (const auto centre = placementCentre(state, ray)) {
-            placeDroplet(state, *centre);
+    if (state.placement.active) {
+        if (const auto center = placementCenter(state, ray)) {
+            placeDroplet(state, *center);
         } else {
-            state.refuse("no surface or placement plane under the cursor");
+            state.ui.status.refuse("no surface or placement plane under the cursor");
         }
         return;
     }
     const auto pick = pickShape(state, ray);
-    state.selected = pick ? pick->shape : RayHit::kNone;
-    state.viewDirty = true;
-    if (pick) state.say("selected " + describe(state, pick->shape, ": "));
+    state.scene.selectShape(pick ? pick->shape : RayHit::kNone);
+    if (pick) state.ui.status.say("selected " + describe(state, pick->shape, ": "));
 }
 
 void ViewportControls::hover(AppState& state, const Ray& ray) {
     if (drag_ == Drag::Orbit || drag_ == Drag::Pan) return;
-    const auto pick = pickShape(state, ray);
-    state.hovered = pick ? pick->shape : RayHit::kNone;
-    if (state.placementMode) {
-        const auto centre = placementCentre(state, ray);
+    if (state.placement.active) {
+        const auto center = placementCenter(state, ray);
         ImGui::BeginTooltip();
-        if (!centre) {
+        if (!center) {
             ImGui::TextUnformatted("no surface or placement plane here");
         } else {
             ShapeSpec spec;
-            spec.center = *centre;
-            spec.radius = state.placementRadius;
-            spec.medium = state.placementMedium;
-            const auto refusal = state.document->checkPlacement(spec);
-            ImGui::Text("droplet r = %g at (%.3g, %.3g, %.3g)", state.placementRadius, centre->x(), centre->y(),
-                        centre->z());
+            spec.center = *center;
+            spec.radius = state.placement.radius;
+            spec.medium = state.placement.medium;
+            const auto refusal = state.scene.document().checkPlacement(spec);
+            ImGui::Text("droplet r = %g at (%.3g, %.3g, %.3g)", state.placement.radius, center->x(), center->y(),
+                        center->z());
             if (refusal) ImGui::TextColored(kErrorColour, "refused: %s", refusal->c_str());
         }
         ImGui::EndTooltip();
         return;
     }
-    if (pick) ImGui::SetTooltip("%s", describe(state, pick->shape, "\n").c_str());
+    if (const auto pick = pickShape(state, ray)) ImGui::SetTooltip("%s", describe(state, pick->shape, "\n").c_str());
 }
 
 void ViewportControls::sourceKeys(AppState& state, const Ray& ray) {
     const bool move = ImGui::IsKeyPressed('G', false);
     const bool aim = ImGui::IsKeyPressed('A', false);
     if (!move && !aim) return;
-    std::vector<Source> sources = state.document->sources();
-    if (sources.empty()) return state.refuse("no source to move or aim: add one in the Sources panel");
+    std::vector<Source> sources = state.scene.document().sources();
+    if (sources.empty()) return state.ui.status.refuse("no source to move or aim: add one in the Sources panel");
     const auto point = pointUnderCursor(state, ray);
-    if (!point) return state.refuse("nothing under the cursor to move or aim the source to");
-    Source& source = sources[selectedSourceIndex(state, sources)];
+    if (!point) return state.ui.status.refuse("nothing under the cursor to move or aim the source to");
+    Source& source = sources[state.scene.selectedSource()];
     if (move) {
         source.origin = *point;
     } else {
         const Direction direction(*point - source.origin);
-        if (!direction) return state.refuse("the source is at that point already");
+        if (!direction) return state.ui.status.refuse("the source is at that point already");
         source.direction = direction;
     }
-    state.document->setSources(std::move(sources));
-    state.say(move ? "source moved to the point under the cursor" : "source aimed at the point under the cursor");
+    state.scene.document().setSources(std::move(sources));
+    state.ui.status.say(move ? "source moved to the point under the cursor"
+                             : "source aimed at the point under the cursor");
 }
 
 }  // namespace dropscope::gui

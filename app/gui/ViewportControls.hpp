@@ -12,11 +12,12 @@ namespace dropscope::gui {
 // over a panel belongs to the panel (ImGui's WantCaptureMouse).
 class ViewportControls {
 public:
-    void handle(AppState& state);
+    // `sceneBounds`: of the shapes as last drawn, which size the source handles (ViewportScene).
+    void handle(AppState& state, const Eigen::AlignedBox3d& sceneBounds);
 
 private:
     enum class Drag { None, Pending, Orbit, Pan, MoveShape, MoveHandle };
-    void press(AppState& state, const Ray& ray);
+    void press(AppState& state, const Eigen::AlignedBox3d& sceneBounds, const Ray& ray);
     void dragTo(AppState& state, const Ray& ray, float dx, float dy);
     void click(AppState& state, const Ray& ray);
     void hover(AppState& state, const Ray& ray);

@@ -15,65 +15,79 @@ constexpr double kCurrentEventMarkerScale = 2.5;
 
 Eigen::AlignedBox3d viewBounds(const AppState& state, const Eigen::AlignedBox3d& shapes) {
     Eigen::AlignedBox3d box = shapes;
-    for (const Source& source : state.document->sources()) box.extend(source.origin);
+    for (const Source& source : state.scene.document().sources()) box.extend(source.origin);
     const double reach = render::kEscapeLength * shapes.diagonal().norm();
     box.extend(box.min() - Eigen::Vector3d::Constant(reach));
     box.extend(box.max() + Eigen::Vector3d::Constant(reach));
     return box;
 }
 
-void ViewportScene::rebuild(AppState& state) {
-    const SceneDocument& document = *state.document;
+ViewKey viewKey(const AppState& state) {
+    const SceneState& scene = state.scene;
+    return ViewKey{
+        .document = scene.generation(),
+        .revision = scene.document().revision(),
+        .layers = state.view.layers,
+        .slice = state.view.slice,
+        .selectedShape = scene.selectedShape(),
+        .selectedSource = scene.document().sources().empty() ? 0 : scene.selectedSource(),
+        .traces = state.traces.shownId,
+        .selectedPath = state.traces.selectedPath,
+        .selectedEvent = state.traces.selectedEvent,
+        .up = state.view.camera.up,
+    };
+}
+
+void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
+    const SceneDocument& document = state.scene.document();
+    const TraceState& traces = state.traces;
     const Octree& octree = document.octree();
     bounds_ = render::sceneBounds(octree.shapes());
-    state.sceneBounds = bounds_;
     const render::Anchor anchor{bounds_.center()};
     renderer_.setAnchor(anchor);
 
-    render::LayerOptions options = state.layers;
-    options.selected = state.selected;
-    options.slice = slicePlane(state.slice);
-    const render::RayTraversal* traversal = state.traversal ? &*state.traversal : nullptr;
+    render::LayerOptions options = state.view.layers;
+    options.selected = state.scene.selectedShape();
+    options.slice = slicePlane(state.view.slice);
+    const render::RayTraversal* traversal = traces.traversal ? &*traces.traversal : nullptr;
     options.traversal = options.traversal && traversal;
-    render::LayerInputs inputs{octree, document.sources(), bounds_,
-                               Eigen::Vector3d(state.camera.up.x, state.camera.up.y, state.camera.up.z)};
-    if (state.trace) inputs.paths = &state.trace->outcome.result.paths;
-    if (state.rayTree) inputs.rayTree = &*state.rayTree;
+    const glm::dvec3& up = state.view.camera.up;
+    render::LayerInputs inputs{octree, document.sources(), bounds_, Eigen::Vector3d(up.x, up.y, up.z)};
+    if (traces.trace) inputs.paths = &traces.trace->outcome.result.paths;
+    if (traces.rayTree) inputs.rayTree = &*traces.rayTree;
     inputs.traversal = traversal;
     layers_ = render::buildSceneLayers(inputs, options, anchor);
 
-    if (state.trace && state.selectedPath >= 0) {
-        const auto& events = state.trace->outcome.result.paths[static_cast<std::size_t>(state.selectedPath)].events;
+    if (traces.trace && traces.selectedPath >= 0) {
+        const auto& events = traces.trace->outcome.result.paths[static_cast<std::size_t>(traces.selectedPath)].events;
         if (!events.empty()) {
             const double radius = kCurrentEventMarkerScale * render::kMarkerRadius * bounds_.diagonal().norm();
-            const Point at = events[static_cast<std::size_t>(state.selectedEvent)].position;
+            const Point at = events[static_cast<std::size_t>(traces.selectedEvent)].position;
             layers_.markers.push_back(render::sphereInstance(at, radius, anchor, render::kHighlight));
         }
     }
-    if (const auto handles = sourceHandles(state)) {
+    if (const auto handles = sourceHandles(state, bounds_)) {
         layers_.markers.push_back(
             render::sphereInstance(handles->origin, handles->radius, anchor, kOriginHandleColour));
-        const auto& sources = document.sources();
-        if (sources[selectedSourceIndex(state, sources)].type != SourceType::PointSource) {
+        if (document.sources()[state.scene.selectedSource()].type != SourceType::PointSource) {
             layers_.markers.push_back(render::sphereInstance(handles->aim, handles->radius, anchor, kAimHandleColour));
         }
     }
     render::uploadScene(renderer_, octree.shapes(), layers_, options);
-    shapesDrawn_ = octree.shapeCount();
     ++rebuilds_;
-    state.drawnRevision = document.revision();
-    state.viewDirty = false;
+    builtFrom_ = key;
 }
 
 void ViewportScene::draw(AppState& state, int width, int height) {
-    if (state.viewDirty || state.drawnRevision != state.document->revision()) rebuild(state);
+    if (const ViewKey key = viewKey(state); key != builtFrom_) rebuild(state, key);
+    ViewState& view = state.view;
     const double aspect = static_cast<double>(width) / static_cast<double>(std::max(height, 1));
-    if (state.fitRequested) {
-        state.camera.fitTo(bounds_, aspect);
-        state.fitRequested = false;
+    if (view.fitRequested) {
+        view.camera.fitTo(bounds_, aspect);
+        view.fitRequested = false;
     }
-    state.camera.clipTo(viewBounds(state, bounds_));
-    renderer_.draw(state.camera, state.layers.render, width, height);
+    view.camera.clipTo(viewBounds(state, bounds_));
+    renderer_.draw(view.camera, view.layers.render, width, height);
 }
 
 }  // namespace dropscope::gui

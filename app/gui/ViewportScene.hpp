@@ -3,29 +3,54 @@
 #include "gui/AppState.hpp"
 #include "render/Renderer.hpp"
 
+#include <cstdint>
+#include <optional>
+
 namespace dropscope::gui {
 
+// Everything the 3D view's shapes and layers are built from, as ids, revisions and the settings
+// themselves: a frame whose key differs from the one the view was last built from rebuilds it, and only
+// such a frame does.
+struct ViewKey {
+    std::uint64_t document = 0;  // which document (SceneState::generation), and its revision
+    std::uint64_t revision = 0;
+    render::LayerOptions layers;
+    SliceSettings slice;
+    ShapeId selectedShape = RayHit::kNone;
+    std::size_t selectedSource = 0;
+    std::uint64_t traces = 0;  // which trace and ray tree are shown
+    int selectedPath = -1;     // the photon event selected in the trace
+    int selectedEvent = 0;
+    glm::dvec3 up{0.0};  // the camera's: the grid lies across it
+
+    bool operator==(const ViewKey&) const = default;
+};
+
+ViewKey viewKey(const AppState& state);
+
 // The 3D view behind the panels: turns the app state into the renderer's shapes and line layers
-// (rebuilt only when something drawn changed) and draws them with the state's camera.
+// (rebuilt only when its key changed) and draws them with the state's camera.
 class ViewportScene {
 public:
     explicit ViewportScene(const render::GlFunctions& gl) : renderer_(gl) {}
 
-    // Rebuilds what changed, fits or clips the camera, and draws into the bound framebuffer.
+    // Rebuilds the shapes and layers when the key changed, fits or clips the camera, and draws into the
+    // bound framebuffer.
     void draw(AppState& state, int width, int height);
 
+    // The bounds of the shapes as last drawn (render::sceneBounds): they size the source handles.
+    const Eigen::AlignedBox3d& sceneBounds() const { return bounds_; }
     // What the last rebuild handed to the renderer, for the UI tests.
     const render::SceneLayers& layers() const { return layers_; }
-    std::size_t shapesDrawn() const { return shapesDrawn_; }
     std::uint64_t rebuilds() const { return rebuilds_; }
 
 private:
-    void rebuild(AppState& state);
+    void rebuild(const AppState& state, const ViewKey& key);
 
     render::Renderer renderer_;
     render::SceneLayers layers_{render::LineBatch(render::Anchor{}), {}};
     Eigen::AlignedBox3d bounds_;
-    std::size_t shapesDrawn_ = 0;
+    std::optional<ViewKey> builtFrom_;
     std::uint64_t rebuilds_ = 0;
 };
 

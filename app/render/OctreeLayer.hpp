@@ -12,6 +12,8 @@ struct OctreeFilter {
     Mode mode = Mode::All;
     int level = 0;                 // for OnlyLevel and UpToLevel
     bool occupancyColour = false;  // colour by shapes stored (heat) instead of by level
+
+    bool operator==(const OctreeFilter&) const = default;
 };
 
 // Wire boxes of the octree's cells: by level (levelColour), or with `occupancyColour` along viridis by

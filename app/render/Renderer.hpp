@@ -21,6 +21,8 @@ struct RenderOptions {
     float opacity = 0.35f;
     bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid)
     Colour background{0.08f, 0.09f, 0.11f, 1.0f};
+
+    bool operator==(const RenderOptions&) const = default;
 };
 
 // Draws a scene with OpenGL 3.3 core through a GlFunctions table; the same code for the GUI's window and

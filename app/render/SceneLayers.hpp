@@ -32,6 +32,8 @@ struct LayerOptions {
     // cells, traversal, paths, ray tree and grid cut at the plane. Source glyphs and axes, the guides
     // that say where the light comes from and which way is which, stay whole.
     std::optional<SlicePlane> slice;
+
+    bool operator==(const LayerOptions&) const = default;
 };
 
 // What the layers are drawn from. Paths, the ray tree and the traversal are computed by the caller

@@ -22,6 +22,11 @@ struct SlicePlane {
     // Along the normal from the plane: > 0 hidden, <= 0 kept.
     double signedDistance(const Point& x) const { return normal.dot(x - point); }
     bool keeps(const Point& x) const { return !normal || signedDistance(x) <= 0.0; }
+
+    // The same numbers (so never true of two planes with an invalid normal, whose numbers are NaN).
+    bool operator==(const SlicePlane& other) const {
+        return point == other.point && normal.vector() == other.normal.vector();
+    }
 };
 
 // The kept part of a segment a + t (b - a) is t in [from, to], a sub-interval of [0, 1].

@@ -6,7 +6,9 @@
 
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <string>
 #include <string_view>
 #include <thread>
 
@@ -20,6 +22,9 @@ public:
         : context_(width, height) {
         input_.windowWidth = input_.framebufferWidth = width;
         input_.windowHeight = input_.framebufferHeight = height;
+        options.itemProbe = [this](std::string_view name, const ItemRect& rect) {
+            itemRects_[std::string(name)] = rect;
+        };
         app_ = std::make_unique<App>(context_.gl(), parseScene(sceneJson, "test.json"), options);
         frames(2);  // ImGui lays windows out on their first frame and shows them on the second
     }
@@ -27,8 +32,11 @@ public:
     App& app() { return *app_; }
     AppState& state() { return app_->state(); }
     InputFrame& input() { return input_; }
+    // Where the named fields were drawn in the last frame (ItemProbe), by name.
+    const std::map<std::string, ItemRect>& itemRects() const { return itemRects_; }
 
     void frame() {
+        itemRects_.clear();
         app_->frame(input_);
         input_.wheelY = 0.0f;
         input_.characters.clear();
@@ -75,7 +83,7 @@ public:
         const auto end = std::chrono::steady_clock::now() + limit;
         do {
             frame();
-            if (!state().job.running() && state().trace) return true;
+            if (!state().traces.job.running() && state().traces.trace) return true;
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         } while (std::chrono::steady_clock::now() < end);
         return false;
@@ -85,6 +93,7 @@ public:
 private:
     snapshot::OsmesaContext context_;  // first: the app's GL objects live in this context
     InputFrame input_;
+    std::map<std::string, ItemRect> itemRects_;
     std::unique_ptr<App> app_;
 };
 

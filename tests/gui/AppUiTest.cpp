@@ -56,7 +56,7 @@ bool differsFromBackground(const snapshot::Image& image, float x, float y) {
 }
 
 const Sphere& sphereAt(AppHarness& harness, ShapeId id) {
-    const Shape* shape = harness.state().document->octree().shape(id);
+    const Shape* shape = harness.state().scene.document().octree().shape(id);
     EXPECT_NE(shape, nullptr);
     EXPECT_EQ(shape->kind(), ShapeKind::Sphere);
     return static_cast<const Sphere&>(*shape);
@@ -64,46 +64,46 @@ const Sphere& sphereAt(AppHarness& harness, ShapeId id) {
 
 TEST(AppUi, AClickInPlacementModeDropsADropletOnThePlacementPlaneUnderTheCursor) {
     AppHarness harness(kTopDownScene);
-    harness.state().placementRadius = 0.3;
+    harness.state().placement.radius = 0.3;
     harness.press('P');
-    ASSERT_TRUE(harness.state().placementMode);
+    ASSERT_TRUE(harness.state().placement.active);
     harness.click(740.0f, 480.0f);
 
-    ASSERT_EQ(harness.state().document->shapeCount(), 2u);
+    ASSERT_EQ(harness.state().scene.document().shapeCount(), 2u);
     const Sphere& droplet = sphereAt(harness, 1);
     const Point expected = topDownPoint(740.0, 480.0);
     EXPECT_NEAR(droplet.center().x(), expected.x(), kPositionRounding);
     EXPECT_EQ(droplet.center().y(), 0.0);  // exactly on the plane
     EXPECT_NEAR(droplet.center().z(), expected.z(), kPositionRounding);
     EXPECT_EQ(droplet.radius(), 0.3);
-    EXPECT_EQ(harness.state().document->media()[droplet.mediumId()].name, "water");
-    EXPECT_FALSE(harness.state().status.error) << harness.state().status.text;
+    EXPECT_EQ(harness.state().scene.document().media()[droplet.mediumId()].name, "water");
+    EXPECT_FALSE(harness.state().ui.status.error()) << harness.state().ui.status.text();
     harness.frame();
     EXPECT_TRUE(differsFromBackground(harness.image(), 740.0f, 480.0f));
 }
 
 TEST(AppUi, APlacementThatWouldOverlapIsRefusedWithAVisibleMessage) {
     AppHarness harness(kTopDownScene);
-    harness.state().placementRadius = 0.3;
+    harness.state().placement.radius = 0.3;
     harness.press('P');
     harness.click(740.0f, 480.0f);
-    ASSERT_EQ(harness.state().document->shapeCount(), 2u);
-    const std::uint64_t revision = harness.state().document->revision();
+    ASSERT_EQ(harness.state().scene.document().shapeCount(), 2u);
+    const std::uint64_t revision = harness.state().scene.document().revision();
     const auto [x, y] = topDownPixel(topDownPoint(740.0, 480.0) + Point(0.4, 0.0, 0.0));  // 0.4 < 0.3 + 0.3
     harness.click(x, y);
-    EXPECT_EQ(harness.state().document->shapeCount(), 2u);
-    EXPECT_EQ(harness.state().document->revision(), revision);
-    EXPECT_TRUE(harness.state().status.error);
-    EXPECT_NE(harness.state().status.text.find("overlap"), std::string::npos) << harness.state().status.text;
+    EXPECT_EQ(harness.state().scene.document().shapeCount(), 2u);
+    EXPECT_EQ(harness.state().scene.document().revision(), revision);
+    EXPECT_TRUE(harness.state().ui.status.error());
+    EXPECT_NE(harness.state().ui.status.text().find("overlap"), std::string::npos) << harness.state().ui.status.text();
 }
 
 TEST(AppUi, AClickOnADropletInPlacementModeDropsTheNewOneTouchingIt) {
     AppHarness harness(kTopDownScene);
-    harness.state().placementRadius = 0.2;
+    harness.state().placement.radius = 0.2;
     harness.press('P');
     const auto [x, y] = topDownPixel(Point(2.0, 0.0, 2.0));  // the centre of d1, seen from above
     harness.click(x, y);
-    ASSERT_EQ(harness.state().document->shapeCount(), 2u);
+    ASSERT_EQ(harness.state().scene.document().shapeCount(), 2u);
     const Sphere& droplet = sphereAt(harness, 1);
     const Sphere& below = sphereAt(harness, 0);
     EXPECT_NEAR((droplet.center() - below.center()).norm(), 0.5 + 0.2, kPositionRounding);  // touching
@@ -114,18 +114,18 @@ TEST(AppUi, UndoAndRedoFromTheKeyboard) {
     AppHarness harness(kTopDownScene);
     harness.press('P');
     harness.click(740.0f, 480.0f);
-    ASSERT_EQ(harness.state().document->shapeCount(), 2u);
+    ASSERT_EQ(harness.state().scene.document().shapeCount(), 2u);
     harness.press('Z', true);
-    EXPECT_EQ(harness.state().document->shapeCount(), 1u);
+    EXPECT_EQ(harness.state().scene.document().shapeCount(), 1u);
     harness.press('Y', true);
-    EXPECT_EQ(harness.state().document->shapeCount(), 2u);
+    EXPECT_EQ(harness.state().scene.document().shapeCount(), 2u);
 }
 
 TEST(AppUi, ClickingSelectsAndDraggingMovesTheSelectedDropletInOneUndoStep) {
     AppHarness harness(kTopDownScene);
     const auto [x, y] = topDownPixel(Point(2.0, 0.0, 2.0));
     harness.click(x, y);
-    ASSERT_EQ(harness.state().selected, 0u);
+    ASSERT_EQ(harness.state().scene.selectedShape(), 0u);
     // The drag plane is horizontal through the centre (y = 0), so 64 pixels right is 64/640 of 10 tanX.
     harness.drag(x, y, x + 64.0f, y);
     const Sphere& moved = sphereAt(harness, 0);
@@ -147,26 +147,26 @@ TEST(AppUi, DraggingTheSourceHandlesMovesAndAimsTheSource) {
     source.type = SourceType::Ray;
     source.origin = Point(-2.0, 0.0, -1.0);
     source.direction = Direction(1.0, 0.0, 0.0);
-    harness.state().document->setSources({source});
+    harness.state().scene.document().setSources({source});
     harness.frames(2);
-    const double arrow = render::kSourceGlyph * harness.state().sceneBounds.diagonal().norm();
+    const double arrow = render::kSourceGlyph * harness.app().viewport().sceneBounds().diagonal().norm();
 
     const auto [ox, oy] = topDownPixel(source.origin);
     harness.drag(ox, oy, ox + 64.0f, oy);  // 64 pixels right: 0.1 of 10 tanX along +x
     const Point moved = source.origin + Point(0.1 * 10.0 * kTanX, 0.0, 0.0);
-    EXPECT_NEAR((harness.state().document->sources()[0].origin - moved).norm(), 0.0, kMouseRounding);
-    EXPECT_EQ(harness.state().document->sources()[0].direction.vector(), Eigen::Vector3d::UnitX());
-    EXPECT_EQ(harness.state().selected, RayHit::kNone);  // a handle drag is not a click on a shape
+    EXPECT_NEAR((harness.state().scene.document().sources()[0].origin - moved).norm(), 0.0, kMouseRounding);
+    EXPECT_EQ(harness.state().scene.document().sources()[0].direction.vector(), Eigen::Vector3d::UnitX());
+    EXPECT_EQ(harness.state().scene.selectedShape(), RayHit::kNone);  // a handle drag is not a click on a shape
 
     const auto [ax, ay] = topDownPixel(moved + arrow * Eigen::Vector3d::UnitX());
     harness.drag(ax, ay, ax, ay + 80.0f);  // the tip 80 pixels down: +z by 0.2 of 10 tanY
     const Eigen::Vector3d aimed = Eigen::Vector3d(arrow, 0.0, 0.2 * 10.0 * kTanY).normalized();
-    EXPECT_NEAR((harness.state().document->sources()[0].direction.vector() - aimed).norm(), 0.0, kMouseRounding);
+    EXPECT_NEAR((harness.state().scene.document().sources()[0].direction.vector() - aimed).norm(), 0.0, kMouseRounding);
 
     harness.press('Z', true);  // each drag is one undo step
-    EXPECT_EQ(harness.state().document->sources()[0].direction.vector(), Eigen::Vector3d::UnitX());
+    EXPECT_EQ(harness.state().scene.document().sources()[0].direction.vector(), Eigen::Vector3d::UnitX());
     harness.press('Z', true);
-    EXPECT_EQ(harness.state().document->sources()[0].origin, source.origin);
+    EXPECT_EQ(harness.state().scene.document().sources()[0].origin, source.origin);
 }
 
 // A water sphere on the source's axis: the first interface is at (0, 0, -1), head on, where Fresnel
@@ -183,11 +183,11 @@ constexpr double kFresnelRounding = 1e-12;
 
 TEST(AppUi, FiringTracesThePhotonsOffTheUiThreadAndShowsTheExpectedPaths) {
     AppHarness harness(kAxisScene);
-    harness.state().fire.photons = 500;
-    harness.state().fire.paths = 50;
+    harness.state().traces.fire.photons = 500;
+    harness.state().traces.fire.paths = 50;
     harness.press(kKeySpace);
     ASSERT_TRUE(harness.waitForTrace());
-    const TraceResult& shown = harness.state().trace->outcome.result;
+    const TraceResult& shown = harness.state().traces.trace->outcome.result;
     ASSERT_EQ(shown.paths.size(), 50u);
 
     // Every recorded photon runs along the axis: emitted at z = -5, meeting surfaces at z = -1 and z = 1.
@@ -205,8 +205,8 @@ TEST(AppUi, FiringTracesThePhotonsOffTheUiThreadAndShowsTheExpectedPaths) {
     TraceSettings settings;
     settings.photons = 500;
     settings.paths = 50;
-    settings.seed = harness.state().fire.seed;
-    const Scene scene = harness.state().document->toScene();
+    settings.seed = harness.state().traces.fire.seed;
+    const Scene scene = harness.state().scene.document().toScene();
     const TraceResult direct = test::traceStandard(OpticalScene(scene), scene.sources, settings);
     EXPECT_EQ(test::fates(shown), test::fates(direct));
     ASSERT_EQ(shown.paths.size(), direct.paths.size());
@@ -223,9 +223,9 @@ TEST(AppUi, FiringTracesThePhotonsOffTheUiThreadAndShowsTheExpectedPaths) {
 TEST(AppUi, TheRayTreeKeySplitsTheRayAtTheFirstSurfaceByFresnel) {
     AppHarness harness(kAxisScene);
     harness.press('R');
-    ASSERT_TRUE(harness.state().rayTree.has_value());
+    ASSERT_TRUE(harness.state().traces.rayTree.has_value());
     std::vector<double> weights;
-    for (const RayTreeNode& node : harness.state().rayTree->nodes) {
+    for (const RayTreeNode& node : harness.state().traces.rayTree->nodes) {
         if (node.parent == 0) {
             EXPECT_NEAR(node.event.position.z(), -1.0, kPositionRounding);
             weights.push_back(node.event.weight);
@@ -239,18 +239,18 @@ TEST(AppUi, TheRayTreeKeySplitsTheRayAtTheFirstSurfaceByFresnel) {
 
 TEST(AppUi, StepsThroughTheEventsOfASelectedPathWithItsOctreeTraversal) {
     AppHarness harness(kAxisScene);
-    harness.state().fire.paths = 5;
+    harness.state().traces.fire.paths = 5;
     harness.press(kKeySpace);
     ASSERT_TRUE(harness.waitForTrace());
     harness.press(kKeyRight);  // selects the first photon's first event
-    EXPECT_EQ(harness.state().selectedPath, 0);
-    EXPECT_EQ(harness.state().selectedEvent, 0);
-    ASSERT_TRUE(harness.state().traversal.has_value());
+    EXPECT_EQ(harness.state().traces.selectedPath, 0);
+    EXPECT_EQ(harness.state().traces.selectedEvent, 0);
+    ASSERT_TRUE(harness.state().traces.traversal.has_value());
     // From the emission the segment's traversal finds the sphere 4 ahead.
-    EXPECT_EQ(harness.state().traversal->record.hit.shape, 0u);
-    EXPECT_NEAR(harness.state().traversal->record.hit.distance, 4.0, kPositionRounding);
+    EXPECT_EQ(harness.state().traces.traversal->record.hit.shape, 0u);
+    EXPECT_NEAR(harness.state().traces.traversal->record.hit.distance, 4.0, kPositionRounding);
     harness.press(kKeyRight);
-    EXPECT_EQ(harness.state().selectedEvent, 1);
+    EXPECT_EQ(harness.state().traces.selectedEvent, 1);
 }
 
 // A cloud of droplets: enough for an octree of several levels.
@@ -272,14 +272,14 @@ std::size_t differingPixels(const snapshot::Image& a, const snapshot::Image& b) 
 
 TEST(AppUi, TheOctreeLevelControlChangesWhichCellsAreDrawn) {
     AppHarness harness(kCloudScene);
-    const auto statistics = harness.state().document->octree().statistics();
+    const auto statistics = harness.state().scene.document().octree().statistics();
     ASSERT_GE(statistics.size(), 3u);
     harness.press('C');  // cells on: only level 0
-    ASSERT_TRUE(harness.state().layers.octree);
+    ASSERT_TRUE(harness.state().view.layers.octree);
     constexpr std::size_t kVerticesPerCell = 24;  // 12 edges
     EXPECT_EQ(harness.app().viewport().layers().lines.vertices().size(), kVerticesPerCell * statistics[0].cells);
     harness.press(']');
-    EXPECT_EQ(harness.state().layers.octreeFilter.level, 1);
+    EXPECT_EQ(harness.state().view.layers.octreeFilter.level, 1);
     EXPECT_EQ(harness.app().viewport().layers().lines.vertices().size(), kVerticesPerCell * statistics[1].cells);
     const snapshot::Image level1 = harness.image();
     harness.press(']');
@@ -300,10 +300,10 @@ TEST(AppUi, TheSlicePlaneHidesTheDropletsOnItsFarSide) {
     const auto [rightX, rightY] = topDownPixel(Point(1.5, 0.0, 0.0));
     EXPECT_TRUE(differsFromBackground(harness.image(), leftX, leftY));
     EXPECT_TRUE(differsFromBackground(harness.image(), rightX, rightY));
-    harness.state().slice.axis = 0;
-    harness.state().slice.offset = 0.0;
+    harness.state().view.slice.axis = 0;
+    harness.state().view.slice.offset = 0.0;
     harness.press('L');
-    ASSERT_TRUE(harness.state().slice.enabled);
+    ASSERT_TRUE(harness.state().view.slice.enabled);
     EXPECT_TRUE(differsFromBackground(harness.image(), leftX, leftY));
     EXPECT_FALSE(differsFromBackground(harness.image(), rightX, rightY));
 }
@@ -326,11 +326,11 @@ TEST_F(AppScreenshot, F12WritesATimestampedPngOfTheViewAndSaysWhere) {
     options.screenshotDirectory = directory_;
     AppHarness harness(kTopDownScene, 1280, 800, options);
     harness.press(kKeyF12);
-    const std::filesystem::path file = harness.state().lastScreenshot;
-    ASSERT_FALSE(file.empty()) << harness.state().status.text;
+    const std::filesystem::path file = harness.state().ui.lastScreenshot;
+    ASSERT_FALSE(file.empty()) << harness.state().ui.status.text();
     EXPECT_EQ(file.parent_path(), directory_);
     EXPECT_TRUE(file.filename().string().starts_with("dropscope-"));
-    EXPECT_NE(harness.state().status.text.find(file.filename().string()), std::string::npos);
+    EXPECT_NE(harness.state().ui.status.text().find(file.filename().string()), std::string::npos);
     const snapshot::Image image = snapshot::readPng(file);
     EXPECT_EQ(image.width, 1280);
     EXPECT_EQ(image.height, 800);
@@ -342,9 +342,9 @@ TEST_F(AppScreenshot, F12WritesATimestampedPngOfTheViewAndSaysWhere) {
 
 TEST_F(AppScreenshot, WithPanelsOrAtAChosenSize) {
     AppHarness harness(kTopDownScene);
-    harness.state().screenshot = ScreenshotRequest{directory_ / "panels.png", true, 0, 0};
+    harness.state().ui.screenshot = ScreenshotRequest{directory_ / "panels.png", true, 0, 0};
     harness.frame();
-    harness.state().screenshot = ScreenshotRequest{directory_ / "large.png", false, 1600, 900};
+    harness.state().ui.screenshot = ScreenshotRequest{directory_ / "large.png", false, 1600, 900};
     harness.frame();
     const snapshot::Image panels = snapshot::readPng(directory_ / "panels.png");
     const snapshot::Image large = snapshot::readPng(directory_ / "large.png");
@@ -359,9 +359,9 @@ TEST_F(AppScreenshot, WithPanelsOrAtAChosenSize) {
 
 TEST_F(AppScreenshot, AnUnwritableFileIsReportedAndNothingIsLeftBehind) {
     AppHarness harness(kTopDownScene);
-    harness.state().screenshot = ScreenshotRequest{directory_ / "missing" / "shot.png", false, 0, 0};
+    harness.state().ui.screenshot = ScreenshotRequest{directory_ / "missing" / "shot.png", false, 0, 0};
     harness.frame();
-    EXPECT_TRUE(harness.state().status.error);
+    EXPECT_TRUE(harness.state().ui.status.error());
     EXPECT_FALSE(std::filesystem::exists(directory_ / "missing"));
 }
 
@@ -370,9 +370,9 @@ TEST_F(AppScreenshot, SavedScenesReloadWithTheEditsAndTheCamera) {
     harness.press('P');
     harness.click(740.0f, 480.0f);
     const std::filesystem::path file = directory_ / "saved.json";
-    harness.state().scenePath = file;
+    harness.state().scene.setFile(file);
     harness.press('S', true);
-    ASSERT_FALSE(harness.state().status.error) << harness.state().status.text;
+    ASSERT_FALSE(harness.state().ui.status.error()) << harness.state().ui.status.text();
     const Scene reloaded = loadScene(file);
     ASSERT_EQ(reloaded.shapes.size(), 2u);
     EXPECT_EQ(static_cast<const Sphere&>(*reloaded.shapes[1]).center(), sphereAt(harness, 1).center());
@@ -382,10 +382,10 @@ TEST_F(AppScreenshot, SavedScenesReloadWithTheEditsAndTheCamera) {
 
 TEST_F(AppScreenshot, ExportedPathsAreTheTraceFilesJsonLinesOnePerPhoton) {
     AppHarness harness(kAxisScene);
-    harness.state().fire.paths = 7;
+    harness.state().traces.fire.paths = 7;
     harness.press(kKeySpace);
     ASSERT_TRUE(harness.waitForTrace());
-    ASSERT_TRUE(exportPaths(harness.state(), directory_ / "paths.jsonl")) << harness.state().status.text;
+    ASSERT_TRUE(exportPaths(harness.state(), directory_ / "paths.jsonl")) << harness.state().ui.status.text();
     std::ifstream in(directory_ / "paths.jsonl");
     std::string line;
     int lines = 0;
@@ -401,37 +401,38 @@ TEST_F(AppScreenshot, ASceneThatDoesNotOpenLeavesTheCurrentOneAndSaysWhy) {
     std::ofstream(directory_ / "bad.json")
         << R"({"dropscope": 1, "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]})";
     EXPECT_FALSE(openScene(harness.state(), directory_ / "bad.json"));
-    EXPECT_TRUE(harness.state().status.error);
-    EXPECT_NE(harness.state().status.text.find("shapes[0].radius"), std::string::npos) << harness.state().status.text;
-    EXPECT_EQ(harness.state().document->shapeCount(), 1u);
+    EXPECT_TRUE(harness.state().ui.status.error());
+    EXPECT_NE(harness.state().ui.status.text().find("shapes[0].radius"), std::string::npos)
+        << harness.state().ui.status.text();
+    EXPECT_EQ(harness.state().scene.document().shapeCount(), 1u);
     harness.frame();
 }
 
 TEST_F(AppScreenshot, OpeningAnotherSceneDropsTheTraceStillRunningOnTheOldOne) {
     AppHarness harness(kCloudScene);
     std::ofstream(directory_ / "other.json") << kTopDownScene;
-    harness.state().document->setSources({Source{SourceType::Beam, Point(0, 0, -5), Direction(0, 0, 1), 2.0}});
-    harness.state().fire.photons = 50'000'000;  // far longer than this test
+    harness.state().scene.document().setSources({Source{SourceType::Beam, Point(0, 0, -5), Direction(0, 0, 1), 2.0}});
+    harness.state().traces.fire.photons = 50'000'000;  // far longer than this test
     harness.press(kKeySpace);
-    ASSERT_TRUE(harness.state().job.running());
+    ASSERT_TRUE(harness.state().traces.job.running());
     ASSERT_TRUE(openScene(harness.state(), directory_ / "other.json"));
-    EXPECT_FALSE(harness.state().job.running());
+    EXPECT_FALSE(harness.state().traces.job.running());
     harness.frames(3);
-    EXPECT_FALSE(harness.state().trace.has_value());
-    EXPECT_EQ(harness.state().document->shapeCount(), 1u);
+    EXPECT_FALSE(harness.state().traces.trace.has_value());
+    EXPECT_EQ(harness.state().scene.document().shapeCount(), 1u);
 }
 
 TEST(AppUi, ShortcutsDoNothingWhileAFileDialogIsOpen) {
     AppHarness harness(kTopDownScene);
     const auto [x, y] = topDownPixel(Point(2.0, 0.0, 2.0));
     harness.click(x, y);
-    ASSERT_EQ(harness.state().selected, 0u);
-    harness.state().prompt = FilePrompt::Screenshot;
+    ASSERT_EQ(harness.state().scene.selectedShape(), 0u);
+    harness.state().ui.prompt = FilePrompt::Screenshot;
     harness.frame();
     harness.press(kKeyDelete);
-    EXPECT_EQ(harness.state().document->shapeCount(), 1u);
+    EXPECT_EQ(harness.state().scene.document().shapeCount(), 1u);
     harness.press('P');
-    EXPECT_FALSE(harness.state().placementMode);
+    EXPECT_FALSE(harness.state().placement.active);
 }
 
 TEST_F(AppScreenshot, ThePanelLayoutIsRememberedInTheIniFile) {

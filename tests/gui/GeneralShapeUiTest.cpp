@@ -46,7 +46,7 @@ bool differsFromBackground(const snapshot::Image& image, const Point& p) {
 
 // The translation r0 of the general shape in slot `id`; NaN when there is none.
 Point translationOf(AppHarness& harness, ShapeId id) {
-    const Shape* shape = harness.state().document->octree().shape(id);
+    const Shape* shape = harness.state().scene.document().octree().shape(id);
     const GeneralShape* general = shape ? asGeneralShape(*shape) : nullptr;
     return general ? general->transform().translation() : Point::Constant(std::numeric_limits<double>::quiet_NaN());
 }
@@ -54,8 +54,8 @@ Point translationOf(AppHarness& harness, ShapeId id) {
 // Types `text` into the first box (x) of the shape editor's centre field and leaves the field.
 void typeCenterX(AppHarness& harness, const char* text) {
     harness.frame();  // the editor of a shape selected by the last frame's click is drawn in the next one
-    const auto field = harness.state().itemRects.find("centre");
-    ASSERT_NE(field, harness.state().itemRects.end()) << "the shape editor shows no centre field";
+    const auto field = harness.itemRects().find("centre");
+    ASSERT_NE(field, harness.itemRects().end()) << "the shape editor shows no centre field";
     const float y = 0.5f * (field->second.minY + field->second.maxY);
     harness.click(field->second.minX + 8.0f, y);
     ASSERT_TRUE(ImGui::GetIO().WantTextInput) << "the click did not reach the centre field";
@@ -75,18 +75,18 @@ TEST(GeneralShapeUi, ClickedParametricShapeMovesByItsCenterFieldInOneUndoStep) {
     spec.general = std::make_shared<test::TestOctahedron>(0.6, AffineTransform(m, Point::Zero()));
     spec.center = Point(1.0, 0.0, 1.0);
     spec.medium = 1;
-    const ShapeId id = harness.state().document->addShape(spec);
+    const ShapeId id = harness.state().scene.document().addShape(spec);
     harness.frame();
     EXPECT_TRUE(differsFromBackground(harness.image(), Point(1.0, 0.0, 1.0))) << "the shape is not drawn";
 
     const auto [x, y] = topDownPixel(Point(1.0, 0.0, 1.0));
     harness.click(x, y);
-    ASSERT_EQ(harness.state().selected, id);
-    EXPECT_EQ(harness.state().status.text, "selected shape 1: parametric octahedron, water");
+    ASSERT_EQ(harness.state().scene.selectedShape(), id);
+    EXPECT_EQ(harness.state().ui.status.text(), "selected shape 1: parametric octahedron, water");
 
     typeCenterX(harness, "2.5");
-    EXPECT_FALSE(harness.state().status.error) << harness.state().status.text;
-    const Shape* moved = harness.state().document->octree().shape(id);
+    EXPECT_FALSE(harness.state().ui.status.error()) << harness.state().ui.status.text();
+    const Shape* moved = harness.state().scene.document().octree().shape(id);
     ASSERT_TRUE(moved && asGeneralShape(*moved));
     EXPECT_EQ(asGeneralShape(*moved)->transform().translation(), Point(2.5, 0.0, 1.0));
     EXPECT_EQ(asGeneralShape(*moved)->transform().matrix(), m) << "only r0 is edited";
@@ -113,10 +113,10 @@ TEST(GeneralShapeUi, DraggingMovesTheSelectedParametricShape) {
     spec.general = std::make_shared<test::TestOctahedron>(0.6);
     spec.center = Point(1.0, 0.0, 1.0);
     spec.medium = 1;
-    const ShapeId id = harness.state().document->addShape(spec);
+    const ShapeId id = harness.state().scene.document().addShape(spec);
     const auto [x, y] = topDownPixel(Point(1.0, 0.0, 1.0));
     harness.click(x, y);
-    ASSERT_EQ(harness.state().selected, id);
+    ASSERT_EQ(harness.state().scene.selectedShape(), id);
     harness.drag(x, y, x + 64.0f, y);
     // 64 pixels right is 64/640 of 10 tanX; float mouse coordinates round a little.
     constexpr double kMouseRounding = 1e-6;
@@ -141,12 +141,12 @@ TEST(GeneralShapeUi, AClickInATorusHoleSelectsNothingAndOnItsTubeSelectsIt) {
     EXPECT_FALSE(differsFromBackground(harness.image(), Point(0.0, 0.0, 0.0)));
     EXPECT_TRUE(differsFromBackground(harness.image(), Point(1.0, 0.0, 0.0)));
     harness.click(holeX, holeY);
-    EXPECT_EQ(harness.state().selected, RayHit::kNone);
+    EXPECT_EQ(harness.state().scene.selectedShape(), RayHit::kNone);
     harness.click(tubeX, tubeY);
-    EXPECT_EQ(harness.state().selected, 0u);
-    EXPECT_EQ(harness.state().status.text, "selected shape 0: parametric torus, glass");
+    EXPECT_EQ(harness.state().scene.selectedShape(), 0u);
+    EXPECT_EQ(harness.state().ui.status.text(), "selected shape 0: parametric torus, glass");
     harness.frame();
-    EXPECT_EQ(harness.state().itemRects.count("centre"), 1u) << "the editor shows the centre field";
+    EXPECT_EQ(harness.itemRects().count("centre"), 1u) << "the editor shows the centre field";
 }
 
 }  // namespace

@@ -1,0 +1,124 @@
+#include "gui/TraceActions.hpp"
+
+#include "transport/OpticalScene.hpp"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace dropscope::gui {
+
+namespace {
+
+void startTrace(AppState& state, bool automatic) {
+    TraceState& traces = state.traces;
+    const SceneDocument& document = state.scene.document();
+    traces.firedRevision = document.revision();
+    if (document.sources().empty()) return state.ui.status.refuse("nothing to fire: add a source first (Fire panel)");
+    TraceSettings settings;
+    settings.photons = std::max<std::uint64_t>(traces.fire.photons, 1);
+    settings.paths = std::min(traces.fire.paths, settings.photons);
+    settings.seed = traces.fire.seed;
+    std::vector<ShapeId> slots;
+    Scene scene = document.toScene(&slots);
+    traces.pendingSlots = std::move(slots);
+    traces.job.start(std::move(scene), settings);
+    traces.automatic = automatic;
+    if (!automatic) state.ui.status.say("tracing " + std::to_string(settings.photons) + " photons ...");
+}
+
+void traceRayTree(AppState& state, bool automatic) {
+    TraceState& traces = state.traces;
+    const SceneDocument& document = state.scene.document();
+    traces.rayTreeRevision = document.revision();
+    const auto& sources = document.sources();
+    if (sources.empty()) return state.ui.status.refuse("nothing to fire: add a source first (Fire panel)");
+    const Source& source = sources[state.scene.selectedSource()];
+    state.ui.status.attempt("ray tree failed", [&] {
+        const OpticalScene optical(document.toScene());
+        const Ray ray{source.origin, source.direction};
+        traces.rayTree = traceRayTree(optical, ray, 1.0, RayTreeSettings{});
+        ++traces.shownId;
+        state.view.layers.rayTree = true;
+        if (!automatic) {
+            state.ui.status.say("ray tree: " + std::to_string(traces.rayTree->nodes.size()) + " events, " +
+                                std::to_string(traces.rayTree->absorbed) + " absorbed");
+        }
+    });
+}
+
+}  // namespace
+
+void fireTrace(AppState& state) { startTrace(state, false); }
+
+void cancelTrace(AppState& state) {
+    if (!state.traces.job.running()) return;
+    state.traces.job.cancel();
+    state.ui.status.say("trace cancelled; the photons traced so far are shown");
+}
+
+void fireRayTree(AppState& state) { traceRayTree(state, false); }
+
+void updateTraces(AppState& state) {
+    TraceState& traces = state.traces;
+    if (auto outcome = traces.job.takeResult()) {
+        if (outcome->error) {
+            state.ui.status.refuse("trace failed: " + *outcome->error);
+        } else {
+            std::ostringstream text;
+            text << (outcome->result.partial ? "trace stopped: " : "traced ") << outcome->result.photons
+                 << " photons in " << std::fixed << std::setprecision(2) << outcome->result.seconds << " s";
+            traces.trace = TraceShown{std::move(*outcome), std::move(traces.pendingSlots), nullptr};
+            ++traces.shownId;
+            const auto paths = static_cast<int>(traces.trace->outcome.result.paths.size());
+            selectEvent(traces, traces.selectedPath < paths ? traces.selectedPath : -1, traces.selectedEvent);
+            if (!traces.automatic) state.ui.status.say(text.str());
+        }
+    }
+    const std::uint64_t revision = state.scene.document().revision();
+    if (!traces.fire.live) return;
+    if (traces.trace && !traces.job.running() && traces.firedRevision != revision) startTrace(state, true);
+    if (traces.rayTree && traces.rayTreeRevision != revision) traceRayTree(state, true);
+}
+
+void selectEvent(TraceState& traces, int path, int event) {
+    traces.traversal.reset();
+    if (!traces.trace || path < 0 || path >= static_cast<int>(traces.trace->outcome.result.paths.size())) {
+        traces.selectedPath = -1;
+        return;
+    }
+    const auto& events = traces.trace->outcome.result.paths[static_cast<std::size_t>(path)].events;
+    traces.selectedPath = path;
+    traces.selectedEvent = std::clamp(event, 0, std::max(0, static_cast<int>(events.size()) - 1));
+    if (events.empty()) return;
+    const Event& from = events[static_cast<std::size_t>(traces.selectedEvent)];
+    if (from.type == EventType::Escape || from.type == EventType::Absorb || from.type == EventType::Lost) return;
+    // The segment leaving this event, searched in the octree of the traced scene (built once per trace):
+    // the cells visited and the shapes tested, as the photon saw them.
+    if (!traces.trace->octree) {
+        const Scene& scene = traces.trace->outcome.scene;
+        std::vector<std::unique_ptr<Shape>> shapes;
+        for (const auto& shape : scene.shapes) shapes.push_back(shape->clone());
+        traces.trace->octree = std::make_shared<const Octree>(std::move(shapes), scene.octree);
+    }
+    traces.traversal = render::traceTraversal(*traces.trace->octree, Ray{from.position, from.direction});
+}
+
+void stepEvent(TraceState& traces, int delta) {
+    if (traces.selectedPath < 0) {
+        if (traces.trace && !traces.trace->outcome.result.paths.empty()) selectEvent(traces, 0, 0);
+        return;
+    }
+    selectEvent(traces, traces.selectedPath, traces.selectedEvent + delta);
+}
+
+void forgetTraces(TraceState& traces) {
+    if (traces.trace || traces.rayTree) ++traces.shownId;
+    traces.trace.reset();
+    traces.rayTree.reset();
+    traces.traversal.reset();
+    traces.selectedPath = -1;
+    traces.selectedEvent = 0;
+}
+
+}  // namespace dropscope::gui

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "gui/TraceJob.hpp"
+#include "render/OctreeLayer.hpp"
+#include "transport/RayTree.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace dropscope::gui {
+
+// What the fire controls start: N Monte Carlo photons, of which the first `paths` are recorded.
+struct FireSettings {
+    std::uint64_t photons = 1000;
+    std::uint64_t paths = 50;
+    std::uint64_t seed = 1;
+    bool live = true;  // trace again when the scene changes, so paths follow moved droplets
+};
+
+// A finished trace and how its compact shape ids map back to the document's slots.
+struct TraceShown {
+    TraceOutcome outcome;
+    std::vector<ShapeId> slotOfShape;
+    std::shared_ptr<const Octree> octree;  // over the traced shapes, built for the first traversal asked
+};
+
+// The traces: the run in progress, the results shown (the last Monte Carlo run, the last ray tree) and
+// the photon event selected in them. The trace actions (TraceActions.hpp) change it.
+struct TraceState {
+    FireSettings fire;
+    TraceJob job;
+    std::vector<ShapeId> pendingSlots;  // slotOfShape of the run in progress
+    std::uint64_t firedRevision = 0;    // the document revision the last run traced
+    bool automatic = false;             // the run in progress was started by "live", not the user
+
+    std::optional<TraceShown> trace;    // the last finished Monte Carlo run
+    std::optional<RayTree> rayTree;     // the last ray fired as a tree
+    std::uint64_t rayTreeRevision = 0;  // the document revision it was traced in
+    // Which results are shown: moves on whenever `trace` or `rayTree` is replaced or dropped, so the 3D
+    // view knows to draw them again (as SceneDocument::revision() does for the scene).
+    std::uint64_t shownId = 0;
+
+    int selectedPath = -1;                          // index into trace->outcome.result.paths
+    int selectedEvent = 0;                          // within that path; the segment from it to the next is "selected"
+    std::optional<render::RayTraversal> traversal;  // of the selected segment
+};
+
+}  // namespace dropscope::gui

@@ -1,0 +1,69 @@
+// Opening a scene starts the panels afresh: what they kept from the old scene (a filter typed into the
+// shape list, the generator's fields, the octree's statistics, a plot option) does not survive it.
+#include "AppHarness.hpp"
+
+#include "gui/Actions.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace dropscope::gui::testing {
+namespace {
+
+// Enough droplets for an octree of several levels.
+constexpr const char* kCloudScene = R"({
+  "dropscope": 1, "ambient": "air",
+  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
+  "octree": {"max_shapes_per_leaf": 4},
+  "generators": [{"type": "droplet_cloud", "region": {"min": [-2, -2, -2], "max": [2, 2, 2]}, "count": 300,
+                  "radius": {"distribution": "fixed", "value": 0.05}, "medium": "water", "seed": 3}],
+  "view": {"eye": [6, 4, 7], "target": [0, 0, 0]}
+})";
+
+// One droplet: an octree of one level.
+constexpr const char* kOneDroplet = R"({
+  "dropscope": 1, "ambient": "air",
+  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
+  "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"}]
+})";
+
+std::size_t cellsOf(const std::vector<LevelStatistics>& levels) {
+    std::size_t cells = 0;
+    for (const LevelStatistics& level : levels) cells += level.cells;
+    return cells;
+}
+
+TEST(OpenSceneUi, OpeningASceneStartsThePanelsAfresh) {
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() /
+        ("dropscope-open-scene-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".json");
+    std::ofstream(file) << kOneDroplet;
+
+    AppHarness harness(kCloudScene);
+    PanelState& panels = harness.state().ui.panels;
+    panels.scenePanel.filter = "water";
+    panels.scenePanel.cloud.count = 7;
+    panels.logScale = false;
+    panels.filePrompt.screenshot.panels = true;
+    harness.frame();
+    const auto cloudLevels = harness.state().scene.document().octree().statistics();
+    ASSERT_GE(cloudLevels.size(), 3u);
+    ASSERT_EQ(cellsOf(panels.octreeStatistics.levels), cellsOf(cloudLevels)) << "the Octree panel shows the cloud";
+
+    ASSERT_TRUE(openScene(harness.state(), file)) << harness.state().ui.status.text();
+    harness.frame();
+    EXPECT_EQ(panels.scenePanel.filter, "") << "the old scene's filter hides the new scene's shapes";
+    EXPECT_EQ(panels.scenePanel.cloud.count, CloudFields{}.count);
+    EXPECT_TRUE(panels.logScale);
+    EXPECT_FALSE(panels.filePrompt.screenshot.panels);
+    const auto levels = harness.state().scene.document().octree().statistics();
+    ASSERT_EQ(levels.size(), 1u);
+    EXPECT_EQ(panels.octreeStatistics.levels.size(), 1u) << "the Octree panel shows the old scene's levels";
+    EXPECT_EQ(cellsOf(panels.octreeStatistics.levels), cellsOf(levels));
+    std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace dropscope::gui::testing
