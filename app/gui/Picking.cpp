@@ -19,6 +19,8 @@ Ray cameraRay(const render::Camera& camera, double x, double y, int width, int h
     return Ray{Point(camera.eye.x, camera.eye.y, camera.eye.z), Direction(d.x, d.y, d.z)};
 }
 
+bool isContainer(const Shape& shape) { return shape.kind() == ShapeKind::Box; }
+
 std::optional<Pick> pickShape(const AppState& state, const Ray& ray) {
     const Octree& octree = state.scene.document().octree();
     std::optional<Pick> container;
@@ -30,7 +32,7 @@ std::optional<Pick> pickShape(const AppState& state, const Ray& ray) {
         const Point point = from + hit.distance * ray.direction.vector();
         from = point;
         if (hiddenBySlice(state, shape)) continue;
-        if (shape.kind() == ShapeKind::Box) {
+        if (isContainer(shape)) {
             if (!container) container = Pick{hit.shape, point, shape.normal(point)};
             continue;
         }
@@ -41,7 +43,7 @@ std::optional<Pick> pickShape(const AppState& state, const Ray& ray) {
 
 std::optional<Point> placementCenter(const AppState& state, const Ray& ray) {
     if (const auto pick = pickShape(state, ray);
-        pick && pick->normal && state.scene.document().octree().shape(pick->shape)->kind() != ShapeKind::Box) {
+        pick && pick->normal && !isContainer(*state.scene.document().octree().shape(pick->shape))) {
         return Point(pick->point + state.placement.radius * pick->normal.vector());
     }
     return rayPlaneAxis(ray, state.placement.plane.axis, state.placement.plane.offset);

@@ -17,6 +17,10 @@ struct Pick {
 // height viewport.
 Ray cameraRay(const render::Camera& camera, double x, double y, int width, int height);
 
+// Whether the app treats `shape` as a container (a glass cell): drawn translucent, seen through when
+// clicked, not dragged, not a surface to drop droplets on. Boxes are; every other shape is a droplet.
+bool isContainer(const Shape& shape);
+
 // The first visible shape along the ray, found with the document's octree (Octree::firstHit). Shapes
 // the slice plane hides are passed through, and so are boxes when something lies behind them inside:
 // boxes are drawn translucent, as containers, so a click means the droplet seen through the glass.

@@ -93,7 +93,7 @@ void ViewportControls::press(AppState& state, const Eigen::AlignedBox3d& sceneBo
     if (selected == RayHit::kNone) return;
     const auto pick = pickShape(state, ray);
     const Shape* shape = state.scene.document().octree().shape(selected);
-    if (!pick || pick->shape != selected || !shape || shape->kind() == ShapeKind::Box) return;
+    if (!pick || pick->shape != selected || !shape || isContainer(*shape)) return;
     // Grabbed the selected droplet: it slides in the plane parallel to the placement plane through its centre.
     const ShapeSpec spec = describeShape(*shape);
     if (const auto grabbed = rayPlaneAxis(ray, axis, spec.center[axis])) {
