@@ -17,11 +17,19 @@ if [[ "${1:-}" == "--fix" ]]; then
   "$clang_format" -i "${files[@]}"
   exit 0
 fi
-# One clang-format run over every file; it names each offending file in its warnings.
-mapfile -t bad < <("$clang_format" --dry-run --Werror "${files[@]}" 2>&1 | sed -n 's/^\([^:]*\):[0-9]*:[0-9]*: error: code should be clang-formatted.*/\1/p' | sort -u)
+# One clang-format run over every file; it names each offending file in its warnings. Any other
+# failure (an unknown key in .clang-format, a file it cannot read) fails the check too.
+status=0
+report="$("$clang_format" --dry-run --Werror "${files[@]}" 2>&1)" || status=$?
+mapfile -t bad < <(sed -n 's/^\([^:]*\):[0-9]*:[0-9]*: error: code should be clang-formatted.*/\1/p' <<<"$report" | sort -u)
 if ((${#bad[@]})); then
   echo "check-format: ${#bad[@]} of ${#files[@]} files do not obey .clang-format (scripts/check-format.sh --fix):" >&2
   printf '  %s\n' "${bad[@]}" >&2
+  exit 1
+fi
+if ((status != 0)); then
+  echo "check-format: $clang_format failed (status $status):" >&2
+  head -n 12 <<<"$report" >&2
   exit 1
 fi
 echo "check-format: ${#files[@]} files obey .clang-format"

@@ -13,7 +13,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
@@ -91,11 +90,8 @@ void printSummary(const TraceResult& result, const fs::path& directory, std::ost
     std::snprintf(line, sizeof line, "  escaped %.6g (unscattered %.6g), absorbed %.6g, lost %.6g\n",
                   share(fates.escaped()), share(fates.unscattered()), share(fates.absorbed()), share(fates.lost()));
     out << line;
-    // summary.json first, as always; then the tables and paths.jsonl
-    std::vector<std::string> names = traceFileNames(result.tallies);
-    std::rotate(names.begin(), names.end() - 1, names.end());
-    out << "  wrote " << listed(names) << (result.partial ? " (partial results)" : "") << " in " << directory.string()
-        << '\n';
+    out << "  wrote " << listed(traceFileNames(result.tallies)) << (result.partial ? " (partial results)" : "")
+        << " in " << directory.string() << '\n';
 }
 
 }  // namespace

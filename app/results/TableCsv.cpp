@@ -2,7 +2,9 @@
 
 #include "results/NumberText.hpp"
 
+#include <charconv>
 #include <ostream>
+#include <string_view>
 
 namespace dropscope {
 
@@ -15,7 +17,8 @@ void writeCell(const ResultColumn& column, std::size_t row, std::ostream& out) {
             if constexpr (std::is_same_v<T, double>) {
                 out << shortestText(values[row]);
             } else {
-                out << values[row];
+                char text[24];  // to_chars, as for the numbers: no locale
+                out << std::string_view(text, std::to_chars(text, text + sizeof text, values[row]).ptr);
             }
         },
         column.values);

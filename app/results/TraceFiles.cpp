@@ -37,10 +37,9 @@ void writeTraceSummary(const ResultReport& report, std::ostream& out) {
 std::vector<std::string> traceFileNames(const TallySet& tallies) {
     ResultReport report;
     tallies.emptyCopy().report(report);
-    std::vector<std::string> names;
+    std::vector<std::string> names{"summary.json"};
     for (const ResultTable& table : report.tables()) names.push_back(table.name + ".csv");
     names.push_back("paths.jsonl");
-    names.push_back("summary.json");
     return names;
 }
 
@@ -52,6 +51,7 @@ void writeTraceFiles(const std::filesystem::path& directory, const TraceResult& 
         files.push_back({directory / (table.name + ".csv"), [&](std::ostream& out) { writeTableCsv(table, out); }});
     }
     files.push_back({directory / "paths.jsonl", [&](std::ostream& out) { writePathsJsonl(result.paths, media, out); }});
+    // Renamed last: a summary.json is only ever beside the files of its own run.
     files.push_back({directory / "summary.json", [&](std::ostream& out) { writeTraceSummary(report, out); }});
     writeFilesAtomically(files);
 }

@@ -29,8 +29,8 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info);
 // summary.json: the report's summary, keys in the order docs/cli.md gives them, then any others.
 void writeTraceSummary(const ResultReport& report, std::ostream& out);
 
-// The files writeTraceFiles writes for runs with these tallies: one NAME.csv per table they report,
-// paths.jsonl and summary.json (last).
+// The files writeTraceFiles writes for runs with these tallies, in the order docs/cli.md names them:
+// summary.json, one NAME.csv per table they report, paths.jsonl.
 std::vector<std::string> traceFileNames(const TallySet& tallies);
 
 // Writes every file of traceFileNames into `directory`, all or none (writeFilesAtomically): a

@@ -51,6 +51,10 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     result.requested = settings.photons;
     const int requestedThreads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
     result.tallies = tallies.emptyCopy();
+    // One empty copy of the tallies per thread, made here so a Tally need not be safe to copy from
+    // several threads at once; merged after the threads end.
+    std::vector<TallySet> locals;
+    for (int thread = 0; thread < requestedThreads; ++thread) locals.push_back(tallies.emptyCopy());
     const std::uint64_t recorded = std::min(settings.paths, settings.photons);
     // A traced photon's path starts with its emission, so an empty one was never traced (stopped run).
     std::vector<PhotonPath> paths(recorded);
@@ -71,7 +75,7 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
 #pragma omp single nowait
         threadsUsed = omp_get_num_threads();  // OMP_THREAD_LIMIT and the like may give fewer
         try {
-            TallySet local = tallies.emptyCopy();
+            TallySet& local = locals[static_cast<std::size_t>(omp_get_thread_num())];
             double lastReport = 0.0;
             while (!stopRequested()) {
                 const std::uint64_t first = kChunk * nextChunk.fetch_add(1, std::memory_order_relaxed);
@@ -100,8 +104,6 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                     }
                 }
             }
-#pragma omp critical(dropscope_trace_merge)
-            result.tallies.merge(local);
         } catch (...) {
 #pragma omp critical(dropscope_trace_failure)
             if (!failure) failure = std::current_exception();
@@ -109,6 +111,7 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
         }
     }
     if (failure) std::rethrow_exception(failure);
+    for (const TallySet& local : locals) result.tallies.merge(local);
     result.threads = threadsUsed;
 
     result.seconds = secondsSince(start);

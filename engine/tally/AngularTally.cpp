@@ -39,9 +39,8 @@ double AngularTally::lowerEdgeDeg(int bin) const {
     return 180.0 * static_cast<double>(bin) / static_cast<double>(bins());
 }
 
-void AngularTally::report(ResultReport& report) const {
-    report.set({"bins"}, static_cast<std::uint64_t>(escapes_.size()));
-    std::vector<double> lower, upper, fraction, perSteradian;
+AngularTally::Columns AngularTally::columns() const {
+    Columns columns;
     for (int bin = 0; bin < bins(); ++bin) {
         const double lo = lowerEdgeDeg(bin);
         const double hi = lowerEdgeDeg(bin + 1);
@@ -49,22 +48,24 @@ void AngularTally::report(ResultReport& report) const {
             photons_ > 0 ? static_cast<double>(escapes_[static_cast<std::size_t>(bin)]) / static_cast<double>(photons_)
                          : std::nan("");
         const double solidAngle = 2.0 * std::numbers::pi * (std::cos(radians(lo)) - std::cos(radians(hi)));
-        lower.push_back(lo);
-        upper.push_back(hi);
-        fraction.push_back(share);
-        perSteradian.push_back(share / solidAngle);
+        columns.lower.push_back(lo);
+        columns.upper.push_back(hi);
+        columns.fraction.push_back(share);
+        columns.perSteradian.push_back(share / solidAngle);
     }
-    report.addTable({"angular",
-                     {{"theta_lo_deg", std::move(lower)},
-                      {"theta_hi_deg", std::move(upper)},
-                      {"fraction", std::move(fraction)},
-                      {"fraction_per_sr", std::move(perSteradian)}}});
+    return columns;
 }
 
-std::vector<double> AngularTally::fractionPerSteradian() const {
-    ResultReport report;
-    this->report(report);
-    return std::get<std::vector<double>>(report.table("angular")->columns[3].values);
+void AngularTally::report(ResultReport& report) const {
+    report.set({"bins"}, static_cast<std::uint64_t>(escapes_.size()));
+    Columns c = columns();
+    report.addTable({"angular",
+                     {{"theta_lo_deg", std::move(c.lower)},
+                      {"theta_hi_deg", std::move(c.upper)},
+                      {"fraction", std::move(c.fraction)},
+                      {"fraction_per_sr", std::move(c.perSteradian)}}});
 }
+
+std::vector<double> AngularTally::fractionPerSteradian() const { return columns().perSteradian; }
 
 }  // namespace dropscope

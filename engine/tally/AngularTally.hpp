@@ -36,6 +36,11 @@ public:
     }
 
 private:
+    struct Columns {
+        std::vector<double> lower, upper, fraction, perSteradian;
+    };
+    Columns columns() const;  // the report's table
+
     std::uint64_t photons_ = 0;
     std::vector<std::uint64_t> escapes_;
 };

@@ -25,12 +25,10 @@ std::string joined(const std::vector<std::string>& path) {
 
 void ResultReport::set(std::vector<std::string> path, SummaryValue value) {
     if (path.empty()) throw std::invalid_argument("a summary value needs a key");
-    for (SummaryEntry& entry : summary_) {
-        if (entry.path == path) {
-            entry.value = std::move(value);
-            return;
-        }
-        // A key is a value or a group of values, never both.
+    for (const SummaryEntry& entry : summary_) {
+        // Each key is set once (two tallies reporting one key would hide one of them), and a key is a
+        // value or a group of values, never both.
+        if (entry.path == path) throw std::invalid_argument("summary key " + joined(path) + " is set twice");
         if (isPrefix(entry.path, path) || isPrefix(path, entry.path)) {
             throw std::invalid_argument("summary keys " + joined(entry.path) + " and " + joined(path) + " clash");
         }

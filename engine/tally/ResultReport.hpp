@@ -39,7 +39,8 @@ struct ResultTable {
 // and the run itself fill it; the result writers (app/results) turn it into files, the app into panels.
 class ResultReport {
 public:
-    // Sets the value at `path`, in place when the path is already set (its position is kept).
+    // Sets the value at `path`, after those set before. Throws std::invalid_argument when the path is
+    // already set, or is a group of values already set (or inside one).
     void set(std::vector<std::string> path, SummaryValue value);
     // Throws std::invalid_argument when a table of that name exists or its columns differ in length.
     void addTable(ResultTable table);

@@ -54,10 +54,10 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         fly(freePath);
         ++outcome.events.absorb;
         outcome.fate = PhotonFate::Absorbed;
-        if (observer) observe(here(EventType::Absorb));
+        observe(here(EventType::Absorb));
         return true;
     };
-    if (observer) observe(here(EventType::Emit));
+    observe(here(EventType::Emit));
 
     // From a distant source, cross the empty ambient up to the scene first, so that hit points are
     // computed from nearby and stay within the surface bands (docs/transport.md).
@@ -77,7 +77,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
             fly(std::numeric_limits<double>::infinity());
             outcome.fate = PhotonFate::Escaped;
             outcome.finalDirection = direction;
-            if (observer) observe(here(EventType::Escape));
+            observe(here(EventType::Escape));
             return outcome;
         }
 

@@ -28,6 +28,9 @@ public:
         app_ = std::make_unique<App>(context_.gl(), parseScene(sceneJson, "test.json"), options);
         frames(2);  // ImGui lays windows out on their first frame and shows them on the second
     }
+    // The app's item probe points at this harness.
+    AppHarness(const AppHarness&) = delete;
+    AppHarness& operator=(const AppHarness&) = delete;
 
     App& app() { return *app_; }
     AppState& state() { return app_->state(); }

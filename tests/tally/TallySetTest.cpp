@@ -97,14 +97,16 @@ TEST(TallySet, RefusesTwoTalliesOfOneNameAndMergesOfOtherTallies) {
     EXPECT_EQ(tallies.find<AngularTally>(), nullptr);
 }
 
-TEST(ResultReport, KeepsFirstPositionsAndRefusesClashesAndRaggedTables) {
+TEST(ResultReport, KeepsTheOrderSetAndRefusesKeysSetTwiceClashesAndRaggedTables) {
     ResultReport report;
     report.set({"b"}, std::uint64_t{1});
     report.set({"a", "x"}, 0.5);
-    report.set({"b"}, std::string("two"));
-    ASSERT_EQ(report.summary().size(), 2U);
+    report.set({"a", "y"}, std::string("two"));
+    ASSERT_EQ(report.summary().size(), 3U);
     EXPECT_EQ(report.summary()[0].path, std::vector<std::string>{"b"});
-    EXPECT_EQ(std::get<std::string>(*report.find({"b"})), "two");
+    EXPECT_EQ(std::get<std::string>(*report.find({"a", "y"})), "two");
+    EXPECT_THROW(report.set({"b"}, std::uint64_t{2}), std::invalid_argument);  // two tallies, one key
+    EXPECT_EQ(std::get<std::uint64_t>(*report.find({"b"})), 1U);
     EXPECT_THROW(report.set({"a"}, true), std::invalid_argument);       // a is a group
     EXPECT_THROW(report.set({"b", "y"}, true), std::invalid_argument);  // b is a value
     EXPECT_THROW(report.addTable({"t", {{"c1", std::vector<double>{1, 2}}, {"c2", std::vector<double>{1}}}}),

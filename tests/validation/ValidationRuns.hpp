@@ -1,6 +1,7 @@
 #pragma once
 
-// The scenes of assets/scenes/validation traced in-process, once per test program, and the figures
+// The scenes of assets/scenes/validation traced in-process, once per process (CTest runs each test in
+// its own, so the rainbow is traced once for each of its three tests; validate.sh runs one), and the figures
 // the comparisons of docs/validation.md print.
 
 #include "transport/TallyExpectations.hpp"

@@ -1,0 +1,4 @@
+// Fixture: reaching up into the tree by a relative path, from a .h file.
+#pragma once
+
+#include "../tree/Octree.hpp"

@@ -1,0 +1,4 @@
+// Fixture: the engine including an OpenGL loader.
+#pragma once
+
+#include <epoxy/gl.h>
