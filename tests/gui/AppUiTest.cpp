@@ -1,4 +1,5 @@
 #include "AppHarness.hpp"
+#include "UiTestScenes.hpp"
 
 #include "geometry/Sphere.hpp"
 #include "gui/Actions.hpp"
@@ -169,15 +170,7 @@ TEST(AppUi, DraggingTheSourceHandlesMovesAndAimsTheSource) {
     EXPECT_EQ(harness.state().scene.document().sources()[0].origin, source.origin);
 }
 
-// A water sphere on the source's axis: the first interface is at (0, 0, -1), head on, where Fresnel
-// gives R = ((n - 1) / (n + 1))^2.
-constexpr const char* kAxisScene = R"({
-  "dropscope": 1, "ambient": "air",
-  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
-  "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"}],
-  "sources": [{"type": "ray", "origin": [0, 0, -5], "direction": [0, 0, 1]}],
-  "view": {"eye": [6, 3, -4], "target": [0, 0, 0]}
-})";
+// Head on at kAxisScene's first interface Fresnel gives R = ((n - 1) / (n + 1))^2.
 const double kHeadOnReflectance = std::pow(0.3337 / 2.3337, 2);
 constexpr double kFresnelRounding = 1e-12;
 
@@ -252,16 +245,6 @@ TEST(AppUi, StepsThroughTheEventsOfASelectedPathWithItsOctreeTraversal) {
     harness.press(kKeyRight);
     EXPECT_EQ(harness.state().traces.selectedEvent, 1);
 }
-
-// A cloud of droplets: enough for an octree of several levels.
-constexpr const char* kCloudScene = R"({
-  "dropscope": 1, "ambient": "air",
-  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
-  "octree": {"max_shapes_per_leaf": 4},
-  "generators": [{"type": "droplet_cloud", "region": {"min": [-2, -2, -2], "max": [2, 2, 2]}, "count": 300,
-                  "radius": {"distribution": "fixed", "value": 0.05}, "medium": "water", "seed": 3}],
-  "view": {"eye": [6, 4, 7], "target": [0, 0, 0]}
-})";
 
 std::size_t differingPixels(const snapshot::Image& a, const snapshot::Image& b) {
     std::size_t count = 0;

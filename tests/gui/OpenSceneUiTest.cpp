@@ -1,6 +1,7 @@
 // Opening a scene starts the panels afresh: what they kept from the old scene (a filter typed into the
 // shape list, the generator's fields, the octree's statistics, a plot option) does not survive it.
 #include "AppHarness.hpp"
+#include "UiTestScenes.hpp"
 
 #include "gui/Actions.hpp"
 
@@ -11,16 +12,6 @@
 
 namespace dropscope::gui::testing {
 namespace {
-
-// Enough droplets for an octree of several levels.
-constexpr const char* kCloudScene = R"({
-  "dropscope": 1, "ambient": "air",
-  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
-  "octree": {"max_shapes_per_leaf": 4},
-  "generators": [{"type": "droplet_cloud", "region": {"min": [-2, -2, -2], "max": [2, 2, 2]}, "count": 300,
-                  "radius": {"distribution": "fixed", "value": 0.05}, "medium": "water", "seed": 3}],
-  "view": {"eye": [6, 4, 7], "target": [0, 0, 0]}
-})";
 
 // One droplet: an octree of one level.
 constexpr const char* kOneDroplet = R"({

@@ -2,6 +2,7 @@
 // in the next frame, and a frame in which none changed does not rebuild it. Nothing marks the view as
 // changed by hand, so each input is changed here as directly as possible.
 #include "AppHarness.hpp"
+#include "UiTestScenes.hpp"
 
 #include "gui/Actions.hpp"
 #include "gui/TraceActions.hpp"
@@ -16,15 +17,6 @@
 
 namespace dropscope::gui::testing {
 namespace {
-
-// A water sphere on the axis of a ray source.
-constexpr const char* kAxisScene = R"({
-  "dropscope": 1, "ambient": "air",
-  "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
-  "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"}],
-  "sources": [{"type": "ray", "origin": [0, 0, -5], "direction": [0, 0, 1]}],
-  "view": {"eye": [6, 3, -4], "target": [0, 0, 0]}
-})";
 
 class ViewRebuild : public ::testing::Test {
 protected:
