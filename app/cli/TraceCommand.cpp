@@ -54,6 +54,18 @@ void createOutputDirectory(const fs::path& directory) {
     if (error) throw BadInputError(directory.string() + ": cannot create the output directory: " + error.message());
 }
 
+// --polarisation, default stokes; Schlick's approximation is unpolarised, so with --fresnel schlick the
+// default is none and an explicit stokes is refused.
+PolarisationModel polarisationModel(const TraceOptions& options) {
+    const bool schlick = options.fresnel == "schlick";
+    if (options.polarisation.empty()) return schlick ? PolarisationModel::None : PolarisationModel::Stokes;
+    if (options.polarisation == "none") return PolarisationModel::None;
+    if (schlick) {
+        throw BadInputError("--polarisation stokes needs --fresnel exact (Schlick's approximation is unpolarised)");
+    }
+    return PolarisationModel::Stokes;
+}
+
 TraceSettings traceSettings(const TraceOptions& options) {
     TraceSettings settings;
     settings.photons = options.photons;
@@ -62,6 +74,7 @@ TraceSettings traceSettings(const TraceOptions& options) {
     settings.paths = options.paths;
     settings.transport.maxEvents = options.maxEvents;
     settings.transport.fresnel = options.fresnel == "schlick" ? FresnelModel::Schlick : FresnelModel::Exact;
+    settings.transport.polarisation = polarisationModel(options);
     return settings;
 }
 
@@ -121,6 +134,12 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
     command->add_option("--fresnel", options.fresnel, "Reflectance: exact Fresnel equations or Schlick's approximation")
         ->capture_default_str()
         ->check(CLI::IsMember({"exact", "schlick"}));
+    command
+        ->add_option("--polarisation", options.polarisation,
+                     "stokes: Stokes vectors through every interface, Stokes columns in angular.csv; none: unpolarised "
+                     "Fresnel reflectance, as before polarisation (the default with --fresnel schlick)")
+        ->default_str("stokes")
+        ->check(CLI::IsMember({"stokes", "none"}));
     command->add_option("--out", options.outDir, "Output folder (created): summary.json, angular.csv, paths.jsonl")
         ->required();
     return command;
@@ -128,14 +147,15 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
 
 int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err) {
     const fs::path directory = options.outDir;
-    const TallySet tallies = standardTallies(options.bins);
+    const TraceSettings settings = traceSettings(options);
+    const TallySet tallies = standardTallies(options.bins, settings.transport.polarisation);
     checkOutputPath(directory, traceFileNames(tallies));
     const Scene scene = loadScene(options.scenePath);
     if (scene.sources.empty()) throw SceneError(scene.origin, "sources", "the scene has no light sources to trace");
     const OpticalScene opticalScene(scene);
     createOutputDirectory(directory);
 
-    const TraceRunInfo info{options.scenePath, scene.sources.size(), traceSettings(options)};
+    const TraceRunInfo info{options.scenePath, scene.sources.size(), settings};
     // Alive until the files are written: a first Ctrl-C while writing them is absorbed, not fatal.
     const InterruptGuard interrupt;
     std::optional<ProgressLine> progress;

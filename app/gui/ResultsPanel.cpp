@@ -19,7 +19,7 @@ namespace {
 std::vector<float> perSteradian(const AngularTally& angular) {
     std::vector<float> values(static_cast<std::size_t>(angular.bins()), 0.0f);
     if (angular.photons() == 0) return values;
-    const std::vector<double> perSr = angular.fractionPerSteradian();
+    const std::vector<double> perSr = angular.columns().perSteradian;
     std::transform(perSr.begin(), perSr.end(), values.begin(), [](double v) { return static_cast<float>(v); });
     return values;
 }

@@ -71,7 +71,8 @@ void TraceJob::run(Scene scene, const TraceSettings& settings) {
             done_.store(progress.done, std::memory_order_relaxed);
             seconds_.store(progress.seconds, std::memory_order_relaxed);
         };
-        outcome.result = runTrace(optical, scene.sources, settings, standardTallies(), control);
+        outcome.result =
+            runTrace(optical, scene.sources, settings, standardTallies(180, settings.transport.polarisation), control);
         done_.store(outcome.result.photons, std::memory_order_relaxed);
         seconds_.store(outcome.result.seconds, std::memory_order_relaxed);
     } catch (const std::exception& error) {

@@ -27,6 +27,11 @@ Json eventJson(const Event& event, const std::vector<Medium>& media) {
                  {"R", finiteOrNull(event.reflectance)},
                  {"weight", finiteOrNull(event.weight)}};
     if (event.type == EventType::Lost) json["reason"] = lostReasonName(event.lostReason);
+    if (event.polarisation) {
+        const StokesVector& s = event.polarisation->stokes;
+        json["stokes"] = Json::array({finiteOrNull(s[0]), finiteOrNull(s[1]), finiteOrNull(s[2]), finiteOrNull(s[3])});
+        json["stokes_reference"] = vectorJson(event.polarisation->reference);
+    }
     return json;
 }
 

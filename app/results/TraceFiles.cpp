@@ -19,6 +19,7 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
     report.set({"partial"}, result.partial);
     report.set({"scene"}, info.scenePath);
     report.set({"fresnel"}, std::string(fresnelModelName(info.settings.transport.fresnel)));
+    report.set({"polarisation"}, std::string(polarisationModelName(info.settings.transport.polarisation)));
     report.set({"max_events"}, static_cast<std::uint64_t>(info.settings.transport.maxEvents));
     report.set({"paths"}, static_cast<std::uint64_t>(result.paths.size()));
     report.set({"sources"}, static_cast<std::uint64_t>(info.sourceCount));
@@ -29,8 +30,9 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
 void writeTraceSummary(const ResultReport& report, std::ostream& out) {
     // docs/cli.md's order: scripts that diff summaries across versions see the same file.
     static const std::vector<std::string_view> kKeyOrder{
-        "photons", "seed", "threads", "seconds",    "fractions", "events", "photons_requested", "partial",
-        "scene",   "bins", "fresnel", "max_events", "paths",     "counts", "lost_reasons",      "sources"};
+        "photons",           "seed",    "threads", "seconds",      "fractions", "events",
+        "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
+        "max_events",        "paths",   "counts",  "lost_reasons", "sources"};
     writeSummaryJson(report, kKeyOrder, out);
 }
 

@@ -23,7 +23,7 @@ struct TraceRunInfo {
 std::string_view fresnelModelName(FresnelModel model);  // "exact", "schlick"
 
 // Everything a run reports: the run's own values (photons, seed, threads, seconds, photons_requested,
-// partial, scene, fresnel, max_events, paths, sources) and then every tally's report.
+// partial, scene, fresnel, polarisation, max_events, paths, sources) and then every tally's report.
 ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info);
 
 // summary.json: the report's summary, keys in the order docs/cli.md gives them, then any others.

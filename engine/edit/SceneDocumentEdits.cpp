@@ -278,6 +278,11 @@ void SceneDocument::setSources(std::vector<Source> sources, bool mergeWithPrevio
         if (source.type == SourceType::Beam && !(std::isfinite(source.radius) && source.radius > 0.0)) {
             refuse(which + "beam radius must be finite and > 0");
         }
+        try {
+            checkPolarisation(source);
+        } catch (const std::invalid_argument& error) {
+            refuse(which + error.what());
+        }
     }
     Properties after = properties();
     after.sources = std::move(sources);

@@ -1,5 +1,6 @@
 #include "optics/Fresnel.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dropscope {
@@ -23,6 +24,35 @@ FresnelReflectance fresnelReflectance(double cosIncidence, double n1, double n2)
     const double s = squared((n1 * cosIncidence - n2 * cosT) / (n1 * cosIncidence + n2 * cosT));
     const double p = squared((n1 * cosT - n2 * cosIncidence) / (n1 * cosT + n2 * cosIncidence));
     return {s, p};
+}
+
+FresnelAmplitudes fresnelAmplitudes(double cosIncidence, double n1, double n2, bool totalReflection) {
+    FresnelAmplitudes a;
+    const double ratio = n1 / n2;
+    const double sineTSquared = ratio * ratio * (1.0 - cosIncidence) * (1.0 + cosIncidence);
+    if (totalReflection) {
+        // rs = (n1 cos i - i n2 g) / (n1 cos i + i n2 g), rp = (n2 cos i - i n1 g) / (n2 cos i + i n1 g)
+        const double g = std::sqrt(std::max(sineTSquared - 1.0, 0.0));  // cos(theta_t) = i g
+        const std::complex<double> sNumerator(n1 * cosIncidence, -n2 * g);
+        const std::complex<double> pNumerator(n2 * cosIncidence, -n1 * g);
+        a.rs = sNumerator / std::conj(sNumerator);
+        a.rp = pNumerator / std::conj(pNumerator);
+        a.totalInternalReflection = true;
+        return a;
+    }
+    const double cosT = std::sqrt(std::max(1.0 - sineTSquared, 0.0));
+    const double sDenominator = n1 * cosIncidence + n2 * cosT;
+    const double pDenominator = n2 * cosIncidence + n1 * cosT;
+    a.rs = (n1 * cosIncidence - n2 * cosT) / sDenominator;
+    a.rp = (n2 * cosIncidence - n1 * cosT) / pDenominator;
+    a.ts = 2.0 * n1 * cosIncidence / sDenominator;
+    a.tp = 2.0 * n1 * cosIncidence / pDenominator;
+    a.transmittedPower = n2 * cosT / (n1 * cosIncidence);
+    return a;
+}
+
+FresnelAmplitudes fresnelAmplitudes(double cosIncidence, double n1, double n2) {
+    return fresnelAmplitudes(cosIncidence, n1, n2, transmittedCosine(cosIncidence, n1, n2) < 0.0);
 }
 
 double schlickReflectance(double cosIncidence, double n1, double n2) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 
 namespace dropscope {
@@ -46,6 +47,10 @@ private:
 TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sources, const TraceSettings& settings,
                      const TallySet& tallies, const TraceControl& control) {
     if (sources.empty()) throw std::invalid_argument("the scene has no light sources");
+    const bool polarised = settings.transport.polarisation == PolarisationModel::Stokes;
+    if (polarised && settings.transport.fresnel != FresnelModel::Exact) {
+        throw std::invalid_argument("Schlick's approximation is unpolarised: trace it without polarisation");
+    }
 
     TraceResult result;
     result.requested = settings.photons;
@@ -85,6 +90,8 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                     const std::size_t sourceIndex = photon % sources.size();
                     PhotonRandom random(settings.seed, photon);
                     const Ray emitted = emitPhoton(sources[sourceIndex], random);
+                    std::optional<Polarisation> polarisation;
+                    if (polarised) polarisation = emittedPolarisation(sources[sourceIndex], emitted.direction);
                     std::vector<Event>* events = nullptr;
                     if (photon < recorded) {
                         paths[photon].photon = photon;
@@ -92,7 +99,8 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                         events = &paths[photon].events;
                     }
                     PhotonScorer scorer(local, photon, sourceIndex, events);
-                    const PhotonOutcome outcome = tracePhoton(scene, emitted, random, settings.transport, &scorer);
+                    const PhotonOutcome outcome =
+                        tracePhoton(scene, emitted, random, settings.transport, &scorer, polarisation);
                     if (photon < recorded) paths[photon].fate = outcome.fate;
                 }
                 done.fetch_add(last - first, std::memory_order_relaxed);

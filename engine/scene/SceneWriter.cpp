@@ -99,6 +99,19 @@ Json sourceJson(const Source& source) {
     json["origin"] = vector3(source.origin);
     if (source.type != SourceType::PointSource) json["direction"] = vector3(source.direction.vector());
     if (source.type == SourceType::Beam) json["radius"] = source.radius;
+    const SourcePolarisation& polarisation = source.polarisation;
+    switch (polarisation.kind) {
+    case PolarisationKind::Unpolarised: break;
+    case PolarisationKind::Linear:
+        json["polarisation"] = {{"linear_deg", polarisation.linearDeg}, {"reference", vector3(polarisation.reference)}};
+        break;
+    case PolarisationKind::Stokes: {
+        const StokesVector& s = polarisation.stokes;
+        json["polarisation"] = {{"stokes", Json::array({s[0], s[1], s[2], s[3]})},
+                                {"reference", vector3(polarisation.reference)}};
+        break;
+    }
+    }
     return json;
 }
 

@@ -5,10 +5,10 @@
 
 namespace dropscope {
 
-TallySet standardTallies(int angularBins) {
+TallySet standardTallies(int angularBins, PolarisationModel polarisation) {
     TallySet tallies;
     tallies.add(std::make_unique<FateTally>());
-    tallies.add(std::make_unique<AngularTally>(angularBins));
+    tallies.add(std::make_unique<AngularTally>(angularBins, polarisation == PolarisationModel::Stokes));
     return tallies;
 }
 

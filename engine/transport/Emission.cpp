@@ -13,6 +13,20 @@ void perpendicularBasis(const Direction& d, Eigen::Vector3d& u, Eigen::Vector3d&
     v = d.vector().cross(u);
 }
 
+Polarisation unpolarisedLight(const Direction& direction) {
+    Eigen::Vector3d u;
+    Eigen::Vector3d v;
+    perpendicularBasis(direction, u, v);
+    return {unpolarisedStokes(), u};
+}
+
+Polarisation emittedPolarisation(const Source& source, const Direction& direction) {
+    const SourcePolarisation& polarisation = source.polarisation;
+    if (polarisation.kind == PolarisationKind::Unpolarised) return unpolarisedLight(direction);
+    const Eigen::Vector3d& r = polarisation.reference;
+    return {polarisation.unitStokes(), (r - r.dot(direction.vector()) * direction.vector()).normalized()};
+}
+
 Ray emitPhoton(const Source& source, PhotonRandom& random) {
     switch (source.type) {
     case SourceType::Ray: return {source.origin, source.direction};

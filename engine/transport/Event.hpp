@@ -2,11 +2,13 @@
 
 #include "geometry/Shape.hpp"
 #include "geometry/Vector.hpp"
+#include "optics/Polarisation.hpp"
 #include "tree/RayHit.hpp"
 
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string_view>
 
 namespace dropscope {
@@ -30,7 +32,8 @@ std::string_view lostReasonName(LostReason reason);
 // One recorded event. The direction is the one the photon leaves the event with (the incoming one
 // for absorb, escape and lost); `from`/`to` are the media on the incident and the far side of the
 // surface (both the current medium away from surfaces). `reflectance` is the Fresnel R used, NaN
-// where no surface is involved.
+// where no surface is involved. `polarisation` is the light's after the event, when polarisation is
+// traced (I is then the weight).
 struct Event {
     EventType type = EventType::Emit;
     Point position = Point::Zero();
@@ -41,6 +44,7 @@ struct Event {
     double reflectance = std::numeric_limits<double>::quiet_NaN();
     double weight = 1.0;
     LostReason lostReason = LostReason::EventCap;  // meaningful only for EventType::Lost
+    std::optional<Polarisation> polarisation = std::nullopt;
 };
 
 // Interface and absorption events of a set of photons, as summary.json reports them.

@@ -1,5 +1,7 @@
 #include "transport/PhotonTracer.hpp"
 
+#include "transport/PolarisedCrossing.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -15,19 +17,24 @@ std::string_view photonFateName(PhotonFate fate) {
 }
 
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
-                          const TransportSettings& settings, PhotonObserver* observer) {
+                          const TransportSettings& settings, PhotonObserver* observer,
+                          const std::optional<Polarisation>& polarisation) {
     const bool flights = observer && observer->wantsFlights();
     PhotonOutcome outcome;
     PhotonState state{emitted};
     Point position = emitted.origin;
     Direction direction = emitted.direction;
     ShapeId region = scene.regionAt(position, direction);
+    std::optional<Polarisation> light;
+    if (settings.polarisation == PolarisationModel::Stokes) light = polarisation.value_or(unpolarisedLight(direction));
     const auto observe = [&](const Event& event) {
         if (observer) observer->event(event, state);
     };
     const auto here = [&](EventType type) {
         const MediumId medium = scene.mediumIdOf(region);
-        return Event{type, position, direction, OpticalScene::kAmbient, medium, medium};
+        Event event{type, position, direction, OpticalScene::kAmbient, medium, medium};
+        event.polarisation = light;
+        return event;
     };
     // Moves the photon `length` ahead (an infinite length leaves it where it is: the escape ray).
     const auto fly = [&](double length) {
@@ -88,22 +95,34 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         if (crossing.kind == SurfaceCrossing::Kind::Lost) return lose(crossing.lostReason);
         if (crossing.kind == SurfaceCrossing::Kind::Tangent) continue;  // goes on unchanged (seed 000 ch. 4)
 
+        double reflectance = crossing.reflectance;
+        std::optional<PolarisedCrossing> polarised;
+        if (light) {
+            polarised.emplace(*light, direction, crossing);
+            reflectance = polarised->reflectance();
+        }
         EventType type = EventType::Refract;
         if (crossing.totalInternalReflection) {
             type = EventType::Tir;
             ++outcome.events.tir;
-            direction = crossing.reflected;
-        } else if (random.uniform() < crossing.reflectance) {
+        } else if (random.uniform() < reflectance) {
             type = EventType::Reflect;
             ++outcome.events.reflect;
-            direction = crossing.reflected;
         } else {
             ++outcome.events.refract;
+        }
+        if (type == EventType::Refract) {
             direction = crossing.transmitted;
             region = crossing.regionBeyond;
+            if (light) light = withUnitPower(polarised->transmitted());
+        } else {
+            direction = crossing.reflected;
+            if (light) light = withUnitPower(polarised->reflected());
         }
         if (observer) {
-            observe(Event{type, position, direction, hit.shape, crossing.from, crossing.to, crossing.reflectance, 1.0});
+            Event event{type, position, direction, hit.shape, crossing.from, crossing.to, reflectance, 1.0};
+            event.polarisation = light;
+            observe(event);
         }
     }
 }

@@ -8,6 +8,7 @@
 #include "transport/SurfaceCrossing.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 namespace dropscope {
@@ -17,6 +18,8 @@ struct TransportSettings {
     // counted lost with LostReason::EventCap. docs/transport.md explains the default.
     std::uint32_t maxEvents = 10000;
     FresnelModel fresnel = FresnelModel::Exact;
+    // Stokes needs FresnelModel::Exact; with None every photon reflects with the unpolarised R.
+    PolarisationModel polarisation = PolarisationModel::Stokes;
 };
 
 enum class PhotonFate { Escaped, Absorbed, Lost };
@@ -34,9 +37,12 @@ struct PhotonOutcome {
 
 // One analog Monte Carlo photon (docs/transport.md): free flight to the next surface through the
 // octree; in an absorbing medium an exponential absorption distance is drawn first; at a surface it
-// reflects with probability R (always on total internal reflection), else refracts. An `observer` is
+// reflects with probability R (always on total internal reflection), else refracts. With
+// PolarisationModel::Stokes the photon carries `polarisation` (unpolarisedLight when absent), R is that of
+// its Stokes vector, and the Stokes vector of the branch taken is renormalised to I = 1. An `observer` is
 // told every event, starting with the emission, and (if it wants them) every flight between them.
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
-                          const TransportSettings& settings, PhotonObserver* observer = nullptr);
+                          const TransportSettings& settings, PhotonObserver* observer = nullptr,
+                          const std::optional<Polarisation>& polarisation = std::nullopt);
 
 }  // namespace dropscope

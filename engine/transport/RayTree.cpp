@@ -1,6 +1,9 @@
 #include "transport/RayTree.hpp"
 
+#include "transport/PolarisedCrossing.hpp"
+
 #include <cmath>
+#include <stdexcept>
 
 namespace dropscope {
 
@@ -30,31 +33,47 @@ struct Branch {
     double weight;
     std::int32_t parent;
     int depth;
+    std::optional<Polarisation> light;  // I == weight
 };
+
+// Beer-Lambert along a stretch: the branch's weight, and with it its whole Stokes vector, times `factor`.
+void attenuate(Branch& branch, double factor) {
+    branch.weight *= factor;
+    if (branch.light) branch.light->stokes *= factor;
+}
 
 }  // namespace
 
-RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, const RayTreeSettings& settings) {
+RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, const RayTreeSettings& settings,
+                     const std::optional<Polarisation>& polarisation) {
+    const bool polarised = settings.polarisation == PolarisationModel::Stokes;
+    if (polarised && settings.fresnel != FresnelModel::Exact) {
+        throw std::invalid_argument("Schlick's approximation is unpolarised: trace it without polarisation");
+    }
     RayTree tree;
     tree.inputWeight = weight;
     const ShapeId startRegion = scene.regionAt(ray.origin, ray.direction);
     const MediumId startMedium = scene.mediumIdOf(startRegion);
-    tree.nodes.push_back({Event{EventType::Emit, ray.origin, ray.direction, OpticalScene::kAmbient, startMedium,
-                                startMedium, std::nan(""), weight},
-                          -1, 0});
+    Branch start{ray.origin, ray.direction, startRegion, weight, 0, 0, std::nullopt};
+    if (polarised) {
+        start.light = polarisation.value_or(unpolarisedLight(ray.direction));
+        start.light->stokes *= weight;
+    }
+    Event emission{EventType::Emit, ray.origin,  ray.direction, OpticalScene::kAmbient,
+                   startMedium,     startMedium, std::nan(""),  weight};
+    emission.polarisation = start.light;
+    tree.nodes.push_back({emission, -1, 0});
     // As the photon does: cross the empty ambient up to the scene first (docs/transport.md).
-    Point start = ray.origin;
-    double startWeight = weight;
     if (startRegion == OpticalScene::kAmbient) {
-        const double approach = scene.approachDistance(start, ray.direction);
+        const double approach = scene.approachDistance(start.position, ray.direction);
         const double sigma = scene.media()[startMedium].absorptionPerUnit;
         if (approach > 0.0 && sigma > 0.0) {
-            startWeight = weight * std::exp(-sigma * approach);
-            tree.absorbed += weight - startWeight;
+            attenuate(start, std::exp(-sigma * approach));
+            tree.absorbed += weight - start.weight;
         }
-        start += approach * ray.direction.vector();
+        start.position += approach * ray.direction.vector();
     }
-    std::vector<Branch> pending{{start, ray.direction, startRegion, startWeight, 0, 0}};
+    std::vector<Branch> pending{start};
 
     while (!pending.empty()) {
         Branch branch = pending.back();
@@ -64,6 +83,8 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
             Event event{type,   branch.position, branch.direction, OpticalScene::kAmbient,
                         medium, medium,          std::nan(""),     leafWeight};
             event.lostReason = reason;
+            event.polarisation = branch.light;
+            if (event.polarisation && leafWeight == 0.0) event.polarisation->stokes.setZero();
             tree.nodes.push_back({event, branch.parent, branch.depth});
         };
         if (branch.weight < settings.minWeight || branch.depth >= settings.maxDepth) {
@@ -87,10 +108,10 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
 
         branch.position += hit.distance * branch.direction.vector();
         if (sigma > 0.0) {
-            const double transmitted = branch.weight * std::exp(-sigma * hit.distance);
-            tree.absorbed += branch.weight - transmitted;
-            branch.weight = transmitted;
-            if (transmitted == 0.0) {  // exp underflowed: nothing reaches the surface
+            const double before = branch.weight;
+            attenuate(branch, std::exp(-sigma * hit.distance));
+            tree.absorbed += before - branch.weight;
+            if (branch.weight == 0.0) {  // exp underflowed: nothing reaches the surface
                 leaf(EventType::Absorb, 0.0);
                 continue;
             }
@@ -102,25 +123,35 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
             continue;
         }
         if (crossing.kind == SurfaceCrossing::Kind::Tangent) {
-            pending.push_back(
-                {branch.position, branch.direction, branch.region, branch.weight, branch.parent, branch.depth + 1});
+            Branch onward = branch;
+            ++onward.depth;
+            pending.push_back(onward);
             continue;
         }
 
-        const auto split = [&](EventType type, const Direction& direction, ShapeId region, double share) {
-            const double branchWeight = branch.weight * share;
-            if (branchWeight <= 0.0) return;
+        std::optional<PolarisedCrossing> split;
+        if (branch.light) split.emplace(*branch.light, branch.direction, crossing);
+        const double reflectance = split ? split->reflectance() : crossing.reflectance;
+        // The child along `direction`: with polarisation its light is M S and its weight that light's I;
+        // without, the weight is the parent's times `share`.
+        const auto addChild = [&](EventType type, const Direction& direction, ShapeId region, double share,
+                                  std::optional<Polarisation> light) {
+            const double childWeight = light ? light->stokes[0] : branch.weight * share;
+            if (childWeight <= 0.0) return;
             const auto node = static_cast<std::int32_t>(tree.nodes.size());
-            tree.nodes.push_back({Event{type, branch.position, direction, hit.shape, crossing.from, crossing.to,
-                                        crossing.reflectance, branchWeight},
-                                  branch.parent, branch.depth + 1});
-            pending.push_back({branch.position, direction, region, branchWeight, node, branch.depth + 1});
+            Event event{type,          branch.position, direction,   hit.shape,
+                        crossing.from, crossing.to,     reflectance, childWeight};
+            event.polarisation = light;
+            tree.nodes.push_back({event, branch.parent, branch.depth + 1});
+            pending.push_back({branch.position, direction, region, childWeight, node, branch.depth + 1, light});
         };
+        const auto reflected = [&] { return split ? std::optional(split->reflected()) : std::nullopt; };
         if (crossing.totalInternalReflection) {
-            split(EventType::Tir, crossing.reflected, branch.region, 1.0);
+            addChild(EventType::Tir, crossing.reflected, branch.region, 1.0, reflected());
         } else {
-            split(EventType::Refract, crossing.transmitted, crossing.regionBeyond, 1.0 - crossing.reflectance);
-            split(EventType::Reflect, crossing.reflected, branch.region, crossing.reflectance);
+            addChild(EventType::Refract, crossing.transmitted, crossing.regionBeyond, 1.0 - reflectance,
+                     split ? std::optional(split->transmitted()) : std::nullopt);
+            addChild(EventType::Reflect, crossing.reflected, branch.region, reflectance, reflected());
         }
     }
     return tree;

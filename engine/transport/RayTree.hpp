@@ -6,6 +6,7 @@
 #include "transport/SurfaceCrossing.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace dropscope {
@@ -14,6 +15,7 @@ struct RayTreeSettings {
     double minWeight = 1e-6;  // a branch lighter than this ends in a Truncated leaf
     int maxDepth = 64;        // interface events along one branch before it is truncated
     FresnelModel fresnel = FresnelModel::Exact;
+    PolarisationModel polarisation = PolarisationModel::Stokes;  // Stokes needs FresnelModel::Exact
 };
 
 struct RayTreeNode {
@@ -25,7 +27,9 @@ struct RayTreeNode {
 // Every branch of one ray, for the debugger: at each interface both the reflected (weight R) and the
 // refracted (weight 1 - R) branch are followed, attenuated by Beer-Lambert exp(-sigma s) along each
 // segment. Leaves are escapes, truncations, losses and total absorptions (an absorbing medium with no
-// surface ahead); their weights add up to the input weight minus `absorbed`.
+// surface ahead); their weights add up to the input weight minus `absorbed`. With
+// PolarisationModel::Stokes every branch carries its Stokes vector (event.polarisation, I = the
+// branch's weight): the reflected branch M_R S, the refracted M_T S, both attenuated alike.
 struct RayTree {
     std::vector<RayTreeNode> nodes;  // parents before children
     double inputWeight = 1.0;
@@ -35,6 +39,9 @@ struct RayTree {
     double leafWeight() const;
 };
 
-RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, const RayTreeSettings& settings);
+// `polarisation` is the ray's light at unit power (unpolarisedLight when absent); it is scaled by `weight`.
+// Throws std::invalid_argument for Stokes with Schlick's approximation.
+RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, const RayTreeSettings& settings,
+                     const std::optional<Polarisation>& polarisation = std::nullopt);
 
 }  // namespace dropscope

@@ -7,6 +7,10 @@
 
 namespace dropscope {
 
+std::string_view polarisationModelName(PolarisationModel model) {
+    return model == PolarisationModel::None ? "none" : "stokes";
+}
+
 SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId shape, const Point& point,
                              const Direction& direction, FresnelModel fresnel) {
     SurfaceCrossing crossing;
@@ -30,6 +34,10 @@ SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId 
     crossing.to = scene.mediumIdOf(crossing.regionBeyond);
     const double n1 = scene.media()[crossing.from].n;
     const double n2 = scene.media()[crossing.to].n;
+    crossing.normal = normal;
+    crossing.cosIncidence = std::abs(cosine);
+    crossing.n1 = n1;
+    crossing.n2 = n2;
     crossing.reflected = reflect(direction, normal);
     const Refraction refraction = refract(direction, normal, n1, n2);
     if (refraction.outcome == InterfaceOutcome::TotalInternalReflection) {
@@ -37,7 +45,7 @@ SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId 
         return crossing;
     }
     crossing.transmitted = refraction.transmitted;
-    const double cosIncidence = std::abs(cosine);
+    const double cosIncidence = crossing.cosIncidence;
     crossing.reflectance = fresnel == FresnelModel::Exact ? fresnelReflectance(cosIncidence, n1, n2).unpolarised()
                                                           : schlickReflectance(cosIncidence, n1, n2);
     return crossing;

@@ -3,10 +3,19 @@
 #include "transport/Event.hpp"
 #include "transport/OpticalScene.hpp"
 
+#include <string_view>
+
 namespace dropscope {
 
 // Which reflectance a surface uses: the exact Fresnel equations, or Schlick's approximation to compare.
 enum class FresnelModel { Exact, Schlick };
+
+// How light is reflected and transmitted: `Stokes` carries each photon's Stokes vector through every
+// interface with the Mueller matrices of the Fresnel amplitudes (docs/optics.md, "Polarisation");
+// `None` reflects every photon with the unpolarised reflectance (Rs + Rp)/2, the model before polarisation.
+enum class PolarisationModel { Stokes, None };
+
+std::string_view polarisationModelName(PolarisationModel model);  // "stokes", "none"
 
 // Everything that can happen where a ray meets a surface, shared by the Monte Carlo photon and the
 // ray tree: the media on both sides, the Fresnel reflectance and both outgoing directions.
@@ -19,6 +28,10 @@ struct SurfaceCrossing {
     MediumId to = 0;
     double reflectance = 1.0;  // unpolarised R, 1 on total internal reflection
     bool totalInternalReflection = false;
+    Direction normal;           // the shape's outward normal at the point
+    double cosIncidence = 1.0;  // |direction . normal|
+    double n1 = 1.0;            // index on the incident side
+    double n2 = 1.0;            // index on the far side
     Direction reflected;
     Direction transmitted;  // invalid on total internal reflection
 };

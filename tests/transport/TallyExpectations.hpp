@@ -12,10 +12,11 @@ namespace dropscope::test {
 inline const FateTally& fates(const TraceResult& result) { return result.tallies.get<FateTally>(); }
 inline const AngularTally& angular(const TraceResult& result) { return result.tallies.get<AngularTally>(); }
 
-// A run with what `dropscope trace` counts (standardTallies), `bins` angular bins.
+// A run with what `dropscope trace` counts (standardTallies), `bins` angular bins, Stokes columns when the
+// settings trace polarisation.
 inline TraceResult traceStandard(const OpticalScene& scene, const std::vector<Source>& sources,
                                  const TraceSettings& settings, int bins = 180, const TraceControl& control = {}) {
-    return runTrace(scene, sources, settings, standardTallies(bins), control);
+    return runTrace(scene, sources, settings, standardTallies(bins, settings.transport.polarisation), control);
 }
 
 // The share of a run's photons that `count` is.

@@ -68,7 +68,7 @@ void expectBrightestBinAtTheCaustic(const std::string& name, int k, const Window
     const double n = loadSphereScene("rainbow").relativeIndex();
     const Caustic caustic = descartes(n, k);
     const TraceResult& run = validationRun("rainbow", kBins);
-    const std::vector<double> radiance = test::angular(run).fractionPerSteradian();
+    const std::vector<double> radiance = test::angular(run).columns().perSteradian;
     const auto& escapes = test::angular(run).escapes();
 
     int expected = firstBin(window);
