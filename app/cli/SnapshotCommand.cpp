@@ -46,9 +46,16 @@ void addLayerOptions(CLI::App& command, SnapshotCommandOptions& options) {
         .add_option("--octree-colour", options.octreeColour, "Octree cells coloured by level or by occupancy (heat)")
         ->capture_default_str()
         ->check(CLI::IsMember({"level", "occupancy"}));
-    command.add_option("--colour-by", options.colourBy, "Paths coloured by weight (viridis) or by event type")
+    command
+        .add_option("--colour-by", options.colourBy,
+                    "Paths coloured by weight (viridis), by event type, or by degree of linear polarisation (viridis)")
         ->capture_default_str()
-        ->check(CLI::IsMember({"weight", "event"}));
+        ->check(CLI::IsMember({"weight", "event", "dolp"}));
+    command
+        .add_option("--polarisation", options.polarisation,
+                    "Paths and ray tree traced with Stokes vectors, or with the unpolarised reflectance (as trace)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"stokes", "none"}));
     command.add_flag("--markers", layers.markers, "Mark the events of the paths and the ray tree");
     command.add_flag("--ray-tree", layers.rayTree, "Draw the ray tree of the first source's central ray");
     command.add_flag("--traversal", layers.traversal, "Draw the octree cells the first source's central ray visits");
@@ -81,7 +88,15 @@ void applyLayerOptions(SnapshotCommandOptions& options) {
                                : options.octreeFilter == "upto" ? Mode::UpToLevel
                                                                 : Mode::OnlyLevel;
     layers.octreeFilter.occupancyColour = options.octreeColour == "occupancy";
-    layers.pathColouring = options.colourBy == "event" ? render::PathColouring::Event : render::PathColouring::Weight;
+    if (options.colourBy == "dolp" && options.polarisation == "none") {
+        throw BadInputError(
+            "--colour-by dolp: needs --polarisation stokes (paths without polarisation have no degree "
+            "of polarisation)");
+    }
+    layers.pathColouring = options.colourBy == "event"  ? render::PathColouring::Event
+                           : options.colourBy == "dolp" ? render::PathColouring::Dolp
+                                                        : render::PathColouring::Weight;
+    options.render.polarisation = options.polarisation == "none" ? PolarisationModel::None : PolarisationModel::Stokes;
     layers.render.shapes = !options.noShapes;
 }
 

@@ -16,13 +16,14 @@ namespace dropscope {
 struct SnapshotCommandOptions {
     std::string scenePath;
     std::string outPath;
-    std::optional<std::string> eye;      // "x,y,z"
-    std::optional<std::string> target;   // "x,y,z"
-    double fovDeg = 0.0;                 // 0: not given
-    int octreeLevel = -1;                // -1: not given
-    std::string octreeFilter = "level";  // level | upto | leaves
-    std::string octreeColour = "level";  // level | occupancy
-    std::string colourBy = "weight";     // weight | event (paths)
+    std::optional<std::string> eye;       // "x,y,z"
+    std::optional<std::string> target;    // "x,y,z"
+    double fovDeg = 0.0;                  // 0: not given
+    int octreeLevel = -1;                 // -1: not given
+    std::string octreeFilter = "level";   // level | upto | leaves
+    std::string octreeColour = "level";   // level | occupancy
+    std::string colourBy = "weight";      // weight | event | dolp (paths)
+    std::string polarisation = "stokes";  // stokes | none: of the traced paths and the ray tree
     bool noShapes = false;
     std::int64_t select = -1;  // -1: not given
     snapshot::SnapshotOptions render;
@@ -31,7 +32,8 @@ struct SnapshotCommandOptions {
 // Registers `dropscope snapshot SCENE --out PNG [--width W] [--height H] [--eye x,y,z] [--target x,y,z]
 // [--fov-deg F] [--octree-level L] [--paths K] [--photons N] [--seed S]` and the layer switches
 // (docs/rendering.md): [--octree-filter level|upto|leaves] [--octree-colour level|occupancy]
-// [--colour-by weight|event] [--markers] [--ray-tree] [--traversal] [--sources] [--axes] [--grid]
+// [--colour-by weight|event|dolp] [--polarisation stokes|none] [--markers] [--ray-tree] [--traversal] [--sources]
+// [--axes] [--grid]
 // [--no-shapes] [--translucent] [--select ID].
 CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options);
 

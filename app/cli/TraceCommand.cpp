@@ -61,7 +61,7 @@ PolarisationModel polarisationModel(const TraceOptions& options) {
     if (options.polarisation.empty()) return schlick ? PolarisationModel::None : PolarisationModel::Stokes;
     if (options.polarisation == "none") return PolarisationModel::None;
     if (schlick) {
-        throw BadInputError("--polarisation stokes needs --fresnel exact (Schlick's approximation is unpolarised)");
+        throw BadInputError("--polarisation stokes: needs --fresnel exact (Schlick's approximation is unpolarised)");
     }
     return PolarisationModel::Stokes;
 }

@@ -6,8 +6,18 @@ namespace dropscope::render {
 
 namespace {
 
+// Paths traced without polarisation have no degree of polarisation to show.
+constexpr Colour kNoPolarisationColour{0.55f, 0.55f, 0.55f};
+
 Colour segmentColour(const Event& start, PathColouring colouring) {
-    return colouring == PathColouring::Weight ? viridis(start.weight) : eventColour(start.type);
+    switch (colouring) {
+    case PathColouring::Weight: return viridis(start.weight);
+    case PathColouring::Event: return eventColour(start.type);
+    case PathColouring::Dolp:
+        return start.polarisation ? viridis(degreeOfLinearPolarisation(start.polarisation->stokes))
+                                  : kNoPolarisationColour;
+    }
+    return eventColour(start.type);
 }
 
 }  // namespace

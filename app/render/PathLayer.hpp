@@ -12,6 +12,8 @@ namespace dropscope::render {
 enum class PathColouring {
     Weight,  // along viridis by the weight the segment starts with (an analog photon's is 1: the top)
     Event,   // by the type of the event the segment starts at (eventColour): how the light got there
+    Dolp,    // along viridis by the degree of linear polarisation the segment starts with; grey when the
+             // photons carry no polarisation (traced with PolarisationModel::None)
 };
 
 // Photon paths as polylines; an escape goes on for `escapeLength` along its direction.

@@ -55,11 +55,16 @@ TracedData traceData(const Scene& scene, const OpticalScene& optical, const Snap
         settings.photons = std::max(options.photons, options.paths);
         settings.paths = options.paths;
         settings.seed = options.seed;
+        settings.transport.polarisation = options.polarisation;
         data.traced = runTrace(optical, scene.sources, settings, TallySet{});  // only the paths are drawn
     }
     const Source& first = scene.sources.front();
     const Ray central{first.origin, first.direction};
-    if (layers.rayTree) data.rayTree = traceRayTree(optical, central, 1.0, RayTreeSettings{});
+    if (layers.rayTree) {
+        RayTreeSettings settings;
+        settings.polarisation = options.polarisation;
+        data.rayTree = traceRayTree(optical, central, 1.0, settings, emittedPolarisation(first, first.direction));
+    }
     if (layers.traversal) data.traversal = render::traceTraversal(optical.octree(), central);
     return data;
 }

@@ -3,6 +3,7 @@
 #include "render/SceneLayers.hpp"
 #include "scene/Scene.hpp"
 #include "snapshot/Image.hpp"
+#include "transport/SurfaceCrossing.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -19,6 +20,7 @@ struct SnapshotOptions {
     std::uint64_t paths = 0;         // draw the paths of the first K traced photons
     std::uint64_t photons = 0;       // photons to trace (at least `paths`)
     std::uint64_t seed = 1;
+    PolarisationModel polarisation = PolarisationModel::Stokes;  // of the traced paths and the ray tree
     // What is drawn. `octreeLevel` switches the octree on and sets its filter's level; the traversal
     // and the ray tree are those of the first source's central ray (its origin and direction).
     render::LayerOptions layers;

@@ -35,9 +35,14 @@ const std::string kDefaultScene = std::string(DROPSCOPE_SOURCE_DIR) + "/assets/s
 const std::string kSingleRay = kDataDir + "/scenes/single_ray.json";  // one ray, no shapes
 const std::string kNoSources = kDataDir + "/scenes/no_sources.json";
 
+// A row of angular.csv; the Stokes columns NaN when the file has none (--polarisation none).
 struct AngularRow {
     double lo, hi, fraction, perSteradian;
+    double q = std::nan(""), u = std::nan(""), v = std::nan(""), dolp = std::nan("");
 };
+
+const std::string kAngularHeader = "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr";
+const std::string kStokesColumns = ",stokes_q,stokes_u,stokes_v,dolp";
 
 class TraceCommand : public ::testing::Test {
 protected:
@@ -74,15 +79,17 @@ protected:
         return result;
     }
     Json summary(const std::string& out = "out") const { return Json::parse(read(path(out + "/summary.json"))); }
-    std::vector<AngularRow> angular(const std::string& out = "out") const {
+    // angular.csv, with the Stokes columns (the default, --polarisation stokes) or without them.
+    std::vector<AngularRow> angular(const std::string& out = "out", bool stokes = true) const {
         std::vector<std::string> rows = lines(path(out + "/angular.csv"));
-        EXPECT_EQ(rows.empty() ? "" : rows.front(), "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr");
+        EXPECT_EQ(rows.empty() ? "" : rows.front(), kAngularHeader + (stokes ? kStokesColumns : ""));
         std::vector<AngularRow> result;
         for (std::size_t i = 1; i < rows.size(); ++i) {
             AngularRow row{};
             char comma = 0;
             std::istringstream fields(rows[i]);
             fields >> row.lo >> comma >> row.hi >> comma >> row.fraction >> comma >> row.perSteradian;
+            if (stokes) fields >> comma >> row.q >> comma >> row.u >> comma >> row.v >> comma >> row.dolp;
             EXPECT_TRUE(fields && fields.peek() == EOF) << rows[i];
             result.push_back(row);
         }
@@ -106,9 +113,10 @@ TEST_F(TraceCommand, WritesTheThreeFilesWithTheDocumentedKeys) {
     EXPECT_NE(run.out.find(path("out")), std::string::npos) << run.out;
 
     const Json s = summary();
-    EXPECT_EQ(keysOf(s), (std::vector<std::string>{"photons", "seed", "threads", "seconds", "fractions", "events",
-                                                   "photons_requested", "partial", "scene", "bins", "fresnel",
-                                                   "max_events", "paths", "counts", "lost_reasons", "sources"}));
+    EXPECT_EQ(keysOf(s),
+              (std::vector<std::string>{"photons", "seed", "threads", "seconds", "fractions", "events",
+                                        "photons_requested", "partial", "scene", "bins", "fresnel", "polarisation",
+                                        "max_events", "paths", "counts", "lost_reasons", "sources"}));
     EXPECT_EQ(keysOf(s["fractions"]), (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered"}));
     EXPECT_EQ(keysOf(s["counts"]), (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered"}));
     EXPECT_EQ(keysOf(s["events"]), (std::vector<std::string>{"reflect", "refract", "tir", "absorb"}));
@@ -121,6 +129,7 @@ TEST_F(TraceCommand, WritesTheThreeFilesWithTheDocumentedKeys) {
     EXPECT_EQ(s["scene"], kDefaultScene);
     EXPECT_EQ(s["bins"], 36);
     EXPECT_EQ(s["fresnel"], "exact");
+    EXPECT_EQ(s["polarisation"], "stokes");
     EXPECT_EQ(s["max_events"], 10000);
     EXPECT_EQ(s["paths"], 3);
     EXPECT_EQ(s["sources"], 1);
@@ -207,6 +216,7 @@ TEST_F(TraceCommand, PathsHoldTheFirstKPhotonsFromEmissionToTheirFate) {
     ASSERT_EQ(jsonLines.size(), 25u);
     const std::vector<std::string> eventKeys{"type",        "position",  "direction", "shape",
                                              "medium_from", "medium_to", "R",         "weight"};
+    const std::vector<std::string> stokesKeys{"stokes", "stokes_reference"};
     for (std::size_t i = 0; i < jsonLines.size(); ++i) {
         SCOPED_TRACE(jsonLines[i]);
         const Json photon = Json::parse(jsonLines[i]);
@@ -226,14 +236,58 @@ TEST_F(TraceCommand, PathsHoldTheFirstKPhotonsFromEmissionToTheirFate) {
         for (const Json& event : events) {
             std::vector<std::string> keys = eventKeys;
             if (event["type"] == "lost") keys.push_back("reason");
+            keys.insert(keys.end(), stokesKeys.begin(), stokesKeys.end());
             EXPECT_EQ(keysOf(event), keys);
             EXPECT_EQ(event["position"].size(), 3u);
             EXPECT_EQ(event["direction"].size(), 3u);
+            // The light after the event: I is the photon's weight, the reference a unit vector across its path.
+            ASSERT_EQ(event["stokes"].size(), 4u);
+            EXPECT_NEAR(event["stokes"][0].get<double>(), 1.0, 1e-15);
+            double reference = 0.0, across = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                reference += std::pow(event["stokes_reference"][k].get<double>(), 2);
+                across += event["stokes_reference"][k].get<double>() * event["direction"][k].get<double>();
+            }
+            EXPECT_NEAR(reference, 1.0, 1e-14);
+            EXPECT_NEAR(across, 0.0, 1e-14);
         }
         if (fate == "lost") {
             EXPECT_EQ(last["reason"], "event_cap");
         }
     }
+}
+
+TEST_F(TraceCommand, PolarisationNoneKeepsTheFilesOfTheUnpolarisedModel) {
+    ASSERT_EQ(trace(kDefaultScene, "2000", {"--polarisation", "none", "--paths", "3", "--bins", "12"}).status,
+              kExitSuccess);
+    EXPECT_EQ(summary()["polarisation"], "none");
+    EXPECT_EQ(angular("out", false).size(), 12u);
+    for (const std::string& line : lines(path("out/paths.jsonl"))) {
+        for (const Json& event : Json::parse(line)["events"]) EXPECT_FALSE(event.contains("stokes")) << line;
+    }
+}
+
+TEST_F(TraceCommand, StokesColumnsAreSharesOfThePhotonsAndDolpTheirRatio) {
+    ASSERT_EQ(trace(kDefaultScene, "20000", {"--bins", "18"}).status, kExitSuccess);
+    for (const AngularRow& row : angular()) {
+        SCOPED_TRACE(row.lo);
+        // Each photon's |Q|, |U|, |V| <= I = 1, so a bin's sums are at most its fraction.
+        EXPECT_LE(std::hypot(row.q, row.u, row.v), row.fraction * (1 + 1e-12));
+        EXPECT_NEAR(row.dolp, row.fraction > 0 ? std::hypot(row.q, row.u) / row.fraction : 0.0, 1e-15);
+    }
+    // Unpolarised light scattered by water drops and a glass cell is polarised across the scattering plane
+    // near the rainbow (-Q > 0 between 135 and 145 degrees).
+    const std::vector<AngularRow> rows = angular();
+    EXPECT_LT(rows[14].q + rows[15].q, 0.0);
+}
+
+TEST_F(TraceCommand, SchlickTracesWithoutPolarisationUnlessStokesIsAsked) {
+    ASSERT_EQ(trace(kDefaultScene, "500", {"--fresnel", "schlick"}).status, kExitSuccess);
+    EXPECT_EQ(summary()["polarisation"], "none");
+    const CliRun run = trace(kDefaultScene, "500", {"--fresnel", "schlick", "--polarisation", "stokes"}, "refused");
+    expectOneLineFailure(run);
+    EXPECT_EQ(run.err, "--polarisation stokes: needs --fresnel exact (Schlick's approximation is unpolarised)\n");
+    EXPECT_FALSE(fs::exists(path("refused")));
 }
 
 TEST_F(TraceCommand, PathsBeyondThePhotonsAreClamped) {
@@ -285,6 +339,8 @@ TEST_F(TraceCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
          "dropscope: --max-events: must be"},
         {{"trace", kDefaultScene, "--photons", "10", "--fresnel", "fast", "--out", path("out")},
          "dropscope: --fresnel: fast not in"},
+        {{"trace", kDefaultScene, "--photons", "10", "--polarisation", "linear", "--out", path("out")},
+         "dropscope: --polarisation: linear not in"},
         {{"trace", kDefaultScene, "--photons", "10"}, "dropscope: --out is required"},
         {{"trace", kDefaultScene, "--photons", "10", "--out", path("file")},
          path("file") + ": exists and is not a directory"},

@@ -46,6 +46,6 @@ requested=$(value photons_requested)
 [[ $requested -eq 1000000000 ]] || fail "photons_requested is '$requested'"
 [[ $photons -gt 0 && $photons -lt $requested ]] || fail "photons is '$photons', expected 0 < photons < $requested"
 header=$(head -n 1 "$out/angular.csv")
-[[ $header == "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr" ]] || fail "angular.csv header is '$header'"
+[[ $header == "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr,stokes_q,stokes_u,stokes_v,dolp" ]] || fail "angular.csv header is '$header'"
 ls "$out" | grep -q partial- && fail "temporary files left in $out"
 echo "interrupted after $photons of $requested photons: exit status 130, partial results written"

@@ -44,9 +44,23 @@ TEST(TraceFiles, NoPhotonTracedGivesNullFractionsAndAPartialSummary) {
     EXPECT_EQ(s["bins"], 4);
     for (const char* fate : {"escaped", "absorbed", "lost", "unscattered"}) EXPECT_TRUE(s["fractions"][fate].is_null());
 
+    EXPECT_EQ(s["polarisation"], "stokes");
     EXPECT_EQ(angularCsv(report),
-              "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr\n"
-              "0,45,nan,nan\n45,90,nan,nan\n90,135,nan,nan\n135,180,nan,nan\n");
+              "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr,stokes_q,stokes_u,stokes_v,dolp\n"
+              "0,45,nan,nan,nan,nan,nan,nan\n45,90,nan,nan,nan,nan,nan,nan\n90,135,nan,nan,nan,nan,nan,nan\n"
+              "135,180,nan,nan,nan,nan,nan,nan\n");
+}
+
+TEST(TraceFiles, WithoutPolarisationTheAngularTableKeepsItsFourColumns) {
+    TraceResult result;
+    result.tallies = standardTallies(2, PolarisationModel::None);
+    TraceRunInfo info{"scene.json", 1, {}};
+    info.settings.transport.polarisation = PolarisationModel::None;
+    const ResultReport report = traceReport(result, info);
+    std::ostringstream summary;
+    writeTraceSummary(report, summary);
+    EXPECT_EQ(Json::parse(summary.str())["polarisation"], "none");
+    EXPECT_EQ(angularCsv(report), "theta_lo_deg,theta_hi_deg,fraction,fraction_per_sr\n0,90,nan,nan\n90,180,nan,nan\n");
 }
 
 TEST(TraceFiles, SummaryKeysComeInTheDocumentedOrder) {
@@ -59,8 +73,9 @@ TEST(TraceFiles, SummaryKeysComeInTheDocumentedOrder) {
     const nlohmann::ordered_json json = nlohmann::ordered_json::parse(summary.str());
     for (const auto& item : json.items()) keys.push_back(item.key());
     const std::vector<std::string> documented{
-        "photons", "seed", "threads", "seconds",    "fractions", "events", "photons_requested", "partial",
-        "scene",   "bins", "fresnel", "max_events", "paths",     "counts", "lost_reasons",      "sources"};
+        "photons",           "seed",    "threads", "seconds",      "fractions", "events",
+        "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
+        "max_events",        "paths",   "counts",  "lost_reasons", "sources"};
     EXPECT_EQ(keys, documented);
 }
 
@@ -93,6 +108,24 @@ TEST(TraceFiles, AngularNumbersReadBackExactly) {
     EXPECT_NEAR(values[3] * 2.0 * std::numbers::pi *
                     (std::cos(lo * std::numbers::pi / 180.0) - std::cos(hi * std::numbers::pi / 180.0)),
                 1.0 / 3.0, 1e-15);
+}
+
+TEST(TraceFiles, PolarisedPathEventsEndWithTheirStokesVectorAndReference) {
+    const std::vector<Medium> media{{"air", 1.0, {}, {}, 0.0}};
+    PhotonPath path;
+    path.fate = PhotonFate::Escaped;
+    Event escape;
+    escape.type = EventType::Escape;
+    escape.direction = Direction(0, 0, 1);
+    escape.polarisation = Polarisation{StokesVector(1.0, -0.5, 0.25, 0.125), Eigen::Vector3d(0, 1, 0)};
+    path.events = {escape};
+    std::ostringstream jsonl;
+    writePathsJsonl({path}, media, jsonl);
+    EXPECT_EQ(jsonl.str(), R"({"photon":0,"source":0,"fate":"escaped","events":[)"
+                           R"({"type":"escape","position":[0.0,0.0,0.0],"direction":[0.0,0.0,1.0],"shape":null,)"
+                           R"("medium_from":"air","medium_to":"air","R":null,"weight":1.0,)"
+                           R"("stokes":[1.0,-0.5,0.25,0.125],"stokes_reference":[0.0,1.0,0.0]}]})"
+                           "\n");
 }
 
 TEST(TraceFiles, PathEventsNameMediaAndWriteNullForNoShapeOrNoReflectance) {

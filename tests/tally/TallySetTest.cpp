@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -40,6 +41,13 @@ std::vector<ScoredPhoton> photons(std::size_t count) {
         end.lostReason = static_cast<LostReason>(i % kLostReasonCount);
         const double theta = std::acos(2.0 * unit(random) - 1.0);
         end.direction = Direction(std::sin(theta), 0.0, std::cos(theta));
+        // Partly polarised light in a frame turned by a random angle about the escape direction, so the
+        // Stokes sums see other values than the counts do.
+        const double turn = 2.0 * std::numbers::pi * unit(random);
+        const Eigen::Vector3d reference = std::cos(turn) * Eigen::Vector3d::UnitY() +
+                                          std::sin(turn) * Eigen::Vector3d::UnitY().cross(end.direction.vector());
+        end.polarisation =
+            Polarisation{StokesVector(1.0, unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5), reference};
         photon.events.push_back(end);
         all.push_back(photon);
     }
@@ -64,7 +72,8 @@ TEST(TallySet, ScoresMergedFromAnySplitEqualOnePass) {
         merged.merge(part);
     }
     EXPECT_EQ(merged.get<FateTally>(), whole.get<FateTally>());
-    EXPECT_EQ(merged.get<AngularTally>(), whole.get<AngularTally>());
+    EXPECT_EQ(merged.get<AngularTally>(), whole.get<AngularTally>());  // the Stokes sums too, bit for bit
+    ASSERT_TRUE(whole.get<AngularTally>().stokes());
     const FateTally& fates = whole.get<FateTally>();
     EXPECT_EQ(fates.photons(), 3000U);
     EXPECT_EQ(fates.escaped() + fates.absorbed() + fates.lost(), fates.photons());

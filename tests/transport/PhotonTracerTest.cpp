@@ -2,31 +2,41 @@
 #include "transport/TallyExpectations.hpp"
 
 #include "optics/Fresnel.hpp"
+#include "optics/Stokes.hpp"
 #include "transport/PhotonTracer.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace dropscope {
 namespace {
 
 using testing::sceneFromJson;
 
-TEST(PhotonTracer, RecordsEveryEventWithItsMediaReflectanceAndWeight) {
+class PhotonTracerModels : public ::testing::TestWithParam<PolarisationModel> {};
+
+TEST_P(PhotonTracerModels, RecordsEveryEventWithItsMediaReflectanceAndWeight) {
     // A pencil through the middle of a water drop inside a glass cell, index-matched nowhere, so
     // the path alternates between reflect and refract at random; whatever the path, each event
-    // names the media on its two sides consistently with the one before.
+    // names the media on its two sides consistently with the one before. Without polarisation R is the
+    // unpolarised Fresnel reflectance; with it, R lies between Rs and Rp, and the Stokes vector after each
+    // event has I = 1 (the photon's weight) and a reference axis perpendicular to the direction.
+    const PolarisationModel model = GetParam();
     const Scene scene = sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5}, "water": {"n": 1.3337})",
                                       R"({"type": "box", "min": [-3, -3, -3], "max": [3, 3, 3], "medium": "glass"},
                                          {"type": "sphere", "center": [0, 0, 0], "radius": 2, "medium": "water"})",
                                       "");
     const OpticalScene optical(scene);
+    TransportSettings settings;
+    settings.polarisation = model;
     int refractions = 0;
     for (std::uint64_t photon = 0; photon < 200; ++photon) {
         PhotonRandom random(5, photon);
         std::vector<Event> path;
         EventRecorder recorder(path);
         const PhotonOutcome outcome =
-            tracePhoton(optical, {Point(0.1, 0.2, -5), Direction(0, 0, 1)}, random, TransportSettings{}, &recorder);
+            tracePhoton(optical, {Point(0.1, 0.2, -5), Direction(0, 0, 1)}, random, settings, &recorder);
         ASSERT_EQ(outcome.fate, PhotonFate::Escaped);
         ASSERT_EQ(path.front().type, EventType::Emit);
         ASSERT_EQ(path.back().type, EventType::Escape);
@@ -37,9 +47,19 @@ TEST(PhotonTracer, RecordsEveryEventWithItsMediaReflectanceAndWeight) {
             EXPECT_EQ(event.from, current);
             const double cosine =
                 std::abs(path[k - 1].direction.dot(optical.octree().shape(event.shape)->normal(event.position)));
-            EXPECT_DOUBLE_EQ(
-                event.reflectance,
-                fresnelReflectance(cosine, scene.media[event.from].n, scene.media[event.to].n).unpolarised());
+            const FresnelReflectance r = fresnelReflectance(cosine, scene.media[event.from].n, scene.media[event.to].n);
+            if (model == PolarisationModel::None) {
+                EXPECT_DOUBLE_EQ(event.reflectance, r.unpolarised());
+                EXPECT_FALSE(event.polarisation);
+            } else {
+                EXPECT_GE(event.reflectance, std::min(r.s, r.p) - 1e-15);
+                EXPECT_LE(event.reflectance, std::max(r.s, r.p) + 1e-15);
+                ASSERT_TRUE(event.polarisation);
+                EXPECT_NEAR(event.polarisation->stokes[0], 1.0, 1e-15);
+                EXPECT_LE(degreeOfPolarisation(event.polarisation->stokes), 1.0 + 1e-12);
+                EXPECT_NEAR(event.polarisation->reference.norm(), 1.0, 1e-14);
+                EXPECT_NEAR(event.polarisation->reference.dot(event.direction.vector()), 0.0, 1e-14);
+            }
             if (event.type == EventType::Refract) {
                 current = event.to;
                 ++refractions;
@@ -51,6 +71,9 @@ TEST(PhotonTracer, RecordsEveryEventWithItsMediaReflectanceAndWeight) {
     }
     EXPECT_GT(refractions, 600);  // most photons refract four times
 }
+
+INSTANTIATE_TEST_SUITE_P(StokesAndNone, PhotonTracerModels,
+                         ::testing::Values(PolarisationModel::Stokes, PolarisationModel::None));
 
 TEST(PhotonTracer, APhotonThatHitsABoxEdgeIsLostWithThatReason) {
     const Scene scene = sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5})",
@@ -124,8 +147,8 @@ TEST(PhotonTracer, APhotonEmittedOnASurfaceIsInsideTheShapeWhenItHeadsInward) {
     const FateTally& tally = test::fates(result);
     EXPECT_EQ(tally.lost(), tally.lost(LostReason::EventCap));
     // From the surface (r0 = 1) the inward half behaves as from inside; the outward half escapes.
-    const double expectedLost = 0.5 * testing::capLossInsideSphere(1.3337, 1.0, 50);
-    EXPECT_GT(expectedLost, 0.5 * std::sqrt(1 - 1 / (1.3337 * 1.3337)));  // the trapped share
+    const double expectedLost = 0.5 * testing::capLossInsideSphere(1.3337, 1.0, 50, true);  // polarised (default)
+    EXPECT_GT(expectedLost, 0.5 * std::sqrt(1 - 1 / (1.3337 * 1.3337)));                    // the trapped share
     EXPECT_NEAR(test::fraction(tally.lost(), result), expectedLost, testing::monteCarloTolerance(expectedLost, 2e4));
 }
 

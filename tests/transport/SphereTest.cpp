@@ -1,7 +1,8 @@
-// A sphere under a wide beam against a reference computed ray order by ray order (van de Hulst's
-// geometric optics): a ray of impact parameter b = sin(theta_i) enters with theta_t = asin(b/n), every
-// chord inside has length L = 2a cos(theta_t) and meets the surface at theta_t again, where the
-// reflectance R is the same as outside (Stokes). Order p leaves with weight
+// A sphere under a wide beam, traced without polarisation (the unpolarised Fresnel reflectance at every
+// interface), against a reference computed ray order by ray order with that model (van de Hulst's
+// geometric optics; the polarised tracer has its own reference, PolarisedSphereTest.cpp): a ray of impact parameter b =
+// sin(theta_i) enters with theta_t = asin(b/n), every chord inside has length L = 2a cos(theta_t) and meets the surface
+// at theta_t again, where the reflectance R is the same as outside (Stokes). Order p leaves with weight
 //   p = 0: R,   p >= 1: (1-R)^2 R^(p-1) tau^p,   tau = exp(-sigma L),
 // deviated by D_p = 2(theta_i - theta_t) + (p-1)(pi - 2 theta_t) (p >= 1), pi - 2 theta_i (p = 0).
 // Impact parameters are uniform over the disk: weight d(b^2) = 2 cos(theta_i) d cos(theta_i).
@@ -68,6 +69,7 @@ TraceResult traceSphere(double sigma, std::uint64_t photons) {
     TraceSettings settings;
     settings.photons = photons;
     settings.seed = 11;
+    settings.transport.polarisation = PolarisationModel::None;
     return test::traceStandard(OpticalScene(scene), scene.sources, settings, kBins);
 }
 
@@ -95,8 +97,13 @@ TEST_P(SphereUnderABeam, AngularDistributionAndAbsorptionMatchTheRayOrderReferen
 
 INSTANTIATE_TEST_SUITE_P(ClearAndAbsorbing, SphereUnderABeam, ::testing::Values(0.0, 0.4));
 
-TEST(SphereWithAPointSourceInside, TotalInternalReflectionTrapsExactlyTheRaysPastTheCriticalAngle) {
-    // Trapped past the critical angle, or reflected `cap` times in a row: capLossInsideSphere.
+class SphereWithAPointSourceInside : public ::testing::TestWithParam<PolarisationModel> {};
+
+TEST_P(SphereWithAPointSourceInside, TotalInternalReflectionTrapsExactlyTheRaysPastTheCriticalAngle) {
+    // Trapped past the critical angle, or reflected `cap` times in a row: capLossInsideSphere, with s and p
+    // apart or the unpolarised model's reflectance. (Here the two differ by only 1.5e-5: the trapped share
+    // dominates; PolarisedSphereTest.cpp tells the models apart.)
+    const bool polarised = GetParam() == PolarisationModel::Stokes;
     constexpr double kGlass = 1.5;
     constexpr double kR0 = 0.9;
     constexpr std::uint32_t kCap = 30;
@@ -106,9 +113,10 @@ TEST(SphereWithAPointSourceInside, TotalInternalReflectionTrapsExactlyTheRaysPas
     TraceSettings settings;
     settings.photons = 200000;
     settings.transport.maxEvents = kCap;
+    settings.transport.polarisation = GetParam();
     const TraceResult result = test::traceStandard(OpticalScene(scene), scene.sources, settings);
 
-    const double expectedLost = testing::capLossInsideSphere(kGlass, kR0, kCap);
+    const double expectedLost = testing::capLossInsideSphere(kGlass, kR0, kCap, polarised);
     const FateTally& tally = test::fates(result);
     EXPECT_NEAR(fraction(tally.lost(), result), expectedLost, monteCarloTolerance(expectedLost, 2e5));
     EXPECT_EQ(tally.lost(), tally.lost(LostReason::EventCap));
@@ -117,6 +125,9 @@ TEST(SphereWithAPointSourceInside, TotalInternalReflectionTrapsExactlyTheRaysPas
     const double trapped = std::sqrt(1 - std::pow(1 / (kGlass * kR0), 2));
     EXPECT_GT(fraction(tally.lost(), result), trapped - monteCarloTolerance(trapped, 2e5));
 }
+
+INSTANTIATE_TEST_SUITE_P(StokesAndNone, SphereWithAPointSourceInside,
+                         ::testing::Values(PolarisationModel::Stokes, PolarisationModel::None));
 
 }  // namespace
 }  // namespace dropscope

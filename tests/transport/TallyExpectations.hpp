@@ -31,4 +31,20 @@ inline void expectSameTally(const TraceResult& a, const TraceResult& b) {
     EXPECT_EQ(angular(a), angular(b));
 }
 
+// Two runs of the same photons through surfaces that agree to rounding (a sphere and a parametric sphere):
+// the same counts, and Stokes sums equal to `stokesTolerance` (a share of the photons traced).
+inline void expectSameTallyToRounding(const TraceResult& a, const TraceResult& b, double stokesTolerance) {
+    EXPECT_EQ(a.photons, b.photons);
+    EXPECT_EQ(fates(a), fates(b));
+    EXPECT_EQ(angular(a).escapes(), angular(b).escapes());
+    const AngularTally::Columns ca = angular(a).columns();
+    const AngularTally::Columns cb = angular(b).columns();
+    ASSERT_EQ(ca.stokesQ.size(), cb.stokesQ.size());
+    for (std::size_t bin = 0; bin < ca.stokesQ.size(); ++bin) {
+        EXPECT_NEAR(ca.stokesQ[bin], cb.stokesQ[bin], stokesTolerance) << "bin " << bin;
+        EXPECT_NEAR(ca.stokesU[bin], cb.stokesU[bin], stokesTolerance) << "bin " << bin;
+        EXPECT_NEAR(ca.stokesV[bin], cb.stokesV[bin], stokesTolerance) << "bin " << bin;
+    }
+}
+
 }  // namespace dropscope::test

@@ -25,16 +25,20 @@ inline double monteCarloTolerance(double p, double n) { return 5.0 * std::sqrt(s
 // The share of isotropic photons from a point at r0 radii from the centre of a sphere of index n (in
 // a medium of index 1) that an event cap of `cap` ends. A ray at angle alpha to the radius meets the
 // wall at sin(theta) = r0 sin(alpha) on every bounce, so it reflects `cap` times in a row with
-// probability R(theta)^cap, and for ever (R = 1) past the critical angle. cos(alpha) is uniform;
+// probability R(theta)^cap, and for ever (R = 1) past the critical angle. With `polarised` light s and p
+// never mix (every bounce is in the plane of the ray and the centre), so it is (Rs^cap + Rp^cap)/2 of
+// unpolarised light; without, the unpolarised model's ((Rs + Rp)/2)^cap. cos(alpha) is uniform;
 // midpoint rule with 2e5 steps, far finer than the Monte Carlo noise it is compared with.
-inline double capLossInsideSphere(double n, double r0, std::uint32_t cap) {
+inline double capLossInsideSphere(double n, double r0, std::uint32_t cap, bool polarised) {
     constexpr int kSteps = 200000;
     double lost = 0.0;
     for (int step = 0; step < kSteps; ++step) {
         const double mu = -1.0 + 2.0 * (step + 0.5) / kSteps;
         const double sinTheta = r0 * std::sqrt(1 - mu * mu);
-        const double r = fresnelReflectance(std::sqrt(1 - sinTheta * sinTheta), n, 1.0).unpolarised();
-        lost += std::pow(r, cap) / kSteps;
+        const FresnelReflectance r = fresnelReflectance(std::sqrt(1 - sinTheta * sinTheta), n, 1.0);
+        const double capped =
+            polarised ? 0.5 * (std::pow(r.s, cap) + std::pow(r.p, cap)) : std::pow(r.unpolarised(), cap);
+        lost += capped / kSteps;
     }
     return lost;
 }

@@ -2,7 +2,7 @@
 // deviation, and Alexander's dark band between them (docs/validation.md, "The rainbows").
 #include "ValidationRuns.hpp"
 
-#include "optics/Fresnel.hpp"
+#include "transport/SphereRayOptics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -103,35 +103,16 @@ TEST(Rainbow, SecondaryBowIsAtDescartesMinimumDeviation) {
     expectBrightestBinAtTheCaustic("secondary_rainbow", 2, kSecondaryWindow);
 }
 
-// The escaped share per 0.1-degree bin by geometric optics, ray order by ray order (the reference of
-// tests/transport/SphereTest.cpp for a beam of the sphere's radius): a ray of impact parameter
-// b = sin θi leaves after p chords with weight R (p = 0) or (1 − R)² R^(p−1) τ^p, τ = exp(−σ 2a cos θt).
+// The escaped share per 0.1-degree bin by geometric optics, ray order by ray order with s and p tracked
+// (tests/transport/SphereRayOptics.hpp, docs/validation.md "Ray optics of a sphere with s and p tracked"),
+// for a beam of the sphere's radius.
 std::vector<double> rayOrderShares(double n, double sigmaRadius) {
-    // Midpoint rule in cos θi. The windows hold no caustic, so their sums converge fast: 2e5 steps
-    // agree with 4e6 to 2e-5, far below the noise of 1e8 photons.
-    constexpr int kSteps = 200'000;
-    constexpr double kNegligible = 1e-10;  // of a ray's weight: the orders left are below any tally
-    std::vector<double> shares(kBins, 0.0);
-    const auto deposit = [&](double deviation, double weight) {
-        double angle = std::fmod(deviation, 2 * std::numbers::pi);  // folded into [0, π]
-        if (angle > std::numbers::pi) angle = 2 * std::numbers::pi - angle;
-        const auto bin = static_cast<std::size_t>(angle / std::numbers::pi * kBins);
-        shares[std::min(bin, std::size_t{kBins - 1})] += weight;
-    };
-    for (int step = 0; step < kSteps; ++step) {
-        const double cosI = (step + 0.5) / kSteps;
-        const double weight = 2.0 * cosI / kSteps;  // d(b²) over the disk
-        const double thetaI = std::acos(cosI);
-        const double thetaT = std::asin(std::sin(thetaI) / n);
-        const double r = fresnelReflectance(cosI, 1.0, n).unpolarised();
-        const double tau = std::exp(-sigmaRadius * 2.0 * std::cos(thetaT));
-        deposit(std::numbers::pi - 2.0 * thetaI, weight * r);
-        double inside = weight * (1 - r) * tau;
-        for (int p = 1; inside > kNegligible * weight; ++p) {
-            deposit(2 * (thetaI - thetaT) + (p - 1) * (std::numbers::pi - 2 * thetaT), inside * (1 - r));
-            inside *= r * tau;
-        }
-    }
+    constexpr int kOrders = 8;  // one by one; the rest summed
+    std::vector<double> edges;
+    for (int bin = 0; bin <= kBins; ++bin) edges.push_back(180.0 * bin / kBins);
+    const testing::SphereRayOptics optics = testing::sphereRayOptics(n, sigmaRadius, edges, kOrders);
+    std::vector<double> shares;
+    for (const testing::PowerFraction& bin : optics.bins) shares.push_back(bin.intensity());
     return shares;
 }
 
