@@ -59,5 +59,9 @@ shot app-path-inspector "$default" "mousemove 640 60" "key space" "sleep 2" "key
 shot app-ray-tree "$default" "mousemove 612 396" "key a" "key r" "mousemove 560 420" "click --repeat 4 --delay 100 4" \
     "mousemove 640 60" "sleep 1"
 shot app-help "$default" "mousemove 640 60" "key F1"
+# 100,000 photons (typed into the Fire panel's photon count), then the Results panel's Plot... button, the
+# mouse over the primary rainbow's edge near 138 degrees.
+shot app-results-plot "$default" "mousemove 1040 192" "click 1" "key ctrl+a" "type 100000" "key Return" \
+    "mousemove 640 60" "key space" "sleep 3" "mousemove 35 702" "click 1" "mousemove 791 450" "sleep 0.5"
 # The parametric and implicit presets, photons fired, the Bezier droplet in the middle selected.
 shot app-general-shapes "$gallery" "mousemove 640 420" "key space" "sleep 2" "click 1"

@@ -57,7 +57,7 @@ void App::buildUi() {
     drawFirePanel(state_);
     drawOctreePanel(state_);
     drawPathPanel(state_.view.layers, state_.traces);
-    drawResultsPanel(state_.traces, state_.ui.panels.logScale);
+    drawResultsPanel(state_.traces, state_.ui);
     drawFilePrompts(state_);
     drawHelpWindow(state_.ui);
     drawStatusBar(state_);

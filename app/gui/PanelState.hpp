@@ -1,5 +1,6 @@
 #pragma once
 
+#include "gui/plot/PlotWindowState.hpp"
 #include "tree/OctreeTypes.hpp"
 
 #include <Eigen/Core>
@@ -59,7 +60,7 @@ struct PanelState {
     FilePromptFields filePrompt;
     ScenePanelFields scenePanel;
     OctreeStatistics octreeStatistics;
-    bool logScale = true;  // the Results panel's angular distribution
+    plot::PlotWindowState angularPlot{.exportPath = "angular-plot.csv"};  // the Results panel's
 };
 
 }  // namespace dropscope::gui

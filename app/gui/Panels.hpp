@@ -19,8 +19,8 @@ void drawFirePanel(AppState& state);
 void drawOctreePanel(AppState& state);
 // The recorded photons and their events.
 void drawPathPanel(render::LayerOptions& layers, TraceState& traces);
-// Fractions and the angular distribution (on a log scale or not).
-void drawResultsPanel(const TraceState& traces, bool& logScale);
+// Fractions, and the angular distribution in its plot window.
+void drawResultsPanel(const TraceState& traces, UiState& ui);
 // Open, save as, export, screenshot.
 void drawFilePrompts(AppState& state);
 void drawHelpWindow(UiState& ui);

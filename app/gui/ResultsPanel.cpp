@@ -1,12 +1,13 @@
 #include "gui/PanelLayout.hpp"
+#include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
+#include "gui/PlotWindow.hpp"
 
 #include "tally/AngularTally.hpp"
 #include "tally/FateTally.hpp"
 
 #include <imgui.h>
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -14,30 +15,35 @@ namespace dropscope::gui {
 
 namespace {
 
-// Escapes per steradian in each angular bin, as a fraction of the photons traced: angular.csv's
-// fraction_per_sr, the quantity whose peaks are the rainbows.
-std::vector<float> perSteradian(const AngularTally& angular) {
-    std::vector<float> values(static_cast<std::size_t>(angular.bins()), 0.0f);
-    if (angular.photons() == 0) return values;
-    const std::vector<double> perSr = angular.columns().perSteradian;
-    std::transform(perSr.begin(), perSr.end(), values.begin(), [](double v) { return static_cast<float>(v); });
-    return values;
+// Escapes per steradian in each angular bin, as a fraction of the photons traced (angular.csv's
+// fraction_per_sr, the quantity whose peaks are the rainbows), at the bin's centre; with polarisation, below
+// it -Q/I in the scattering-plane frame (-P12/P11 for unpolarised light: > 0 polarised across the plane)
+// and the degree of linear polarisation (NaN, not drawn, in empty bins).
+plot::Figure angularFigure(const AngularTally& angular) {
+    const AngularTally::Columns columns = angular.columns();
+    std::vector<double> centres;
+    for (int bin = 0; bin < angular.bins(); ++bin) {
+        centres.push_back(0.5 * (angular.lowerEdgeDeg(bin) + angular.lowerEdgeDeg(bin + 1)));
+    }
+    plot::Figure figure{"Angular distribution", "scattering angle (deg)", plot::AxisRange{0.0, 180.0}, {}};
+    figure.subPlots.push_back(
+        {"escaped fraction per sr", {{"fraction per sr", centres, columns.perSteradian}}, plot::Scale::Log, {}});
+    if (!angular.stokes()) return figure;
+    std::vector<double> ratio;
+    std::vector<double> dolp;
+    for (std::size_t bin = 0; bin < centres.size(); ++bin) {
+        const bool empty = !(columns.fraction[bin] > 0.0);
+        ratio.push_back(empty ? std::nan("") : -columns.stokesQ[bin] / columns.fraction[bin]);
+        dolp.push_back(empty ? std::nan("") : columns.dolp[bin]);
+    }
+    figure.subPlots.push_back({"polarisation",
+                               {{"-P12/P11 (-Q/I)", centres, std::move(ratio)}, {"DoLP", centres, std::move(dolp)}},
+                               plot::Scale::Linear,
+                               plot::AxisRange{-1.0, 1.0}});
+    return figure;
 }
 
-}  // namespace
-
-void drawResultsPanel(const TraceState& traces, bool& logScale) {
-    placeNextPanel(PanelSide::Left, 0.79f, 0.21f);
-    if (!ImGui::Begin("Results")) {
-        ImGui::End();
-        return;
-    }
-    if (!traces.trace) {
-        ImGui::TextDisabled("no trace yet: fire photons (Space)");
-        ImGui::End();
-        return;
-    }
-    const TraceResult& result = traces.trace->outcome.result;
+void drawFractions(const TraceResult& result) {
     const FateTally& fates = result.tallies.get<FateTally>();
     const double n = fates.photons() > 0 ? static_cast<double>(fates.photons()) : 1.0;
     ImGui::Text("%llu photons%s, %.2f s", static_cast<unsigned long long>(fates.photons()),
@@ -46,24 +52,30 @@ void drawResultsPanel(const TraceState& traces, bool& logScale) {
                 static_cast<double>(fates.absorbed()) / n);
     ImGui::Text("lost %.5f  unscattered %.5f", static_cast<double>(fates.lost()) / n,
                 static_cast<double>(fates.unscattered()) / n);
-    ImGui::Checkbox("log scale", &logScale);
-    std::vector<float> values = perSteradian(result.tallies.get<AngularTally>());
-    if (logScale) {
-        // Empty bins sit half a decade below the faintest non-empty one, not at a fixed floor that would
-        // stretch the plot.
-        float faintest = 0.0f;
-        for (float v : values) {
-            if (v > 0.0f) faintest = faintest > 0.0f ? std::min(faintest, v) : v;
+}
+
+}  // namespace
+
+void drawResultsPanel(const TraceState& traces, UiState& ui) {
+    plot::PlotWindowState& plotState = ui.panels.angularPlot;
+    placeNextPanel(PanelSide::Left, 0.79f, 0.21f);
+    if (ImGui::Begin("Results")) {
+        if (traces.trace) {
+            const TraceResult& result = traces.trace->outcome.result;
+            drawFractions(result);
+            if (ImGui::Button("Plot...")) plotState.open = true;
+            reportItemRect(ui.itemProbe, "results plot");
+            ImGui::SameLine();
+            ImGui::TextDisabled("angular distribution, %d bins", result.tallies.get<AngularTally>().bins());
+        } else {
+            ImGui::TextDisabled("no trace yet: fire photons (Space)");
         }
-        const float floor = faintest > 0.0f ? std::log10(faintest) - 0.5f : 0.0f;
-        for (float& v : values) v = v > 0.0f ? std::log10(v) : floor;
     }
-    const auto [low, high] = std::minmax_element(values.begin(), values.end());
-    ImGui::PlotLines("##angular", values.data(), static_cast<int>(values.size()), 0,
-                     logScale ? "log10 fraction/sr vs angle 0-180 deg" : "fraction/sr vs angle 0-180 deg",
-                     values.empty() ? 0.0f : *low, values.empty() ? 1.0f : *high,
-                     ImVec2(ImGui::GetContentRegionAvail().x, 60.0f));  // PlotLines takes no -1 "fill" width
     ImGui::End();
+    if (traces.trace) {
+        drawPlotWindow(angularFigure(traces.trace->outcome.result.tallies.get<AngularTally>()), plotState, ui.status,
+                       ui.itemProbe);
+    }
 }
 
 }  // namespace dropscope::gui

@@ -36,7 +36,10 @@ TEST(OpenSceneUi, OpeningASceneStartsThePanelsAfresh) {
     PanelState& panels = harness.state().ui.panels;
     panels.scenePanel.filter = "water";
     panels.scenePanel.cloud.count = 7;
-    panels.logScale = false;
+    panels.angularPlot.open = true;
+    panels.angularPlot.scales = {plot::Scale::Linear};
+    panels.angularPlot.xView = plot::AxisRange{10.0, 20.0};
+    panels.angularPlot.exportPath = "elsewhere.csv";
     panels.filePrompt.screenshot.panels = true;
     harness.frame();
     const auto cloudLevels = harness.state().scene.document().octree().statistics();
@@ -47,7 +50,10 @@ TEST(OpenSceneUi, OpeningASceneStartsThePanelsAfresh) {
     harness.frame();
     EXPECT_EQ(panels.scenePanel.filter, "") << "the old scene's filter hides the new scene's shapes";
     EXPECT_EQ(panels.scenePanel.cloud.count, CloudFields{}.count);
-    EXPECT_TRUE(panels.logScale);
+    EXPECT_FALSE(panels.angularPlot.open);
+    EXPECT_TRUE(panels.angularPlot.scales.empty()) << "the plot's log switch is back to its default";
+    EXPECT_FALSE(panels.angularPlot.xView);
+    EXPECT_EQ(panels.angularPlot.exportPath, PanelState{}.angularPlot.exportPath);
     EXPECT_FALSE(panels.filePrompt.screenshot.panels);
     const auto levels = harness.state().scene.document().octree().statistics();
     ASSERT_EQ(levels.size(), 1u);
