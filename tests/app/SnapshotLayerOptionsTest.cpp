@@ -40,6 +40,8 @@ TEST(SnapshotLayerOptions, EverySwitchRenders) {
         {"--octree-filter", "leaves"},
         {"--traversal", "--no-shapes"},
         {"--paths", "5", "--colour-by", "event", "--markers"},
+        {"--paths", "5", "--colour-by", "dolp", "--polarisation", "stokes"},
+        {"--paths", "5", "--ray-tree", "--polarisation", "none"},
         {"--sources", "--axes", "--grid", "--select", "4"},
     };
     for (std::size_t k = 0; k < cases.size(); ++k) {
@@ -72,6 +74,9 @@ TEST(SnapshotLayerOptions, EachLayerAddsItsColour) {
         {{"--paths", "10", "--colour-by", "event"},  // emissions white
          [](int r, int g, int b) { return r > 240 && g > 240 && b > 240; },
          5},
+        {{"--paths", "10", "--colour-by", "dolp"},  // the unpolarised beam: viridis(0), dark purple
+         [](int r, int g, int b) { return r > 50 && r < 90 && g < 25 && b > 65 && b < 105; },
+         5},
     };
     const std::string plainPng = outputPng("plain");
     ASSERT_EQ(snapshot(kDefaultScene, plainPng, {}).status, kExitSuccess);
@@ -96,7 +101,9 @@ TEST(SnapshotLayerOptions, BadValuesAreBadInput) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
         {{"--octree-filter", "all"}, "--octree-filter: all not in {level,upto,leaves}"},
         {{"--octree-colour", "heat", "--octree-level", "1"}, "--octree-colour: heat not in {level,occupancy}"},
-        {{"--colour-by", "type"}, "--colour-by: type not in {weight,event}"},
+        {{"--colour-by", "type"}, "--colour-by: type not in {weight,event,dolp}"},
+        {{"--polarisation", "linear"}, "--polarisation: linear not in {stokes,none}"},
+        {{"--colour-by", "dolp", "--polarisation", "none"}, "--colour-by dolp: needs --polarisation stokes"},
         {{"--select", "-1"}, "--select: Value -1 not in range"},
         {{"--select", "one"}, "--select: Value one not in range"},
         {{"--octree-filter", "upto"}, "--octree-filter upto: needs --octree-level L"},

@@ -62,7 +62,8 @@ protected:
 
 TEST_F(PlotUi, TheReadoutGivesTheBinUnderTheMouse) {
     ASSERT_TRUE(plotState().open);
-    EXPECT_EQ(plotState().scales, std::vector<plot::Scale>{plot::Scale::Log}) << "log scale by default";
+    // The angular distribution on a log scale; the polarisation below it, linear.
+    EXPECT_EQ(plotState().scales, (std::vector<plot::Scale>{plot::Scale::Log, plot::Scale::Linear}));
     const ItemRect frame = rect(kFrame);
     const std::vector<double> perSteradian = angular().columns().perSteradian;
     ASSERT_EQ(perSteradian.size(), 180u);
@@ -93,7 +94,7 @@ TEST_F(PlotUi, ExportWritesOneRowPerAngularBin) {
         << harness_.state().ui.status.text();
     const std::vector<std::string> lines = linesOf(file);
     ASSERT_EQ(lines.size(), 1u + static_cast<std::size_t>(angular().bins()));
-    EXPECT_EQ(lines[0], "scattering angle (deg),fraction per sr");
+    EXPECT_EQ(lines[0], "scattering angle (deg),fraction per sr,-P12/P11 (-Q/I),DoLP");
     EXPECT_EQ(lines[1].substr(0, 4), "0.5,");
     EXPECT_EQ(lines[180].substr(0, 6), "179.5,");
     std::filesystem::remove(file);
