@@ -108,6 +108,7 @@ void expectSameScene(const Scene& actual, const Scene& expected) {
         if (expected.sources[i].type != SourceType::PointSource) {
             expectSameDirection(actual.sources[i].direction, expected.sources[i].direction);
         }
+        EXPECT_EQ(actual.sources[i].polarisation, expected.sources[i].polarisation);  // numbers written exactly
     }
     EXPECT_EQ(actual.octree.maxDepth, expected.octree.maxDepth);
     EXPECT_EQ(actual.octree.maxShapesPerLeaf, expected.octree.maxShapesPerLeaf);

@@ -82,11 +82,23 @@ TEST(RayTree, BranchesEndAtTheMinimumWeightOrTheMaximumDepth) {
     }
 }
 
+// The Stokes vector of light escaping along k, in the scattering-plane frame of emission direction k0
+// (what the angular tally sums; the tree's leaves carry their own frames).
+StokesVector inScatteringPlane(const Polarisation& light, const Direction& k, const Direction& k0) {
+    const Eigen::Vector3d inPlane = k0.vector() - k0.dot(k.vector()) * k.vector();
+    return inPlane.norm() < 1e-9 ? light.stokes : stokesInFrame(light, k, inPlane.normalized());
+}
+
 TEST(RayTree, IsTheExpectationOfTheMonteCarloPhoton) {
-    // The same pencil traced as 2e5 analog photons: the share escaping into each 10-degree bin and
-    // the share absorbed are the ray tree's leaf weights, within Monte Carlo noise.
+    // The same pencil, linearly polarised, traced as 2e5 analog photons: the share escaping into each
+    // 10-degree bin, the Stokes parameters Q, U, V escaping there and the share absorbed are the ray tree's
+    // leaves (the Mueller products along each branch), within Monte Carlo noise. So choosing a branch with
+    // the probability of its power and renormalising the Stokes vector is unbiased.
     Scene scene = defaultScene();
-    scene.sources = {Source{SourceType::Ray, kIntoTheCell.origin, kIntoTheCell.direction, 0.0}};
+    Source pencil{SourceType::Ray, kIntoTheCell.origin, kIntoTheCell.direction, 0.0};
+    pencil.polarisation = {PolarisationKind::Linear, 30.0, unpolarisedStokes(),
+                           kIntoTheCell.direction.vector().unitOrthogonal()};
+    scene.sources = {pencil};
     const OpticalScene optical(scene);
     constexpr int kBins = 18;
     TraceSettings settings;
@@ -97,21 +109,37 @@ TEST(RayTree, IsTheExpectationOfTheMonteCarloPhoton) {
     RayTreeSettings fine;
     fine.minWeight = 1e-12;
     fine.maxDepth = 200;
-    const RayTree tree = traceRayTree(optical, kIntoTheCell, 1.0, fine);
+    const RayTree tree =
+        traceRayTree(optical, kIntoTheCell, 1.0, fine, emittedPolarisation(pencil, kIntoTheCell.direction));
     std::vector<double> expected(kBins, 0.0);
+    std::vector<StokesVector> expectedStokes(kBins, StokesVector::Zero());
     for (const RayTreeNode& node : tree.nodes) {
         if (node.event.type != EventType::Escape) continue;
         const double angle = std::acos(std::clamp(node.event.direction.dot(kIntoTheCell.direction), -1.0, 1.0));
-        expected[std::min(static_cast<std::size_t>(angle / std::numbers::pi * kBins), std::size_t{kBins - 1})] +=
-            node.event.weight;
+        const auto bin = std::min(static_cast<std::size_t>(angle / std::numbers::pi * kBins), std::size_t{kBins - 1});
+        expected[bin] += node.event.weight;
+        ASSERT_TRUE(node.event.polarisation);
+        EXPECT_NEAR(node.event.polarisation->stokes[0], node.event.weight, kWeightRounding);
+        expectedStokes[bin] +=
+            inScatteringPlane(*node.event.polarisation, node.event.direction, kIntoTheCell.direction);
     }
     const double n = static_cast<double>(settings.photons);
     EXPECT_NEAR(fraction(tally.absorbed(), result), tree.absorbed, monteCarloTolerance(tree.absorbed, n));
+    const AngularTally::Columns columns = test::angular(result).columns();
     for (std::size_t bin = 0; bin < expected.size(); ++bin) {
         EXPECT_NEAR(fraction(test::angular(result).escapes()[bin], result), expected[bin],
                     monteCarloTolerance(expected[bin], n))
             << "bin " << bin;
+        // Each photon's |Q|, |U|, |V| <= 1: the variance of a bin's sum is at most its share over n.
+        const double stokesTolerance = 5.0 * std::sqrt(std::max(expected[bin], 1.0 / n) / n);
+        EXPECT_NEAR(columns.stokesQ[bin], expectedStokes[bin][1], stokesTolerance) << "bin " << bin;
+        EXPECT_NEAR(columns.stokesU[bin], expectedStokes[bin][2], stokesTolerance) << "bin " << bin;
+        EXPECT_NEAR(columns.stokesV[bin], expectedStokes[bin][3], stokesTolerance) << "bin " << bin;
     }
+    // Polarised light in, partly polarised light out: the test compares numbers that are not all zero.
+    double largestQ = 0.0;
+    for (const StokesVector& s : expectedStokes) largestQ = std::max(largestQ, std::abs(s[1]));
+    EXPECT_GT(largestQ, 0.05);
 }
 
 }  // namespace
