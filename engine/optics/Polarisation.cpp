@@ -9,14 +9,11 @@ namespace dropscope {
 
 namespace {
 
-// `axis` made exactly perpendicular to `direction` and of unit length.
-Eigen::Vector3d perpendicularUnit(const Eigen::Vector3d& axis, const Direction& direction) {
-    return (axis - axis.dot(direction.vector()) * direction.vector()).normalized();
-}
-
 // The frame whose parallel axis is `direction` x s: the one frame every beam at an interface shares s with.
+// s is perpendicular to the normal and to the incident direction, so to every beam there; the cross product
+// is of unit length but for rounding, which normalising keeps from building up event after event.
 Polarisation inPlaneFrame(const StokesVector& stokes, const Eigen::Vector3d& s, const Direction& direction) {
-    return {stokes, perpendicularUnit(direction.vector().cross(s), direction)};
+    return {stokes, direction.vector().cross(s).normalized()};
 }
 
 }  // namespace
@@ -34,23 +31,25 @@ StokesVector stokesInFrame(const Polarisation& light, const Direction& direction
     return {s[0], cos2 * s[1] - sin2 * s[2], sin2 * s[1] + cos2 * s[2], s[3]};
 }
 
-MuellerMatrix diagonalMueller(std::complex<double> parallel, std::complex<double> perpendicular, double power) {
+StokesVector throughDiagonalElement(const StokesVector& stokes, std::complex<double> parallel,
+                                    std::complex<double> perpendicular, double power) {
     // docs/optics.md, (P4): from E_par' = a E_par, E_perp' = b E_perp and the definitions of I, Q, U, V.
     const double a2 = std::norm(parallel);
     const double b2 = std::norm(perpendicular);
     const std::complex<double> ab = parallel * std::conj(perpendicular);
-    MuellerMatrix m;
-    m << 0.5 * (a2 + b2), 0.5 * (a2 - b2), 0.0, 0.0,  //
-        0.5 * (a2 - b2), 0.5 * (a2 + b2), 0.0, 0.0,   //
-        0.0, 0.0, ab.real(), ab.imag(),               //
-        0.0, 0.0, -ab.imag(), ab.real();
-    return power * m;
+    const double sum = 0.5 * power * (a2 + b2);
+    const double difference = 0.5 * power * (a2 - b2);
+    const double re = power * ab.real();
+    const double im = power * ab.imag();
+    return {sum * stokes[0] + difference * stokes[1], difference * stokes[0] + sum * stokes[1],
+            re * stokes[2] + im * stokes[3], -im * stokes[2] + re * stokes[3]};
 }
 
 PlaneOfIncidence planeOfIncidence(const Polarisation& light, const Direction& incident, const Direction& normal) {
-    Eigen::Vector3d s = incident.vector().cross(normal.vector());
-    if (s.norm() < tolerance::kNormalIncidenceSine) s = perpendicularAxis(light.reference, incident);
-    s = perpendicularUnit(s, incident);
+    const Eigen::Vector3d kCrossN = incident.vector().cross(normal.vector());
+    const double sine = kCrossN.norm();
+    const Eigen::Vector3d s = sine < tolerance::kNormalIncidenceSine ? perpendicularAxis(light.reference, incident)
+                                                                     : Eigen::Vector3d(kCrossN / sine);
     return {s, stokesInFrame(light, incident, incident.vector().cross(s))};
 }
 
@@ -63,13 +62,13 @@ double polarisedReflectance(const PlaneOfIncidence& plane, const FresnelAmplitud
 
 Polarisation reflectedPolarisation(const PlaneOfIncidence& plane, const FresnelAmplitudes& amplitudes,
                                    const Direction& reflected) {
-    return inPlaneFrame(diagonalMueller(amplitudes.rp, amplitudes.rs, 1.0) * plane.stokes, plane.s, reflected);
+    return inPlaneFrame(throughDiagonalElement(plane.stokes, amplitudes.rp, amplitudes.rs, 1.0), plane.s, reflected);
 }
 
 Polarisation transmittedPolarisation(const PlaneOfIncidence& plane, const FresnelAmplitudes& amplitudes,
                                      const Direction& transmitted) {
-    const MuellerMatrix m = diagonalMueller(amplitudes.tp, amplitudes.ts, amplitudes.transmittedPower);
-    return inPlaneFrame(m * plane.stokes, plane.s, transmitted);
+    return inPlaneFrame(throughDiagonalElement(plane.stokes, amplitudes.tp, amplitudes.ts, amplitudes.transmittedPower),
+                        plane.s, transmitted);
 }
 
 }  // namespace dropscope

@@ -26,9 +26,11 @@ inline Eigen::Vector3d perpendicularAxis(const Eigen::Vector3d& reference, const
 // perpendicular to `direction`): I and V are unchanged, (Q, U) turn by twice the angle between the axes.
 StokesVector stokesInFrame(const Polarisation& light, const Direction& direction, const Eigen::Vector3d& newReference);
 
-// The Mueller matrix of an element that multiplies a beam's parallel field component by `parallel` and
-// its perpendicular one by `perpendicular` (a diagonal Jones matrix), times `power`.
-MuellerMatrix diagonalMueller(std::complex<double> parallel, std::complex<double> perpendicular, double power);
+// M S, with M the Mueller matrix of an element that multiplies a beam's parallel field component by
+// `parallel` and its perpendicular one by `perpendicular` (a diagonal Jones matrix), times `power`
+// (docs/optics.md, (P4)).
+StokesVector throughDiagonalElement(const StokesVector& stokes, std::complex<double> parallel,
+                                    std::complex<double> perpendicular, double power);
 
 // A beam arriving at an interface along `incident`, described in the plane of incidence: `s` its unit
 // normal (k x N), and the Stokes vector in the frame with parallel axis p = k x s. At normal incidence,
@@ -40,7 +42,7 @@ struct PlaneOfIncidence {
 
 PlaneOfIncidence planeOfIncidence(const Polarisation& light, const Direction& incident, const Direction& normal);
 
-// The share of the beam's power reflected, (M_R S)_0 / S_0, with M_R = diagonalMueller(rp, rs, 1).
+// The share of the beam's power reflected, (M_R S)_0 / S_0, with M_R the diagonal element of (rp, rs).
 double polarisedReflectance(const PlaneOfIncidence& plane, const FresnelAmplitudes& amplitudes);
 
 // The reflected and the transmitted light, M_R S and M_T S (not renormalised: I is the power each

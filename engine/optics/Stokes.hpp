@@ -12,7 +12,6 @@ namespace dropscope {
 //   U = 2 Re(E_par E_perp*),     V = -2 Im(E_par E_perp*)       (time dependence exp(-i omega t)).
 // I is a beam's power; Q > 0 means polarised along the parallel axis; V > 0 right-handed.
 using StokesVector = Eigen::Vector4d;
-using MuellerMatrix = Eigen::Matrix4d;
 
 inline StokesVector unpolarisedStokes(double power = 1.0) { return {power, 0.0, 0.0, 0.0}; }
 

@@ -16,12 +16,13 @@ class FixedPointSum {
 public:
     static constexpr int kFractionBits = 64;
     static constexpr double kLimit = 0x1p62;
+    static constexpr double kUnit = 0x1p64;  // 2^kFractionBits
 
     // Throws std::domain_error for a value that is not finite or not below kLimit in magnitude, and
     // std::overflow_error when the sum would leave that range.
     void add(double value) {
         if (!(std::abs(value) < kLimit)) throw std::domain_error("FixedPointSum: value out of range");
-        addUnits(static_cast<Units>(std::nearbyint(std::ldexp(value, kFractionBits))));
+        addUnits(static_cast<Units>(std::nearbyint(value * kUnit)));  // exact: a power of two, no overflow
     }
     FixedPointSum& operator+=(const FixedPointSum& other) {
         addUnits(other.units_);

@@ -91,7 +91,8 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         fly(hit.distance);
         outcome.metSurface = state.metSurface = true;
         if (++state.interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap);
-        const SurfaceCrossing crossing = crossSurface(scene, region, hit.shape, position, direction, settings.fresnel);
+        const SurfaceCrossing crossing =
+            crossSurface(scene, region, hit.shape, position, direction, settings.fresnel, !light);
         if (crossing.kind == SurfaceCrossing::Kind::Lost) return lose(crossing.lostReason);
         if (crossing.kind == SurfaceCrossing::Kind::Tangent) continue;  // goes on unchanged (seed 000 ch. 4)
 

@@ -116,8 +116,8 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
                 continue;
             }
         }
-        const SurfaceCrossing crossing =
-            crossSurface(scene, branch.region, hit.shape, branch.position, branch.direction, settings.fresnel);
+        const SurfaceCrossing crossing = crossSurface(scene, branch.region, hit.shape, branch.position,
+                                                      branch.direction, settings.fresnel, !branch.light);
         if (crossing.kind == SurfaceCrossing::Kind::Lost) {
             leaf(EventType::Lost, branch.weight, crossing.lostReason);
             continue;

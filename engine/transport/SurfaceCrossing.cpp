@@ -12,7 +12,7 @@ std::string_view polarisationModelName(PolarisationModel model) {
 }
 
 SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId shape, const Point& point,
-                             const Direction& direction, FresnelModel fresnel) {
+                             const Direction& direction, FresnelModel fresnel, bool unpolarisedReflectance) {
     SurfaceCrossing crossing;
     const Direction normal = scene.octree().shape(shape)->normal(point);
     if (!normal) {
@@ -45,6 +45,10 @@ SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId 
         return crossing;
     }
     crossing.transmitted = refraction.transmitted;
+    if (!unpolarisedReflectance) {
+        crossing.reflectance = std::nan("");
+        return crossing;
+    }
     const double cosIncidence = crossing.cosIncidence;
     crossing.reflectance = fresnel == FresnelModel::Exact ? fresnelReflectance(cosIncidence, n1, n2).unpolarised()
                                                           : schlickReflectance(cosIncidence, n1, n2);

@@ -26,7 +26,7 @@ struct SurfaceCrossing {
     ShapeId regionBeyond = OpticalScene::kAmbient;       // the region a transmitted ray enters
     MediumId from = 0;
     MediumId to = 0;
-    double reflectance = 1.0;  // unpolarised R, 1 on total internal reflection
+    double reflectance = 1.0;  // unpolarised R, 1 on total internal reflection; NaN when not asked for
     bool totalInternalReflection = false;
     Direction normal;           // the shape's outward normal at the point
     double cosIncidence = 1.0;  // |direction . normal|
@@ -38,8 +38,10 @@ struct SurfaceCrossing {
 
 // The ray travelling along `direction` in `region` has reached `point` on `shape`'s surface (a hit
 // returned by the octree, so within the shape's surface band). The outward normal's side tells
-// whether it enters or leaves `shape`; that must agree with `region`, or the crossing is lost.
+// whether it enters or leaves `shape`; that must agree with `region`, or the crossing is lost. The
+// unpolarised reflectance is computed only when `unpolarisedReflectance` (polarised light has its own,
+// PolarisedCrossing).
 SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId shape, const Point& point,
-                             const Direction& direction, FresnelModel fresnel);
+                             const Direction& direction, FresnelModel fresnel, bool unpolarisedReflectance = true);
 
 }  // namespace dropscope

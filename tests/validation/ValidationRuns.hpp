@@ -20,6 +20,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace dropscope::validation {
 
@@ -73,18 +74,21 @@ inline SphereScene loadSphereScene(const std::string& name) {
     return result;
 }
 
-// The run of a validation scene with `bins` angular bins, traced on first use (seed 1, all threads).
-inline const TraceResult& validationRun(const std::string& name, int bins) {
-    static std::map<std::pair<std::string, int>, TraceResult> runs;
-    const auto key = std::make_pair(name, bins);
+// The run of a validation scene with `bins` angular bins, traced on first use (seed 1, all threads), with
+// Stokes vectors (the default) or the unpolarised model.
+inline const TraceResult& validationRun(const std::string& name, int bins,
+                                        PolarisationModel polarisation = PolarisationModel::Stokes) {
+    static std::map<std::tuple<std::string, int, PolarisationModel>, TraceResult> runs;
+    const auto key = std::make_tuple(name, bins, polarisation);
     if (auto found = runs.find(key); found != runs.end()) return found->second;
     const SphereScene scene = loadSphereScene(name);
     TraceSettings settings;
     settings.photons = validationPhotons();
     settings.seed = 1;
+    settings.transport.polarisation = polarisation;
     TraceResult result = test::traceStandard(OpticalScene(scene.scene), scene.scene.sources, settings, bins);
-    std::cout << "[validation] traced " << name << ".json: " << result.photons << " photons, " << result.threads
-              << " threads, " << result.seconds << " s\n";
+    std::cout << "[validation] traced " << name << ".json (polarisation " << polarisationModelName(polarisation)
+              << "): " << result.photons << " photons, " << result.threads << " threads, " << result.seconds << " s\n";
     return runs.emplace(key, std::move(result)).first->second;
 }
 
