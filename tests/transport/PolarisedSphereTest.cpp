@@ -5,10 +5,9 @@
 // sphere the same bounds around the unpolarised model's numbers fail: order 2 (the primary bow) is 10
 // standard deviations from them, the backscatter 7 and g 5.
 #include "TransportFixtures.hpp"
+#include "transport/RayOrderTally.hpp"
 #include "transport/SphereRayOptics.hpp"
 #include "transport/TallyExpectations.hpp"
-
-#include "tally/FixedPointSum.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,36 +26,6 @@ constexpr int kOrders = 5;  // orders 0-4 one by one, then the rest
 constexpr std::uint64_t kPhotons = 400000;
 constexpr double kSigmas = 5.0;
 
-// Escapes by ray order (the interface events of a photon in a lone sphere, less one), the sum of cos(theta)
-// and its square for g, and the escapes beyond 90 degrees.
-class RayOrderTally final : public Tally {
-public:
-    std::string_view name() const override { return "ray_orders"; }
-    std::unique_ptr<Tally> emptyCopy() const override { return std::make_unique<RayOrderTally>(); }
-    std::unique_ptr<Tally> clone() const override { return std::make_unique<RayOrderTally>(*this); }
-    void score(const Event& event, const TallyContext& photon) override {
-        if (event.type != EventType::Escape) return;
-        const auto order = static_cast<std::size_t>(photon.state.interfaceEvents) - 1;
-        ++orders[std::min(order, orders.size() - 1)];
-        const double cosine = event.direction.dot(photon.state.emitted.direction);
-        cosines.add(cosine);
-        squares.add(cosine * cosine);
-        if (cosine < 0.0) ++backscattered;
-    }
-    void merge(const Tally& other) override {
-        const RayOrderTally& more = sameTally(*this, other);
-        for (std::size_t k = 0; k < orders.size(); ++k) orders[k] += more.orders[k];
-        cosines += more.cosines;
-        squares += more.squares;
-        backscattered += more.backscattered;
-    }
-    void report(ResultReport&) const override {}
-
-    std::vector<std::uint64_t> orders = std::vector<std::uint64_t>(kOrders + 1, 0);
-    FixedPointSum cosines, squares;
-    std::uint64_t backscattered = 0;
-};
-
 struct SphereRun {
     TraceResult result;
     testing::SphereRayOptics reference;
@@ -71,7 +40,7 @@ SphereRun traceSphere(double sigma) {
     settings.photons = kPhotons;
     settings.seed = 17;
     TallySet tallies = standardTallies(180);
-    tallies.add(std::make_unique<RayOrderTally>());
+    tallies.add(std::make_unique<test::RayOrderTally>(kOrders));
     std::vector<double> edges;
     for (int degree = 0; degree <= 180; ++degree) edges.push_back(degree);
     return {runTrace(OpticalScene(scene), scene.sources, settings, tallies),
@@ -85,7 +54,7 @@ TEST_P(PolarisedSphere, MatchesTheRayOpticsWithSAndPTrackedOrderByOrder) {
     const bool clear = GetParam() == 0.0;
     const testing::SphereRayOptics& expected = run.reference;
     const FateTally& fates = test::fates(run.result);
-    const auto& orders = run.result.tallies.get<RayOrderTally>();
+    const auto& orders = run.result.tallies.get<test::RayOrderTally>();
     const double n = static_cast<double>(kPhotons);
     ASSERT_EQ(fates.lost(), 0u);
 
@@ -97,23 +66,22 @@ TEST_P(PolarisedSphere, MatchesTheRayOpticsWithSAndPTrackedOrderByOrder) {
         const double unpolarised = order < kOrders
                                        ? expected.orders[static_cast<std::size_t>(order)].total.unpolarisedFresnel
                                        : expected.higherOrders.total.unpolarisedFresnel;
-        const double measured = test::fraction(orders.orders[static_cast<std::size_t>(order)], run.result);
+        const double measured = test::fraction(orders.orders()[static_cast<std::size_t>(order)], run.result);
         EXPECT_NEAR(measured, share, monteCarloTolerance(share, n)) << "order " << order;
         if (clear && order == 2) {  // the unpolarised model puts 8 % more into the primary bow
             EXPECT_GT(std::abs(measured - unpolarised), monteCarloTolerance(share, n));
         }
     }
 
-    const double backscatter = test::fraction(orders.backscattered, run.result);
+    const double backscatter = test::fraction(orders.backscattered(), run.result);
     EXPECT_NEAR(backscatter, expected.backscattered.intensity(),
                 monteCarloTolerance(expected.backscattered.intensity(), n));
     if (clear) {
         EXPECT_GT(std::abs(backscatter - expected.backscattered.unpolarisedFresnel),
                   monteCarloTolerance(expected.backscattered.intensity(), n));
     }
-    const double escaped = static_cast<double>(fates.escaped());
-    const double g = orders.cosines.value() / escaped;
-    const double gSigma = std::sqrt((orders.squares.value() / escaped - g * g) / escaped);
+    const double g = orders.asymmetry();
+    const double gSigma = orders.asymmetrySigma();
     EXPECT_NEAR(g, expected.asymmetry, kSigmas * gSigma);
     if (clear) {
         EXPECT_GT(std::abs(g - expected.asymmetryUnpolarisedFresnel), kSigmas * gSigma);

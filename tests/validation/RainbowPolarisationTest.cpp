@@ -13,8 +13,8 @@
 namespace dropscope::validation {
 namespace {
 
-constexpr int kBins = 1800;  // 0.1 degree, as the rainbow test
-constexpr int kOrders = 8;   // one by one in the reference; the rest summed
+constexpr int kBins = 1800;             // 0.1 degree, as the rainbow test
+constexpr int kOrders = kLastRayOrder;  // one by one in the reference (0 .. kOrders - 1); the rest summed
 
 struct Band {
     const char* name;
@@ -27,7 +27,7 @@ std::size_t binOf(double degrees) { return static_cast<std::size_t>(std::lround(
 testing::SphereRayOptics reference(const SphereScene& scene) {
     std::vector<double> edges;
     for (int bin = 0; bin <= kBins; ++bin) edges.push_back(180.0 * bin / kBins);
-    return testing::sphereRayOptics(scene.relativeIndex(), scene.sigma * scene.radius, edges, kOrders);
+    return testing::sphereRayOptics(scene.relativeIndex(), scene.sigma * scene.radius, edges, kOrders - 1);
 }
 
 // Shares of the photons escaping into the band: I and Q in the scattering-plane frame.
@@ -46,13 +46,49 @@ Measured measured(const TraceResult& run, const Band& band) {
     return sum;
 }
 
-TEST(RainbowPolarisation, BothBowsArePolarisedAlongTheArcAsRayOpticsWithSAndP) {
-    // 1-degree bands on the bright side of each bow: -Q/I is -P12/P11, > 0 for light polarised across the
-    // scattering plane, i.e. along the bow. Each photon's |Q| <= I = 1, so Q's standard deviation over n
-    // photons is at most sqrt(share / n); -Q/I's by the ratio's first-order error.
+// The power of each ray order, the backscatter and g of the rainbow sphere: with s and p tracked, and what
+// the unpolarised model would give (for the table of docs/validation.md).
+void expectRayOrders(const TraceResult& run, const testing::SphereRayOptics& expected) {
+    const test::RayOrderTally& tally = run.tallies.get<test::RayOrderTally>();
+    const double n = static_cast<double>(run.photons);
+    for (int order = 0; order <= kOrders; ++order) {
+        const testing::PowerFraction& power =
+            order < kOrders ? expected.orders[static_cast<std::size_t>(order)].total : expected.higherOrders.total;
+        const double share = power.intensity();
+        const double measured = test::fraction(tally.orders()[static_cast<std::size_t>(order)], run);
+        const std::string name = order < kOrders ? "ray_order_" + std::to_string(order) : "ray_orders_above";
+        recordFigure(name,
+                     formatted(share, "%.6f") + " (s and p; unpolarised model " +
+                         formatted(power.unpolarisedFresnel, "%.6f") + ")",
+                     formatted(measured, "%.6f") + " +- " + formatted(binomialSigma(share, n), "%.2g"),
+                     "bound: " + formatted(kSigmas, "%g") + " sigma");
+        EXPECT_NEAR(measured, share, kSigmas * binomialSigma(share, n)) << name;
+    }
+    const double backscatter = test::fraction(tally.backscattered(), run);
+    const double expectedBackscatter = expected.backscattered.intensity();
+    recordFigure("backscatter_above_90_deg",
+                 formatted(expectedBackscatter, "%.5f") + " (s and p; unpolarised model " +
+                     formatted(expected.backscattered.unpolarisedFresnel, "%.5f") + ")",
+                 formatted(backscatter, "%.5f") + " +- " + formatted(binomialSigma(expectedBackscatter, n), "%.2g"),
+                 "bound: " + formatted(kSigmas, "%g") + " sigma");
+    EXPECT_NEAR(backscatter, expectedBackscatter, kSigmas * binomialSigma(expectedBackscatter, n));
+    recordFigure("asymmetry_parameter_g",
+                 formatted(expected.asymmetry, "%.5f") + " (s and p; unpolarised model " +
+                     formatted(expected.asymmetryUnpolarisedFresnel, "%.5f") + ")",
+                 formatted(tally.asymmetry(), "%.5f") + " +- " + formatted(tally.asymmetrySigma(), "%.2g"),
+                 "bound: " + formatted(kSigmas, "%g") + " sigma");
+    EXPECT_NEAR(tally.asymmetry(), expected.asymmetry, kSigmas * tally.asymmetrySigma());
+}
+
+TEST(RainbowPolarisation, TheRainbowSphereIsRayOpticsWithSAndPTracked) {
+    // The ray orders, g and the backscatter; then -Q/I (-P12/P11, > 0 for light polarised across the
+    // scattering plane, i.e. along the bow) in 1-degree bands on the bright side of each bow. Each photon's
+    // |Q| <= I = 1, so Q's standard deviation over n photons is at most sqrt(share / n); -Q/I's by the
+    // ratio's first-order error.
     const SphereScene scene = loadSphereScene("rainbow");
     const testing::SphereRayOptics expected = reference(scene);
     const TraceResult& run = validationRun("rainbow", kBins);
+    expectRayOrders(run, expected);
     const double n = static_cast<double>(run.photons);
     for (const Band& band :
          {Band{"primary_rainbow_polarisation", 138.0, 139.0}, Band{"secondary_rainbow_polarisation", 128.0, 129.0}}) {

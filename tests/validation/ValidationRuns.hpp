@@ -4,6 +4,7 @@
 // its own, so the rainbow is traced once for each of its three tests; validate.sh runs one), and the figures
 // the comparisons of docs/validation.md print.
 
+#include "transport/RayOrderTally.hpp"
 #include "transport/TallyExpectations.hpp"
 
 #include "geometry/Sphere.hpp"
@@ -17,6 +18,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -42,6 +44,9 @@ inline std::uint64_t validationPhotons() {
     }
     return static_cast<std::uint64_t>(photons);
 }
+
+// Ray orders 0 .. kLastRayOrder - 1 one by one in every run (RayOrderTally), the rest together.
+constexpr int kLastRayOrder = 6;
 
 // One validation scene: a sphere in the ambient medium, lit by a beam of the sphere's radius, so
 // every photon meets it.
@@ -86,7 +91,9 @@ inline const TraceResult& validationRun(const std::string& name, int bins,
     settings.photons = validationPhotons();
     settings.seed = 1;
     settings.transport.polarisation = polarisation;
-    TraceResult result = test::traceStandard(OpticalScene(scene.scene), scene.scene.sources, settings, bins);
+    TallySet tallies = standardTallies(bins, polarisation);
+    tallies.add(std::make_unique<test::RayOrderTally>(kLastRayOrder));
+    TraceResult result = runTrace(OpticalScene(scene.scene), scene.scene.sources, settings, tallies);
     std::cout << "[validation] traced " << name << ".json (polarisation " << polarisationModelName(polarisation)
               << "): " << result.photons << " photons, " << result.threads << " threads, " << result.seconds << " s\n";
     return runs.emplace(key, std::move(result)).first->second;
