@@ -291,12 +291,6 @@ SizeResult runSize(std::size_t count, const Options& options) {
     return result;
 }
 
-std::string fixed(double value, int digits) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", digits, value);
-    return text;
-}
-
 void printTables(const std::vector<SizeResult>& results, double floatTnearRelative) {
     std::cout << "\n### Build and memory (bytes per droplet)\n\n"
                  "| N | cube half-side | octree build s | Embree float build s | Embree user build s | "

@@ -26,6 +26,8 @@ namespace {
 
 using namespace dropscope;
 using dropscope::bench::cloudSceneText;
+using dropscope::bench::fixed;
+using dropscope::bench::median;
 using dropscope::bench::parseCount;
 
 struct Options {
@@ -54,18 +56,6 @@ Options parseOptions(int argc, char** argv) {
             throw std::invalid_argument("unknown option " + flag);
     }
     return options;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-std::string fixed(double value, int digits) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", digits, value);
-    return text;
 }
 
 struct Row {

@@ -36,6 +36,8 @@ namespace {
 
 using namespace dropscope;
 using dropscope::bench::cloudSceneText;
+using dropscope::bench::fixed;
+using dropscope::bench::median;
 using dropscope::bench::parseCount;
 using dropscope::bench::Stopwatch;
 
@@ -86,19 +88,7 @@ Options parseOptions(int argc, char** argv) {
     return options;
 }
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 double best(const std::vector<double>& values) { return *std::min_element(values.begin(), values.end()); }
-
-std::string fixed(double value, int digits) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", digits, value);
-    return text;
-}
 
 // Every tally of two runs reports the same numbers.
 bool sameTallies(const TraceResult& a, const TraceResult& b) {

@@ -2,8 +2,12 @@
 
 #include <malloc.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <cstdio>
+#include <string>
+#include <vector>
 
 namespace dropscope::bench {
 
@@ -21,5 +25,19 @@ public:
 private:
     std::chrono::steady_clock::time_point start_;
 };
+
+// The median of the runs' figures (the mean of the middle two for an even count).
+inline double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// `value` with `digits` decimals, for the Markdown tables the benchmarks print.
+inline std::string fixed(double value, int digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    return text;
+}
 
 }  // namespace dropscope::bench
