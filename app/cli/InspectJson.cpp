@@ -58,6 +58,20 @@ Json shapesJson(const Scene& scene) {
     return shapes;
 }
 
+// As the scene file gives it (docs/scene-format.md, "Polarisation").
+Json polarisationJson(const SourcePolarisation& polarisation) {
+    switch (polarisation.kind) {
+    case PolarisationKind::Unpolarised: return "unpolarised";
+    case PolarisationKind::Linear:
+        return {{"linear_deg", polarisation.linearDeg}, {"reference", vectorJson(polarisation.reference)}};
+    case PolarisationKind::Stokes: {
+        const StokesVector& s = polarisation.stokes;
+        return {{"stokes", Json::array({s[0], s[1], s[2], s[3]})}, {"reference", vectorJson(polarisation.reference)}};
+    }
+    }
+    return nullptr;
+}
+
 Json sourcesJson(const Scene& scene) {
     Json sources = Json::array();
     for (std::size_t id = 0; id < scene.sources.size(); ++id) {
@@ -67,7 +81,8 @@ Json sourcesJson(const Scene& scene) {
              {"type", sourceTypeName(source.type)},
              {"origin", vectorJson(source.origin)},
              {"direction", source.type == SourceType::PointSource ? Json(nullptr) : vectorJson(source.direction)},
-             {"radius", source.type == SourceType::Beam ? Json(source.radius) : Json(nullptr)}});
+             {"radius", source.type == SourceType::Beam ? Json(source.radius) : Json(nullptr)},
+             {"polarisation", polarisationJson(source.polarisation)}});
     }
     return sources;
 }

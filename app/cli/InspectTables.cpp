@@ -84,14 +84,34 @@ void writeTotals(const Scene& scene, const SceneSummary& summary, std::ostream& 
     }
 }
 
+// "unpolarised", "linear 30 deg from (0, 1, 0)", "stokes [1, 0, 0, 1] in (1, 0, 0)".
+std::string polarisationText(const SourcePolarisation& polarisation) {
+    switch (polarisation.kind) {
+    case PolarisationKind::Unpolarised: return "unpolarised";
+    case PolarisationKind::Linear:
+        return "linear " + formatNumber(polarisation.linearDeg) + " deg from " + formatVector(polarisation.reference);
+    case PolarisationKind::Stokes: {
+        const StokesVector& s = polarisation.stokes;
+        return "stokes [" + formatNumber(s[0]) + ", " + formatNumber(s[1]) + ", " + formatNumber(s[2]) + ", " +
+               formatNumber(s[3]) + "] in " + formatVector(polarisation.reference);
+    }
+    }
+    return "?";
+}
+
 void writeSources(const Scene& scene, std::ostream& out) {
-    TextTable table(
-        {{"id", Align::Right}, {"type"}, {"origin"}, {"direction"}, {"radius [" + scene.unit + "]", Align::Right}});
+    TextTable table({{"id", Align::Right},
+                     {"type"},
+                     {"origin"},
+                     {"direction"},
+                     {"radius [" + scene.unit + "]", Align::Right},
+                     {"polarisation"}});
     for (std::size_t id = 0; id < scene.sources.size(); ++id) {
         const Source& source = scene.sources[id];
         table.addRow({std::to_string(id), std::string(sourceTypeName(source.type)), formatVector(source.origin),
                       source.type == SourceType::PointSource ? "-" : formatVector(source.direction),
-                      source.type == SourceType::Beam ? formatNumber(source.radius) : "-"});
+                      source.type == SourceType::Beam ? formatNumber(source.radius) : "-",
+                      polarisationText(source.polarisation)});
     }
     out << "\nsources\n";
     table.write(out);

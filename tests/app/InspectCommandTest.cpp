@@ -107,12 +107,25 @@ TEST(InspectCommand, JsonHasEveryDocumentedKeyAndFullPrecision) {
     EXPECT_EQ(source["type"], "ray");
     EXPECT_EQ(source["direction"], nlohmann::json({0.0, 0.0, 1.0}));
     EXPECT_TRUE(source["radius"].is_null());
+    EXPECT_EQ(source["polarisation"], "unpolarised");
     const auto& totals = report["totals"];
     EXPECT_EQ(totals["shapes"], 1);
     EXPECT_EQ(totals["shapes_by_type"],
               nlohmann::json({{"box", 0}, {"ellipsoid", 0}, {"implicit", 0}, {"parametric", 0}, {"sphere", 1}}));
     EXPECT_DOUBLE_EQ(totals["volume"].get<double>(), 4.0 / 3.0 * std::numbers::pi * 8.0);
     EXPECT_EQ(totals["bounds"], shape["bounds"]);
+}
+
+TEST(InspectCommand, SourcesShowTheirPolarisationAsTheSceneGivesIt) {
+    const std::string scene = kSourceDir + "/assets/scenes/brewster.json";
+    const CliRun json = runDropscope({"inspect", "--json", scene});
+    ASSERT_EQ(json.status, kExitSuccess) << json.err;
+    const nlohmann::json report = nlohmann::json::parse(json.out);
+    EXPECT_EQ(report["sources"][1]["polarisation"],
+              nlohmann::json({{"linear_deg", 0.0}, {"reference", {0.5547002, 0.0, 0.8320503}}}));
+    const CliRun text = runDropscope({"inspect", scene});
+    ASSERT_EQ(text.status, kExitSuccess) << text.err;
+    EXPECT_NE(text.out.find("linear 0 deg from (0, 1, 0)"), std::string::npos) << text.out;
 }
 
 TEST(InspectCommand, JsonTotalsOfTheDefaultScene) {
