@@ -9,7 +9,6 @@ namespace dropscope::render {
 namespace {
 
 constexpr int kEllipseSegments = 64;
-constexpr double kUnpolarisedRadius = 0.5;  // of `size`: a small circle, not mistaken for circular light
 
 void addEllipse(LineBatch& lines, const Point& at, const Eigen::Vector3d& major, const Eigen::Vector3d& minor,
                 const Colour& colour) {
@@ -38,18 +37,16 @@ void addPolarisationEllipse(LineBatch& lines, const Point& at, const Direction& 
     const Eigen::Vector3d parallel = (light.reference - light.reference.dot(k) * k).normalized();
     const Eigen::Vector3d perpendicular = perpendicularAxis(parallel, direction);
     const EllipseShape shape = polarisationEllipse(light.stokes);
-    const bool unpolarised = shape.degree < kUnpolarisedDegree;
-    const Colour& colour = unpolarised ? kUnpolarisedColour : kEllipseColour;
-    if (unpolarised) {
-        const double radius = kUnpolarisedRadius * size;
-        addEllipse(lines, at, radius * parallel, radius * perpendicular, colour);
-    } else {
+    const bool polarised = shape.degree >= kUnpolarisedDegree;
+    if (polarised) {
         const double psi = shape.orientation;
         const Eigen::Vector3d majorAxis = std::cos(psi) * parallel + std::sin(psi) * perpendicular;
         const Eigen::Vector3d minorAxis = -std::sin(psi) * parallel + std::cos(psi) * perpendicular;
-        addEllipse(lines, at, size * majorAxis, size * std::abs(std::tan(shape.ellipticity)) * minorAxis, colour);
+        addEllipse(lines, at, size * majorAxis, size * std::abs(std::tan(shape.ellipticity)) * minorAxis,
+                   kEllipseColour);
     }
-    lines.add(at, at + size * k, colour);
+    lines.add(at, at + size * k, polarised ? kEllipseColour : kUnpolarisedColour);
+    addEllipse(lines, at, size * parallel, size * perpendicular, kUnpolarisedColour);
 }
 
 }  // namespace dropscope::render

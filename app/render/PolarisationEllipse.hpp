@@ -5,8 +5,8 @@
 
 namespace dropscope::render {
 
-inline constexpr Colour kEllipseColour{1.0f, 1.0f, 1.0f, 1.0f};      // white: apart from viridis and the marker
-inline constexpr Colour kUnpolarisedColour{0.6f, 0.6f, 0.6f, 1.0f};  // grey: no direction is preferred
+inline constexpr Colour kEllipseColour{1.0f, 1.0f, 1.0f, 1.0f};         // white: apart from viridis and the marker
+inline constexpr Colour kUnpolarisedColour{0.75f, 0.75f, 0.75f, 1.0f};  // light grey: the plane, no field
 
 // Light polarised less than this (degree of polarisation) is drawn, and called, unpolarised: the ellipse
 // is drawn at full size whatever the degree, so at 1 % it would overstate how polarised the light is, and
@@ -27,9 +27,11 @@ struct EllipseShape {
 EllipseShape polarisationEllipse(const StokesVector& stokes);
 
 // The polarisation ellipse of `light` travelling along `direction` at `at`, in the plane perpendicular to
-// `direction`: semi-major axis `size` along psi, semi-minor axis size |tan chi| (a segment for linear light),
-// in kEllipseColour, and a line `size` long along `direction`. Light polarised less than kUnpolarisedDegree
-// is a circle of half that size instead, it and its line in kUnpolarisedColour.
+// `direction`, in kEllipseColour: semi-major axis `size` along psi, semi-minor axis size |tan chi| (a
+// segment for linear light), and a line `size` long along `direction`. Then, in kUnpolarisedColour, the
+// circle of radius `size` in that plane, which shows the plane; it is all there is of light polarised less
+// than kUnpolarisedDegree (its line along `direction` grey too). Segments in that order: where the
+// ellipse of circular light lies on the circle, it wins the depth test.
 void addPolarisationEllipse(LineBatch& lines, const Point& at, const Direction& direction, const Polarisation& light,
                             double size);
 

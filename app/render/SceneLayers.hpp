@@ -56,9 +56,9 @@ inline constexpr double kEscapeLength = 0.5;  // escaping paths and branches go 
 inline constexpr double kMarkerRadius = 0.006;
 inline constexpr double kSourceGlyph = 0.15;  // a source's arrow
 inline constexpr double kAxisLength = 0.25;
-// The polarisation ellipse's semi-major axis: several times the current event's marker, so it shows
-// around it.
-inline constexpr double kEllipseSize = 0.05;
+// The polarisation ellipse's semi-major axis: about five times the current event's marker (2.5
+// kMarkerRadius), so it shows well around it.
+inline constexpr double kEllipseSize = 0.08;
 
 struct SceneLayers {
     LineBatch lines;

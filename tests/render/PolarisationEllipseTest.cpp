@@ -1,6 +1,6 @@
 // The polarisation ellipse (render/PolarisationEllipse.hpp) as line segments, no GL: where its vertices
-// lie for linear, circular and elliptical light in random frames, the grey circle of unpolarised light, and
-// its place first in the scene's line batch.
+// lie for linear, circular and elliptical light in random frames, the grey circle across the direction (all
+// that is drawn of unpolarised light), and its place first in the scene's line batch.
 #include "geometry/Sphere.hpp"
 #include "render/Layers.hpp"
 #include "transport/Emission.hpp"
@@ -48,20 +48,44 @@ Frame randomFrame(int seed) {
     return frame;
 }
 
-// The ellipse's vertices as offsets from the frame's point: the direction line's tip left out, checked apart.
-std::vector<Eigen::Vector3d> ellipseOffsets(const Frame& frame, const StokesVector& stokes, render::Colour* colour) {
+// What addPolarisationEllipse drew, as offsets from the frame's point: the ellipse (white), its line along
+// the direction and the circle across it (grey), each checked to be where it belongs.
+struct Drawn {
+    std::vector<Eigen::Vector3d> ellipse;
+    render::Colour lineColour{};
+};
+
+Drawn drawEllipse(const Frame& frame, const StokesVector& stokes) {
     LineBatch lines{render::Anchor{}};
     render::addPolarisationEllipse(lines, frame.at, frame.k, Polarisation{stokes, frame.parallel}, kSize);
-    std::vector<Eigen::Vector3d> offsets;
-    EXPECT_FALSE(lines.empty());
-    if (lines.empty()) return offsets;
     const auto& vertices = lines.vertices();
-    // The last segment is the direction of travel, from the point along k.
-    EXPECT_LT((worldOf(vertices[vertices.size() - 2]) - frame.at).norm(), kFloatRounding);
-    EXPECT_LT((worldOf(vertices.back()) - (frame.at + kSize * frame.k.vector())).norm(), kFloatRounding);
-    for (std::size_t v = 0; v + 2 < vertices.size(); ++v) offsets.push_back(worldOf(vertices[v]) - frame.at);
-    if (colour) *colour = vertices.front().colour;
-    return offsets;
+    Drawn drawn;
+    std::size_t white = 0;
+    while (white < vertices.size() && sameColour(vertices[white].colour, render::kEllipseColour)) ++white;
+    // The ellipse, then the line from the point along k (the last two white vertices, or the first two).
+    const std::size_t line = white > 0 ? white - 2 : 0;
+    EXPECT_LT(line + 2, vertices.size());
+    if (line + 2 >= vertices.size()) return drawn;
+    for (std::size_t v = 0; v < line; ++v) drawn.ellipse.push_back(worldOf(vertices[v]) - frame.at);
+    drawn.lineColour = vertices[line].colour;
+    EXPECT_LT((worldOf(vertices[line]) - frame.at).norm(), kFloatRounding);
+    EXPECT_LT((worldOf(vertices[line + 1]) - (frame.at + kSize * frame.k.vector())).norm(), kFloatRounding);
+    // Then the grey circle of radius kSize across k.
+    EXPECT_GT(vertices.size(), line + 2 + 3);
+    for (std::size_t v = line + 2; v < vertices.size(); ++v) {
+        EXPECT_TRUE(sameColour(vertices[v].colour, render::kUnpolarisedColour));
+        const Eigen::Vector3d offset = worldOf(vertices[v]) - frame.at;
+        EXPECT_NEAR(offset.norm(), kSize, kFloatRounding);
+        EXPECT_LT(std::abs(offset.dot(frame.k.vector())), kFloatRounding);
+    }
+    return drawn;
+}
+
+std::vector<Eigen::Vector3d> ellipseOffsets(const Frame& frame, const StokesVector& stokes) {
+    const Drawn drawn = drawEllipse(frame, stokes);
+    EXPECT_FALSE(drawn.ellipse.empty());
+    EXPECT_TRUE(sameColour(drawn.lineColour, render::kEllipseColour));
+    return drawn.ellipse;
 }
 
 // Every offset lies on the line through the point along `axis` within kSize, and both ends are reached.
@@ -87,14 +111,12 @@ TEST(PolarisationEllipse, LiesInThePlanePerpendicularToTheDirection) {
         // A random state 90 % polarised: (Q, U, V) / I on the sphere of radius 0.9.
         const Eigen::Vector3d state = Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
         const StokesVector stokes(1.0, 0.9 * state.x(), 0.9 * state.y(), 0.9 * state.z());
-        render::Colour colour{};
-        const auto offsets = ellipseOffsets(frame, stokes, &colour);
+        const auto offsets = ellipseOffsets(frame, stokes);
         ASSERT_FALSE(offsets.empty());
         for (const Eigen::Vector3d& offset : offsets) {
             EXPECT_LT(std::abs(offset.dot(frame.k.vector())), kFloatRounding) << "frame " << seed;
             EXPECT_LE(offset.norm(), kSize + kFloatRounding) << "frame " << seed;
         }
-        EXPECT_TRUE(sameColour(colour, render::kEllipseColour)) << "frame " << seed;
     }
 }
 
@@ -102,28 +124,28 @@ TEST(PolarisationEllipse, LinearLightIsASegmentAtPsiFromTheReference) {
     for (int seed = 0; seed < kRandomFrames; ++seed) {
         const Frame frame = randomFrame(seed);
         // Q = I: along the reference; Q = -I: along the perpendicular axis; U = +-I: at +-45 degrees.
-        expectSegmentAlong(ellipseOffsets(frame, {1.0, 1.0, 0.0, 0.0}, nullptr), frame.parallel);
-        expectSegmentAlong(ellipseOffsets(frame, {2.0, -2.0, 0.0, 0.0}, nullptr), frame.perpendicular);
-        expectSegmentAlong(ellipseOffsets(frame, {1.0, 0.0, 1.0, 0.0}, nullptr),
+        expectSegmentAlong(ellipseOffsets(frame, {1.0, 1.0, 0.0, 0.0}), frame.parallel);
+        expectSegmentAlong(ellipseOffsets(frame, {2.0, -2.0, 0.0, 0.0}), frame.perpendicular);
+        expectSegmentAlong(ellipseOffsets(frame, {1.0, 0.0, 1.0, 0.0}),
                            (frame.parallel + frame.perpendicular).normalized());
-        expectSegmentAlong(ellipseOffsets(frame, {1.0, 0.0, -1.0, 0.0}, nullptr),
+        expectSegmentAlong(ellipseOffsets(frame, {1.0, 0.0, -1.0, 0.0}),
                            (frame.parallel - frame.perpendicular).normalized());
         // Linear at A from the reference towards the perpendicular axis: Q = I cos 2A, U = I sin 2A.
         const double a = (seed - kRandomFrames / 2) * std::numbers::pi / kRandomFrames;
-        expectSegmentAlong(ellipseOffsets(frame, {1.0, std::cos(2.0 * a), std::sin(2.0 * a), 0.0}, nullptr),
+        expectSegmentAlong(ellipseOffsets(frame, {1.0, std::cos(2.0 * a), std::sin(2.0 * a), 0.0}),
                            std::cos(a) * frame.parallel + std::sin(a) * frame.perpendicular);
     }
 }
 
 TEST(PolarisationEllipse, PartlyPolarisedLinearLightIsTheSameSegment) {
     const Frame frame = randomFrame(3);
-    expectSegmentAlong(ellipseOffsets(frame, {1.0, 0.3, 0.0, 0.0}, nullptr), frame.parallel);
+    expectSegmentAlong(ellipseOffsets(frame, {1.0, 0.3, 0.0, 0.0}), frame.parallel);
 }
 
 TEST(PolarisationEllipse, CircularLightIsACircle) {
     for (const double v : {1.0, -1.0}) {
         const Frame frame = randomFrame(11);
-        const auto offsets = ellipseOffsets(frame, {1.0, 0.0, 0.0, v}, nullptr);
+        const auto offsets = ellipseOffsets(frame, {1.0, 0.0, 0.0, v});
         ASSERT_FALSE(offsets.empty());
         for (const Eigen::Vector3d& offset : offsets) EXPECT_NEAR(offset.norm(), kSize, kFloatRounding);
     }
@@ -143,7 +165,7 @@ TEST(PolarisationEllipse, EllipticalLightHasAxesAtPsiWithRatioTanChi) {
     const Eigen::Vector3d minor = frame.k.vector().cross(major);
     double alongMajor = 0.0;
     double alongMinor = 0.0;
-    for (const Eigen::Vector3d& offset : ellipseOffsets(frame, stokes, nullptr)) {
+    for (const Eigen::Vector3d& offset : ellipseOffsets(frame, stokes)) {
         alongMajor = std::max(alongMajor, std::abs(offset.dot(major)));
         alongMinor = std::max(alongMinor, std::abs(offset.dot(minor)));
         // On the ellipse (x/a)^2 + (y/b)^2 = 1.
@@ -154,17 +176,12 @@ TEST(PolarisationEllipse, EllipticalLightHasAxesAtPsiWithRatioTanChi) {
     EXPECT_NEAR(alongMinor, kSize * std::tan(-chi), kFloatRounding);
 }
 
-TEST(PolarisationEllipse, UnpolarisedLightIsASmallGreyCircle) {
+TEST(PolarisationEllipse, UnpolarisedLightIsTheGreyCircleAlone) {
     const Frame frame = randomFrame(2);
     for (const StokesVector& stokes : {StokesVector(1.0, 0.0, 0.0, 0.0), StokesVector(1.0, 0.005, -0.005, 0.001)}) {
-        render::Colour colour{};
-        const auto offsets = ellipseOffsets(frame, stokes, &colour);
-        ASSERT_FALSE(offsets.empty());
-        EXPECT_TRUE(sameColour(colour, render::kUnpolarisedColour));
-        for (const Eigen::Vector3d& offset : offsets) {
-            EXPECT_NEAR(offset.norm(), 0.5 * kSize, kFloatRounding);
-            EXPECT_LT(std::abs(offset.dot(frame.k.vector())), kFloatRounding);
-        }
+        const Drawn drawn = drawEllipse(frame, stokes);
+        EXPECT_TRUE(drawn.ellipse.empty());
+        EXPECT_TRUE(sameColour(drawn.lineColour, render::kUnpolarisedColour));
     }
     EXPECT_EQ(render::polarisationEllipse(StokesVector(1.0, 0.0, 0.0, 0.0)).degree, 0.0);
 }
@@ -192,12 +209,13 @@ TEST(PolarisationEllipse, TheSceneLayersDrawItFirstAtTheCurrentEventOnlyWhenItIs
     const std::size_t ellipse = vertices.size() - pathVertices;
     const double size = render::kEllipseSize * inputs.bounds.diagonal().norm();
     for (std::size_t v = 0; v < ellipse; ++v) {
-        EXPECT_TRUE(sameColour(vertices[v].colour, render::kEllipseColour));
         const Eigen::Vector3d offset = worldOf(vertices[v]) - path.events[1].position;
         EXPECT_LE(offset.norm(), size + kFloatRounding);
     }
     // Its direction line lies on the path's segment from the event: drawn first, it wins the depth test.
-    EXPECT_NEAR(worldOf(vertices[ellipse - 1]).z(), -1.0 + size, kFloatRounding);
+    std::size_t white = 0;
+    while (sameColour(vertices[white].colour, render::kEllipseColour)) ++white;
+    EXPECT_NEAR(worldOf(vertices[white - 1]).z(), -1.0 + size, kFloatRounding);
 
     path.events[1].polarisation.reset();
     inputs.currentEvent = &path.events[1];
