@@ -148,8 +148,10 @@ void eventTable(TraceState& traces, const ItemProbe& probe) {
     ImGui::Text("event %d of %zu (Left/Right keys)", traces.selectedEvent + 1, path.events.size());
     if (path.events.empty()) return;
     eventPolarisation(path.events[static_cast<std::size_t>(traces.selectedEvent)], probe);
+    // Columns can be dragged into another order, or hidden from the header's context menu.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
-                                  ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
+                                  ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit |
+                                  ImGuiTableFlags_Reorderable | ImGuiTableFlags_Hideable;
     const float height = std::max(kMinTableHeight, ImGui::GetContentRegionAvail().y);
     if (!ImGui::BeginTable("events", 8 + static_cast<int>(kStokesColumns.size()), flags, ImVec2(0.0f, height))) {
         return;

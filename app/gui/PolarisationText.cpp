@@ -20,15 +20,22 @@ std::string format(const char* pattern, Values... values) {
     return text;
 }
 
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+// `value` to `decimals` decimals, without the sign of a value that rounds to 0 ("0.0000", not "-0.0000"
+// for a rounding error of -1e-17).
+std::string fixedText(double value, int decimals) {
+    const std::string text = format("%.*f", decimals, value);
+    return text.find_first_not_of("-0.") == std::string::npos && text.front() == '-' ? text.substr(1) : text;
+}
+
+std::string degreesText(double radians) { return fixedText(radians * 180.0 / std::numbers::pi, 1); }
 
 }  // namespace
 
 std::array<std::string, 5> stokesCells(const std::optional<Polarisation>& light) {
     if (!light) return {"-", "-", "-", "-", "-"};
     const StokesVector& s = light->stokes;
-    return {format("%.4g", s[0]), format("%.4g", s[1]), format("%.4g", s[2]), format("%.4g", s[3]),
-            format("%.3f", degreeOfLinearPolarisation(s))};
+    return {fixedText(s[0], 4), fixedText(s[1], 4), fixedText(s[2], 4), fixedText(s[3], 4),
+            fixedText(degreeOfLinearPolarisation(s), 3)};
 }
 
 std::string polarisationSummary(const std::optional<Polarisation>& light) {
@@ -40,7 +47,8 @@ std::string polarisationSummary(const std::optional<Polarisation>& light) {
     const std::string shape = ratio < kLinearRatio ? std::string("linear")
                                                    : format("b/a %.3f, %s", ratio,
                                                             ellipse.ellipticity > 0.0 ? "right-handed" : "left-handed");
-    return format("%.1f %% polarised: psi %.1f deg, ", 100.0 * ellipse.degree, degrees(ellipse.orientation)) + shape;
+    return format("%.1f %% polarised: psi ", 100.0 * ellipse.degree) + degreesText(ellipse.orientation) + " deg, " +
+           shape;
 }
 
 std::string referenceText(const Polarisation& light) {

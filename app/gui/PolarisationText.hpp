@@ -10,8 +10,8 @@ namespace dropscope::gui {
 
 // The path inspector's words and numbers for the polarisation an event leaves with (PathPanel.cpp).
 
-// I, Q, U, V and the degree of linear polarisation, as the event table shows them; "-" each when the
-// trace carried no polarisation.
+// I, Q, U, V (4 decimals: a Monte Carlo photon's I is 1) and the degree of linear polarisation (3), as the
+// event table shows them; "-" each when the trace carried no polarisation.
 std::array<std::string, 5> stokesCells(const std::optional<Polarisation>& light);
 
 // What the polarisation ellipse drawn at the event shows: "unpolarised" (below

@@ -40,7 +40,7 @@ constexpr const char* kLinearScene = R"({
 
 // Stokes vectors computed twice in double precision (the engine, the closed form here).
 constexpr double kStokesRounding = 1e-12;
-// The event table shows 4 significant digits.
+// The event table shows 4 decimals (DoLP 3).
 constexpr double kTableDigits = 5e-4;
 // Line vertices are floats relative to the anchor, here the sphere's centre, a few units away.
 constexpr double kFloatRounding = 1e-5;
