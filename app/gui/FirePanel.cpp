@@ -27,7 +27,41 @@ constexpr const char* kPolarisationHelp =
 constexpr std::uint64_t kMaxPhotons = 1'000'000'000;
 constexpr std::uint64_t kMaxPaths = 100'000;
 
-// The selected source's fields; every edit goes to the document as one undo step per field activation.
+// The selected source's type, place, aim, beam radius and polarisation, edited in `source`; `note` gets
+// what an edit changed besides its field.
+void sourceFields(AppState& state, Source& source, FieldEdits& edits, std::string& note) {
+    int type = static_cast<int>(source.type);
+    if (edits.track(ImGui::Combo("type", &type, kSourceTypes, 3), "type")) {
+        source.type = static_cast<SourceType>(type);
+        if (source.type == SourceType::Beam && !(source.radius > 0.0)) source.radius = 0.5;
+        if (source.type == SourceType::PointSource && source.polarisation.kind != PolarisationKind::Unpolarised) {
+            source.polarisation.kind = PolarisationKind::Unpolarised;
+            note = "a point source is unpolarised: its polarisation was dropped";
+        }
+    }
+    edits.track(inputVector3("origin (G)", source.origin, "%.5g"), "origin (G)");
+    Point direction = source.direction.vector();
+    // Applied on Enter: the direction stored is normalised, and a field still being typed in would apply
+    // its text again every frame, as long as it differs from the normalised value shown.
+    if (inputVector3("direction (A)", direction, "%.5g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+        if (Direction(direction)) {
+            edits.track(true, "direction (A)");
+            note = aimSource(source, Direction(direction));
+        } else {
+            state.ui.status.refuse("a direction must be a non-zero vector");
+        }
+    }
+    reportItemRect(state.ui.itemProbe, "direction (A)");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Enter applies; the direction is normalised");
+    if (source.type == SourceType::Beam) {
+        edits.track(ImGui::InputDouble("beam radius", &source.radius, 0.05, 0.5, "%.4g"), "beam radius");
+        source.radius = std::max(source.radius, 1e-9);
+    }
+    polarisationEditor(source, edits, note, state.ui.itemProbe);
+}
+
+// The sources, the selected one's fields, add and remove; every edit goes to the document as one undo
+// step per field activation.
 void sourceEditor(AppState& state) {
     SceneState& scene = state.scene;
     std::vector<Source> sources = scene.document().sources();
@@ -37,38 +71,8 @@ void sourceEditor(AppState& state) {
         if (ImGui::Selectable(label.c_str(), k == scene.selectedSource())) scene.selectSource(k);
     }
     FieldEdits edits(state.ui.panels.firePanel.editingItem);
-    std::string note;  // what the edit changed besides its field
-    if (!sources.empty()) {
-        Source& source = sources[scene.selectedSource()];
-        int type = static_cast<int>(source.type);
-        if (edits.track(ImGui::Combo("type", &type, kSourceTypes, 3), "type")) {
-            source.type = static_cast<SourceType>(type);
-            if (source.type == SourceType::Beam && !(source.radius > 0.0)) source.radius = 0.5;
-            if (source.type == SourceType::PointSource && source.polarisation.kind != PolarisationKind::Unpolarised) {
-                source.polarisation.kind = PolarisationKind::Unpolarised;
-                note = "a point source is unpolarised: its polarisation was dropped";
-            }
-        }
-        edits.track(inputVector3("origin (G)", source.origin, "%.5g"), "origin (G)");
-        Point direction = source.direction.vector();
-        // Applied on Enter: the direction stored is normalised, and a field still being typed in would
-        // apply its text again every frame, as long as it differs from the normalised value shown.
-        if (inputVector3("direction (A)", direction, "%.5g", ImGuiInputTextFlags_EnterReturnsTrue)) {
-            if (Direction(direction)) {
-                edits.track(true, "direction (A)");
-                note = aimSource(source, Direction(direction));
-            } else {
-                state.ui.status.refuse("a direction must be a non-zero vector");
-            }
-        }
-        reportItemRect(state.ui.itemProbe, "direction (A)");
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Enter applies; the direction is normalised");
-        if (source.type == SourceType::Beam) {
-            edits.track(ImGui::InputDouble("beam radius", &source.radius, 0.05, 0.5, "%.4g"), "beam radius");
-            source.radius = std::max(source.radius, 1e-9);
-        }
-        polarisationEditor(source, edits, note, state.ui.itemProbe);
-    }
+    std::string note;
+    if (!sources.empty()) sourceFields(state, sources[scene.selectedSource()], edits, note);
     if (edits.track(ImGui::Button("Add source"), "Add source")) {
         const render::Camera& camera = state.view.camera;
         Source source;
