@@ -47,6 +47,10 @@ default="$root/assets/scenes/default.json"
 cloud="$root/assets/scenes/cloud.json"
 topdown="$root/tests/data/scenes/gui_top_down.json"
 gallery="$root/assets/scenes/shapes_gallery.json"
+# The default scene with its beam linearly polarised at 30 degrees from x (towards x cross z = -y).
+polarised="$work/default-linear.json"
+sed 's|"radius": 1.5}|"radius": 1.5, "polarisation": {"linear_deg": 30, "reference": [1, 0, 0]}}|' "$default" >"$polarised"
+grep -q linear_deg "$polarised" || { echo "the polarised scene was not made from $default" >&2; exit 1; }
 
 shot app-overview "$default" "mousemove 640 450" "key space" "sleep 2"
 shot app-select-edit "$default" "mousemove 560 430" "click 1" "mousemove 570 440"
@@ -61,7 +65,23 @@ shot app-ray-tree "$default" "mousemove 612 396" "key a" "key r" "mousemove 560 
 shot app-help "$default" "mousemove 640 60" "key F1"
 # 100,000 photons (typed into the Fire panel's photon count), then the Results panel's Plot... button, the
 # mouse over the primary rainbow's edge near 138 degrees.
-shot app-results-plot "$default" "mousemove 1040 192" "click 1" "key ctrl+a" "type 100000" "key Return" \
-    "mousemove 640 60" "key space" "sleep 3" "mousemove 35 702" "click 1" "mousemove 791 450" "sleep 0.5"
+shot app-results-plot "$default" "mousemove 1040 215" "click 1" "key ctrl+a" "type 100000" "key Return" \
+    "mousemove 640 60" "key space" "sleep 3" "mousemove 35 702" "click 1" "mousemove 791 330" "sleep 0.5"
 # The parametric and implicit presets, photons fired, the Bezier droplet in the middle selected.
 shot app-general-shapes "$gallery" "mousemove 640 420" "key space" "sleep 2" "click 1"
+# Polarisation: the Fire panel with the linearly polarised beam, 1000 photons fired.
+shot app-polarisation-fire "$polarised" "mousemove 640 60" "key space" "sleep 2"
+# The default (unpolarised) beam, seed 4 (typed into the Fire panel), translucent shapes (View menu), paths
+# coloured by DoLP; photon 2, a primary-rainbow ray in drop-a, at its internal reflection (event 2). The
+# view orbited until the glass cell is behind drop-a and zoomed in on the event: the ellipse (white) in its
+# circle (grey); the event table scrolled sideways (Shift+wheel) to its Stokes columns.
+shot app-polarisation-paths "$default" "mousemove 1040 261" "click 1" "key ctrl+a" "type 4" "key Return" \
+    "mousemove 640 60" "key space" "sleep 2" "mousemove 113 9" "click 1" "mousemove 150 186" "click 1" \
+    "mousemove 1130 500" "click 1" "mousemove 1130 562" "click 1" "mousemove 1060 580" "click 1" \
+    "mousemove 640 60" "key Right" "key Right" "mousemove 700 650" "mousedown 1" "mousemove 600 640" \
+    "mousemove 500 630" "mousemove 420 620" "mouseup 1" "mousemove 675 390" "click --repeat 5 --delay 100 4" \
+    "mousemove 1100 700" "keydown shift" "click --repeat 40 5" "keyup shift" "mousemove 1100 430"
+# The same 100,000 photons, the mouse on the polarisation sub-plot at the primary rainbow (138 degrees):
+# -P12/P11 and DoLP read out there.
+shot app-polarisation-results "$default" "mousemove 1040 215" "click 1" "key ctrl+a" "type 100000" "key Return" \
+    "mousemove 640 60" "key space" "sleep 3" "mousemove 35 702" "click 1" "mousemove 791 500" "sleep 0.5"

@@ -56,7 +56,7 @@ void App::buildUi() {
     drawPlacementPanel(state_.placement, state_.view.slice, state_.scene.document());
     drawFirePanel(state_);
     drawOctreePanel(state_);
-    drawPathPanel(state_.view.layers, state_.traces);
+    drawPathPanel(state_.view.layers, state_.traces, state_.ui.itemProbe);
     drawResultsPanel(state_.traces, state_.ui);
     drawFilePrompts(state_);
     drawHelpWindow(state_.ui);

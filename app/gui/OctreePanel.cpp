@@ -71,7 +71,16 @@ void traversalList(const TraceState& traces, render::LayerOptions& layers) {
 }  // namespace
 
 void drawOctreePanel(AppState& state) {
-    placeNextPanel(PanelSide::Right, 0.40f, 0.25f);
+    placeNextPanel(PanelSide::Right, 0.56f, 0.30f);
+    // Collapsed at first, under the Fire panel (the right column has no room for it beside the Paths
+    // panel); it opens, in front, when the cells are switched on (C, the View menu).
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    bool& cellsShown = state.ui.panels.octreeCellsShown;
+    if (state.view.layers.octree && !cellsShown) {
+        ImGui::SetNextWindowCollapsed(false);
+        ImGui::SetNextWindowFocus();
+    }
+    cellsShown = state.view.layers.octree;
     if (!ImGui::Begin("Octree")) {
         ImGui::End();
         return;

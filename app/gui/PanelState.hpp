@@ -46,6 +46,11 @@ struct ScenePanelFields {
     CloudFields cloud;
 };
 
+// The Fire panel's source editor (FirePanel.cpp).
+struct FirePanelFields {
+    std::uint32_t editingItem = 0;  // the ImGui item whose edits merge into one undo step (0: none)
+};
+
 // The octree's per-level statistics, which walk every cell: computed again only for another document or
 // revision (OctreePanel.cpp).
 struct OctreeStatistics {
@@ -59,7 +64,9 @@ struct OctreeStatistics {
 struct PanelState {
     FilePromptFields filePrompt;
     ScenePanelFields scenePanel;
+    FirePanelFields firePanel;
     OctreeStatistics octreeStatistics;
+    bool octreeCellsShown = false;  // in the last frame: the Octree panel opens when the cells are switched on
     plot::PlotWindowState angularPlot{.exportPath = "angular-plot.csv"};  // the Results panel's
 };
 

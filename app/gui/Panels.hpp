@@ -17,8 +17,8 @@ void drawPlacementPanel(PlacementState& placement, SliceSettings& slice, const S
 void drawFirePanel(AppState& state);
 // Levels, statistics, traversal.
 void drawOctreePanel(AppState& state);
-// The recorded photons and their events.
-void drawPathPanel(render::LayerOptions& layers, TraceState& traces);
+// The path colouring, the recorded photons and their events with their polarisation.
+void drawPathPanel(render::LayerOptions& layers, TraceState& traces, const ItemProbe& probe);
 // Fractions, and the angular distribution in its plot window.
 void drawResultsPanel(const TraceState& traces, UiState& ui);
 // Open, save as, export, screenshot.

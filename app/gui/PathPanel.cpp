@@ -1,19 +1,69 @@
 #include "gui/PanelLayout.hpp"
+#include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
+#include "gui/PolarisationText.hpp"
 #include "gui/TraceActions.hpp"
+#include "render/Colour.hpp"
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace dropscope::gui {
 
 namespace {
 
+constexpr std::array<const char*, 3> kColourings{"weight", "event", "DoLP"};  // render::PathColouring
+constexpr const char* kColouringHelp =
+    "weight: viridis by the weight each segment starts with\n"
+    "event: by the type of the event it starts at (the markers' colours)\n"
+    "DoLP: viridis by its degree of linear polarisation, 0 purple to 1 yellow;\n"
+    "grey when the trace carried no polarisation";
+constexpr std::array<const char*, 5> kStokesColumns{"I", "Q", "U", "V", "DoLP"};  // stokesCells' order
+constexpr int kLegendSteps = 16;  // bands of the viridis legend, enough to read as a ramp
+constexpr float kLegendWidth = 120.0f;
+constexpr float kColouringWidth = 70.0f;    // the colouring's combo box, on the row of the layer switches
+constexpr float kPhotonListHeight = 64.0f;  // three photons
+constexpr float kMinTableHeight = 90.0f;    // the header and four events
+
+void layerSwitches(render::LayerOptions& layers, const ItemProbe& probe) {
+    ImGui::Checkbox("paths", &layers.paths);
+    ImGui::SameLine();
+    ImGui::Checkbox("markers", &layers.markers);
+    ImGui::SameLine();
+    int colouring = static_cast<int>(layers.pathColouring);
+    ImGui::SetNextItemWidth(kColouringWidth);
+    if (choiceCombo("colour", colouring, kColourings, probe, kColouringHelp)) {
+        layers.pathColouring = static_cast<render::PathColouring>(colouring);
+    }
+}
+
+// Viridis from DoLP 0 to 1, and what grey means.
+void dolpLegend() {
+    ImGui::TextUnformatted("DoLP 0");
+    ImGui::SameLine();
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float height = ImGui::GetTextLineHeight();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const float step = kLegendWidth / kLegendSteps;
+    for (int k = 0; k < kLegendSteps; ++k) {
+        const render::Colour c = render::viridis((k + 0.5) / kLegendSteps);
+        const ImVec2 from(at.x + step * static_cast<float>(k), at.y);
+        draw->AddRectFilled(from, ImVec2(from.x + step, at.y + height),
+                            ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], 1.0f)));
+    }
+    ImGui::Dummy(ImVec2(kLegendWidth, height));
+    ImGui::SameLine();
+    ImGui::TextUnformatted("1, grey: none");
+}
+
 void photonList(TraceState& traces) {
     const auto& paths = traces.trace->outcome.result.paths;
-    ImGui::BeginChild("photons", ImVec2(0.0f, 80.0f), true);
+    ImGui::BeginChild("photons", ImVec2(0.0f, kPhotonListHeight), true);
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(paths.size()));
     while (clipper.Step()) {
@@ -34,77 +84,113 @@ std::string shapeText(const TraceShown& trace, ShapeId shape) {
     return std::to_string(shape < slots.size() ? slots[shape] : shape);
 }
 
-void eventTable(TraceState& traces) {
+// The current event's polarisation in words: what the ellipse drawn there shows.
+void eventPolarisation(const Event& event, const ItemProbe& probe) {
+    probedText(probe, "event polarisation", polarisationSummary(event.polarisation), true);
+    if (event.polarisation && ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%s", referenceText(*event.polarisation).c_str());
+    }
+}
+
+// Its I, Q, U, V and DoLP, one cell each, the frame in their tooltip.
+void stokesColumns(const Event& event, std::size_t row, const ItemProbe& probe) {
+    const std::array<std::string, 5> cells = stokesCells(event.polarisation);
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        ImGui::TableNextColumn();
+        if (probe) {
+            probedText(probe, "event " + std::to_string(row) + " " + kStokesColumns[c], cells[c]);
+        } else {
+            ImGui::TextUnformatted(cells[c].c_str());
+        }
+        if (event.polarisation && ImGui::IsItemHovered()) {
+            ImGui::SetTooltip("%s", referenceText(*event.polarisation).c_str());
+        }
+    }
+}
+
+void eventRow(TraceState& traces, const TraceShown& trace, const Event& event, std::size_t k, const ItemProbe& probe) {
+    const auto& media = trace.outcome.scene.media;
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    const std::string index = std::to_string(k);
+    if (ImGui::Selectable(index.c_str(), static_cast<int>(k) == traces.selectedEvent,
+                          ImGuiSelectableFlags_SpanAllColumns)) {
+        selectEvent(traces, traces.selectedPath, static_cast<int>(k));
+    }
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(std::string(eventTypeName(event.type)).c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%.4g %.4g %.4g", event.position.x(), event.position.y(), event.position.z());
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f %.3f %.3f", event.direction.x(), event.direction.y(), event.direction.z());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(shapeText(trace, event.shape).c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%.4g -> %.4g", media.at(event.from).n, media.at(event.to).n);
+    ImGui::TableNextColumn();
+    if (std::isnan(event.reflectance)) {
+        ImGui::TextUnformatted("-");
+    } else {
+        ImGui::Text("%.4f", event.reflectance);
+    }
+    ImGui::TableNextColumn();
+    ImGui::Text("%.4g", event.weight);
+    stokesColumns(event, k, probe);
+}
+
+void eventTable(TraceState& traces, const ItemProbe& probe) {
     const TraceShown& trace = *traces.trace;
     const PhotonPath& path = trace.outcome.result.paths[static_cast<std::size_t>(traces.selectedPath)];
-    const auto& media = trace.outcome.scene.media;
     if (ImGui::ArrowButton("previous", ImGuiDir_Left)) stepEvent(traces, -1);
     ImGui::SameLine();
     if (ImGui::ArrowButton("next", ImGuiDir_Right)) stepEvent(traces, +1);
     ImGui::SameLine();
     ImGui::Text("event %d of %zu (Left/Right keys)", traces.selectedEvent + 1, path.events.size());
+    if (path.events.empty()) return;
+    eventPolarisation(path.events[static_cast<std::size_t>(traces.selectedEvent)], probe);
+    // Columns can be dragged into another order, or hidden from the header's context menu.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
-                                  ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("events", 8, flags, ImVec2(0.0f, 150.0f))) return;
+                                  ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit |
+                                  ImGuiTableFlags_Reorderable | ImGuiTableFlags_Hideable;
+    const float height = std::max(kMinTableHeight, ImGui::GetContentRegionAvail().y);
+    if (!ImGui::BeginTable("events", 8 + static_cast<int>(kStokesColumns.size()), flags, ImVec2(0.0f, height))) {
+        return;
+    }
     for (const char* header : {"#", "type", "position", "direction", "shape", "n1 -> n2", "R", "weight"}) {
         ImGui::TableSetupColumn(header);
     }
-    ImGui::TableSetupScrollFreeze(0, 1);
+    for (const char* header : kStokesColumns) ImGui::TableSetupColumn(header);
+    ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableHeadersRow();
-    for (std::size_t k = 0; k < path.events.size(); ++k) {
-        const Event& event = path.events[k];
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        const std::string index = std::to_string(k);
-        if (ImGui::Selectable(index.c_str(), static_cast<int>(k) == traces.selectedEvent,
-                              ImGuiSelectableFlags_SpanAllColumns)) {
-            selectEvent(traces, traces.selectedPath, static_cast<int>(k));
+    // Only the rows in view are drawn: a photon trapped until the event cap has 10,000 events.
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(path.events.size()));
+    while (clipper.Step()) {
+        for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
+            const auto k = static_cast<std::size_t>(row);
+            eventRow(traces, trace, path.events[k], k, probe);
         }
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(std::string(eventTypeName(event.type)).c_str());
-        ImGui::TableNextColumn();
-        ImGui::Text("%.4g %.4g %.4g", event.position.x(), event.position.y(), event.position.z());
-        ImGui::TableNextColumn();
-        ImGui::Text("%.3f %.3f %.3f", event.direction.x(), event.direction.y(), event.direction.z());
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(shapeText(trace, event.shape).c_str());
-        ImGui::TableNextColumn();
-        ImGui::Text("%.4g -> %.4g", media.at(event.from).n, media.at(event.to).n);
-        ImGui::TableNextColumn();
-        if (std::isnan(event.reflectance)) {
-            ImGui::TextUnformatted("-");
-        } else {
-            ImGui::Text("%.4f", event.reflectance);
-        }
-        ImGui::TableNextColumn();
-        ImGui::Text("%.4g", event.weight);
     }
     ImGui::EndTable();
 }
 
 }  // namespace
 
-void drawPathPanel(render::LayerOptions& layers, TraceState& traces) {
-    placeNextPanel(PanelSide::Right, 0.65f, 0.35f);
+void drawPathPanel(render::LayerOptions& layers, TraceState& traces, const ItemProbe& probe) {
+    placeNextPanel(PanelSide::Right, 0.59f, 0.41f);  // under the Octree panel, collapsed at first
     if (!ImGui::Begin("Paths")) {
         ImGui::End();
         return;
     }
-    ImGui::Checkbox("paths", &layers.paths);
-    ImGui::SameLine();
-    ImGui::Checkbox("markers", &layers.markers);
-    ImGui::SameLine();
-    bool byEvent = layers.pathColouring == render::PathColouring::Event;
-    if (ImGui::Checkbox("colour by event", &byEvent)) {
-        layers.pathColouring = byEvent ? render::PathColouring::Event : render::PathColouring::Weight;
-    }
+    layerSwitches(layers, probe);
+    if (layers.pathColouring == render::PathColouring::Dolp) dolpLegend();
     if (!traces.trace || traces.trace->outcome.result.paths.empty()) {
         ImGui::TextDisabled("fire photons (Space) with 'paths kept' > 0 to inspect them here");
         ImGui::End();
         return;
     }
     photonList(traces);
-    if (traces.selectedPath >= 0) eventTable(traces);
+    if (traces.selectedPath >= 0) eventTable(traces, probe);
     ImGui::End();
 }
 

@@ -17,8 +17,8 @@ namespace {
 
 // Escapes per steradian in each angular bin, as a fraction of the photons traced (angular.csv's
 // fraction_per_sr, the quantity whose peaks are the rainbows), at the bin's centre; with polarisation, below
-// it -Q/I in the scattering-plane frame (-P12/P11 for unpolarised light: > 0 polarised across the plane)
-// and the degree of linear polarisation (NaN, not drawn, in empty bins).
+// it the degree of linear polarisation and -Q/I in the scattering-plane frame (-P12/P11 for unpolarised
+// light: > 0 polarised across the plane) (NaN, not drawn, in empty bins).
 plot::Figure angularFigure(const AngularTally& angular) {
     const AngularTally::Columns columns = angular.columns();
     std::vector<double> centres;
@@ -36,8 +36,10 @@ plot::Figure angularFigure(const AngularTally& angular) {
         ratio.push_back(empty ? std::nan("") : -columns.stokesQ[bin] / columns.fraction[bin]);
         dolp.push_back(empty ? std::nan("") : columns.dolp[bin]);
     }
+    // DoLP first, so -P12/P11 is drawn over it: in the scattering-plane frame U averages out, and where
+    // -Q/I > 0 the two coincide (DoLP = |Q|/I); drawn last, DoLP hid -P12/P11 there.
     figure.subPlots.push_back({"polarisation",
-                               {{"-P12/P11 (-Q/I)", centres, std::move(ratio)}, {"DoLP", centres, std::move(dolp)}},
+                               {{"DoLP", centres, std::move(dolp)}, {"-P12/P11 (-Q/I)", centres, std::move(ratio)}},
                                plot::Scale::Linear,
                                plot::AxisRange{-1.0, 1.0}});
     return figure;

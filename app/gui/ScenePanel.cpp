@@ -68,45 +68,37 @@ void selectedShapeEditor(AppState& state) {
         ImGui::TextDisabled("click a shape (or a row above) to edit it");
         return;
     }
-    std::uint32_t& editingItem = state.ui.panels.scenePanel.editingItem;
+    FieldEdits edits(state.ui.panels.scenePanel.editingItem);
     ShapeSpec spec = describeShape(*shape);
     ImGui::Text("shape %u: %s", selected, shapeTypeLabel(*shape).c_str());
-    bool changed = false;
-    ImGuiID editedItem = 0;
-    auto track = [&](bool edited, const char* label) {
-        if (!edited) return;
-        changed = true;
-        editedItem = ImGui::GetID(label);  // the id the widget of that label has in this window
-    };
     if (spec.kind == ShapeKind::Box) {
-        track(inputVector3("min", spec.boxMin), "min");
-        track(inputVector3("max", spec.boxMax), "max");
+        edits.track(inputVector3("min", spec.boxMin), "min");
+        edits.track(inputVector3("max", spec.boxMax), "max");
     } else if (spec.general) {
         // The base is shared and read-only here: only where it stands (r0) and its medium are edited.
-        track(inputVector3("centre", spec.center), "centre");
+        edits.track(inputVector3("centre", spec.center), "centre");
         reportItemRect(state.ui.itemProbe, "centre");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("the translation r0 of M r + r0");
     } else {
-        track(inputVector3("centre", spec.center), "centre");
+        edits.track(inputVector3("centre", spec.center), "centre");
         reportItemRect(state.ui.itemProbe, "centre");
         if (spec.kind == ShapeKind::Sphere) {
-            track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"), "radius");
+            edits.track(ImGui::InputDouble("radius", &spec.radius, 0.01, 0.1, "%.6g"), "radius");
         } else {
-            track(inputVector3("semi-axes", spec.semiAxes), "semi-axes");
-            track(inputVector3("rotation axis", spec.rotationAxis), "rotation axis");
-            track(ImGui::InputDouble("angle (deg)", &spec.rotationAngleDeg, 1.0, 10.0, "%.4g"), "angle (deg)");
+            edits.track(inputVector3("semi-axes", spec.semiAxes), "semi-axes");
+            edits.track(inputVector3("rotation axis", spec.rotationAxis), "rotation axis");
+            edits.track(ImGui::InputDouble("angle (deg)", &spec.rotationAngleDeg, 1.0, 10.0, "%.4g"), "angle (deg)");
         }
     }
-    track(mediumCombo("medium", document, spec.medium), "medium");
+    edits.track(mediumCombo("medium", document, spec.medium), "medium");
     if (spec.general) generalShapeDetails(*spec.general);  // below the fields, which stay in view
-    if (changed) {
+    if (edits.changed()) {
         state.ui.status.attempt("not changed", [&] {
-            // One activation of one field (typing a number, dragging a value) is one undo step.
-            document.modifyShape(selected, spec, editedItem == editingItem);
-            editingItem = editedItem;
+            document.modifyShape(selected, spec, edits.continuesLast());
+            edits.applied();
         });
     }
-    if (!ImGui::IsAnyItemActive()) editingItem = 0;
+    edits.finish();
     if (ImGui::Button("Delete")) deleteSelected(state);
 }
 

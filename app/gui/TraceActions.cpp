@@ -1,5 +1,6 @@
 #include "gui/TraceActions.hpp"
 
+#include "transport/Emission.hpp"
 #include "transport/OpticalScene.hpp"
 
 #include <algorithm>
@@ -10,15 +11,20 @@ namespace dropscope::gui {
 
 namespace {
 
+TracedWith tracedNow(const AppState& state) {
+    return {state.scene.document().revision(), state.traces.fire.polarisation};
+}
+
 void startTrace(AppState& state, bool automatic) {
     TraceState& traces = state.traces;
     const SceneDocument& document = state.scene.document();
-    traces.firedRevision = document.revision();
+    traces.fired = tracedNow(state);
     if (document.sources().empty()) return state.ui.status.refuse("nothing to fire: add a source first (Fire panel)");
     TraceSettings settings;
     settings.photons = std::max<std::uint64_t>(traces.fire.photons, 1);
     settings.paths = std::min(traces.fire.paths, settings.photons);
     settings.seed = traces.fire.seed;
+    settings.transport.polarisation = traces.fire.polarisation;
     std::vector<ShapeId> slots;
     Scene scene = document.toScene(&slots);
     traces.pendingSlots = std::move(slots);
@@ -30,14 +36,16 @@ void startTrace(AppState& state, bool automatic) {
 void traceRayTree(AppState& state, bool automatic) {
     TraceState& traces = state.traces;
     const SceneDocument& document = state.scene.document();
-    traces.rayTreeRevision = document.revision();
+    traces.rayTreeTraced = tracedNow(state);
     const auto& sources = document.sources();
     if (sources.empty()) return state.ui.status.refuse("nothing to fire: add a source first (Fire panel)");
     const Source& source = sources[state.scene.selectedSource()];
     state.ui.status.attempt("ray tree failed", [&] {
         const OpticalScene optical(document.toScene());
         const Ray ray{source.origin, source.direction};
-        traces.rayTree = traceRayTree(optical, ray, 1.0, RayTreeSettings{});
+        RayTreeSettings settings;
+        settings.polarisation = traces.fire.polarisation;
+        traces.rayTree = traceRayTree(optical, ray, 1.0, settings, emittedPolarisation(source, source.direction));
         ++traces.shownId;
         state.view.layers.rayTree = true;
         if (!automatic) {
@@ -75,10 +83,10 @@ void updateTraces(AppState& state) {
             if (!traces.automatic) state.ui.status.say(text.str());
         }
     }
-    const std::uint64_t revision = state.scene.document().revision();
     if (!traces.fire.live) return;
-    if (traces.trace && !traces.job.running() && traces.firedRevision != revision) startTrace(state, true);
-    if (traces.rayTree && traces.rayTreeRevision != revision) traceRayTree(state, true);
+    const TracedWith now = tracedNow(state);
+    if (traces.trace && !traces.job.running() && traces.fired != now) startTrace(state, true);
+    if (traces.rayTree && traces.rayTreeTraced != now) traceRayTree(state, true);
 }
 
 void selectEvent(TraceState& traces, int path, int event) {

@@ -3,6 +3,7 @@
 #include "gui/TraceJob.hpp"
 #include "render/OctreeLayer.hpp"
 #include "transport/RayTree.hpp"
+#include "transport/SurfaceCrossing.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -16,7 +17,17 @@ struct FireSettings {
     std::uint64_t photons = 1000;
     std::uint64_t paths = 50;
     std::uint64_t seed = 1;
-    bool live = true;  // trace again when the scene changes, so paths follow moved droplets
+    // Stokes: every photon and ray-tree branch carries its Stokes vector; None: unpolarised Fresnel.
+    PolarisationModel polarisation = PolarisationModel::Stokes;
+    bool live = true;  // trace again when the scene or the polarisation model changes
+};
+
+// What "live" traces again for when it changes: the document's revision and the polarisation model.
+struct TracedWith {
+    std::uint64_t revision = 0;
+    PolarisationModel polarisation = PolarisationModel::Stokes;
+
+    bool operator==(const TracedWith&) const = default;
 };
 
 // A finished trace and how its compact shape ids map back to the document's slots.
@@ -32,12 +43,12 @@ struct TraceState {
     FireSettings fire;
     TraceJob job;
     std::vector<ShapeId> pendingSlots;  // slotOfShape of the run in progress
-    std::uint64_t firedRevision = 0;    // the document revision the last run traced
+    TracedWith fired;                   // what the last run traced
     bool automatic = false;             // the run in progress was started by "live", not the user
 
-    std::optional<TraceShown> trace;    // the last finished Monte Carlo run
-    std::optional<RayTree> rayTree;     // the last ray fired as a tree
-    std::uint64_t rayTreeRevision = 0;  // the document revision it was traced in
+    std::optional<TraceShown> trace;  // the last finished Monte Carlo run
+    std::optional<RayTree> rayTree;   // the last ray fired as a tree
+    TracedWith rayTreeTraced;         // what it was traced with
     // Which results are shown: moves on whenever `trace` or `rayTree` is replaced or dropped, so the 3D
     // view knows to draw them again (as SceneDocument::revision() does for the scene).
     std::uint64_t shownId = 0;

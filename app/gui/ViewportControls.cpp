@@ -4,12 +4,14 @@
 #include "gui/PanelLayout.hpp"
 #include "gui/Picking.hpp"
 #include "gui/ShapeDescription.hpp"
+#include "gui/SourceReference.hpp"
 #include "scene/ShapeSpec.hpp"
 
 #include <imgui.h>
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 namespace dropscope::gui {
 
@@ -141,17 +143,19 @@ void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
     const auto on = rayPlaneAxis(ray, state.placement.plane.axis, handlePlane_);
     if (!on) return;
     const Point target = *on + grabOffset_;
+    std::string note;  // what aiming did to the polarisation reference
     if (handle_ == SourceHandle::Origin) {
         source.origin = target;
     } else {
         const Direction direction(target - source.origin);
         if (!direction) return;
-        source.direction = direction;
+        note = aimSource(source, direction);
     }
     state.ui.status.attempt("source not changed", [&] {
         state.scene.document().setSources(std::move(sources), movedThisDrag_);
         movedThisDrag_ = true;
-        state.ui.status.say(handle_ == SourceHandle::Origin ? "moving the source" : "aiming the source");
+        const std::string done = handle_ == SourceHandle::Origin ? "moving the source" : "aiming the source";
+        state.ui.status.say(note.empty() ? done : done + "; " + note);
     });
 }
 
@@ -201,16 +205,20 @@ void ViewportControls::sourceKeys(AppState& state, const Ray& ray) {
     const auto point = pointUnderCursor(state, ray);
     if (!point) return state.ui.status.refuse("nothing under the cursor to move or aim the source to");
     Source& source = sources[state.scene.selectedSource()];
+    std::string note;  // what aiming did to the polarisation reference
     if (move) {
         source.origin = *point;
     } else {
         const Direction direction(*point - source.origin);
         if (!direction) return state.ui.status.refuse("the source is at that point already");
-        source.direction = direction;
+        note = aimSource(source, direction);
     }
-    state.scene.document().setSources(std::move(sources));
-    state.ui.status.say(move ? "source moved to the point under the cursor"
-                             : "source aimed at the point under the cursor");
+    state.ui.status.attempt("source not changed", [&] {
+        state.scene.document().setSources(std::move(sources));
+        const std::string done =
+            move ? "source moved to the point under the cursor" : "source aimed at the point under the cursor";
+        state.ui.status.say(note.empty() ? done : done + "; " + note);
+    });
 }
 
 }  // namespace dropscope::gui

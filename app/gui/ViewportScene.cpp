@@ -11,6 +11,13 @@ namespace {
 // The marker of the event the path inspector steps through, as a multiple of the ordinary markers.
 constexpr double kCurrentEventMarkerScale = 2.5;
 
+// The event the path inspector is at, if any.
+const Event* currentEvent(const TraceState& traces) {
+    if (!traces.trace || traces.selectedPath < 0) return nullptr;
+    const auto& events = traces.trace->outcome.result.paths[static_cast<std::size_t>(traces.selectedPath)].events;
+    return events.empty() ? nullptr : &events[static_cast<std::size_t>(traces.selectedEvent)];
+}
+
 }  // namespace
 
 Eigen::AlignedBox3d viewBounds(const AppState& state, const Eigen::AlignedBox3d& shapes) {
@@ -56,15 +63,13 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
     if (traces.trace) inputs.paths = &traces.trace->outcome.result.paths;
     if (traces.rayTree) inputs.rayTree = &*traces.rayTree;
     inputs.traversal = traversal;
+    inputs.currentEvent = currentEvent(traces);
     layers_ = render::buildSceneLayers(inputs, options, anchor);
 
-    if (traces.trace && traces.selectedPath >= 0) {
-        const auto& events = traces.trace->outcome.result.paths[static_cast<std::size_t>(traces.selectedPath)].events;
-        if (!events.empty()) {
-            const double radius = kCurrentEventMarkerScale * render::kMarkerRadius * bounds_.diagonal().norm();
-            const Point at = events[static_cast<std::size_t>(traces.selectedEvent)].position;
-            layers_.markers.push_back(render::sphereInstance(at, radius, anchor, render::kHighlight));
-        }
+    if (inputs.currentEvent) {
+        const double radius = kCurrentEventMarkerScale * render::kMarkerRadius * bounds_.diagonal().norm();
+        layers_.markers.push_back(
+            render::sphereInstance(inputs.currentEvent->position, radius, anchor, render::kHighlight));
     }
     if (const auto handles = sourceHandles(state, bounds_)) {
         layers_.markers.push_back(

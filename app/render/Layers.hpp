@@ -5,6 +5,7 @@
 #include "render/Guides.hpp"
 #include "render/OctreeLayer.hpp"
 #include "render/PathLayer.hpp"
+#include "render/PolarisationEllipse.hpp"
 #include "render/RayTreeLayer.hpp"
 #include "render/SceneLayers.hpp"
 #include "render/SourceGlyphs.hpp"

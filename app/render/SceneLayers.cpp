@@ -1,6 +1,7 @@
 #include "render/SceneLayers.hpp"
 
 #include "render/Guides.hpp"
+#include "render/PolarisationEllipse.hpp"
 #include "render/RayTreeLayer.hpp"
 #include "render/SourceGlyphs.hpp"
 
@@ -37,6 +38,11 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
     LineBatch& lines = layers.lines;
     const std::optional<SlicePlane>& slice = options.slice;
     const double size = inputs.bounds.diagonal().norm();
+    if (const Event* event = inputs.currentEvent; event && event->polarisation) {
+        addSliced(lines, slice, anchor, [&](LineBatch& batch) {
+            addPolarisationEllipse(batch, event->position, event->direction, *event->polarisation, kEllipseSize * size);
+        });
+    }
     if (options.traversal && inputs.traversal) {
         addSliced(lines, slice, anchor, [&](LineBatch& batch) { addTraversal(batch, *inputs.traversal); });
     }

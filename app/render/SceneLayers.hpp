@@ -46,6 +46,9 @@ struct LayerInputs {
     const std::vector<PhotonPath>* paths = nullptr;
     const RayTree* rayTree = nullptr;
     const RayTraversal* traversal = nullptr;
+    // The event the path inspector is at: its polarisation ellipse is drawn there when it carries a
+    // polarisation (PolarisationEllipse.hpp).
+    const Event* currentEvent = nullptr;
 };
 
 // Sizes of the drawn helpers, as fractions of the diagonal of the scene's bounds.
@@ -53,6 +56,9 @@ inline constexpr double kEscapeLength = 0.5;  // escaping paths and branches go 
 inline constexpr double kMarkerRadius = 0.006;
 inline constexpr double kSourceGlyph = 0.15;  // a source's arrow
 inline constexpr double kAxisLength = 0.25;
+// The polarisation ellipse's semi-major axis: about five times the current event's marker (2.5
+// kMarkerRadius), so it shows well around it.
+inline constexpr double kEllipseSize = 0.08;
 
 struct SceneLayers {
     LineBatch lines;
@@ -63,8 +69,9 @@ struct SceneLayers {
 Eigen::AlignedBox3d sceneBounds(const std::vector<std::unique_ptr<Shape>>& shapes);
 
 // The line batch and the markers of every layer switched on. Where lines coincide the first one added
-// wins the depth test (GL_LESS), so they go in order of importance: traversal, ray tree, paths,
-// sources, axes, octree cells, grid. With a slice plane, the hidden side is left out.
+// wins the depth test (GL_LESS), so they go in order of importance: polarisation ellipse (its line along
+// the direction lies on the path), traversal, ray tree, paths, sources, axes, octree cells, grid. With a slice plane,
+// the hidden side is left out.
 SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& options, const Anchor& anchor);
 
 // Hands the shapes (the selected one highlighted; with a slice plane only those on its kept side) and the

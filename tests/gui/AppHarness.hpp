@@ -4,10 +4,14 @@
 #include "scene/SceneLoader.hpp"
 #include "snapshot/OsmesaContext.hpp"
 
+#include <gtest/gtest.h>
+#include <imgui.h>
+
 #include <chrono>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -81,12 +85,59 @@ public:
         input_.ctrl = input_.shift = false;
         frame();
     }
+    // Where the named field was drawn in the last frame; a failure and nothing when it was not.
+    std::optional<ItemRect> item(const std::string& name) {
+        const auto found = itemRects_.find(name);
+        EXPECT_NE(found, itemRects_.end()) << "'" << name << "' was not drawn";
+        if (found == itemRects_.end()) return std::nullopt;
+        return found->second;
+    }
+    // Clicks the named field, `dx` pixels into it (its middle when negative), halfway down.
+    bool clickItem(const std::string& name, float dx = -1.0f) {
+        const auto rect = item(name);
+        if (!rect) return false;
+        click(dx < 0.0f ? 0.5f * (rect->minX + rect->maxX) : rect->minX + dx, 0.5f * (rect->minY + rect->maxY));
+        return true;
+    }
+    // Picks "combo: choice" in the named combo box, as a user does: a click opens it, a click chooses.
+    bool choose(const std::string& combo, const std::string& choice) {
+        if (!clickItem(combo)) return false;
+        frames(2);  // the popup is laid out in its first frame and shown in the second
+        return clickItem(combo + ": " + choice);
+    }
+    // Types `text` into the named field, `dx` pixels into it (the first of several numbers), replacing what
+    // it held, and leaves it with Enter.
+    bool typeInto(const std::string& name, const std::string& text, float dx = 8.0f) {
+        if (!clickItem(name, dx)) return false;
+        EXPECT_TRUE(ImGui::GetIO().WantTextInput) << "the click did not reach " << name;
+        press('A', true);  // select the whole number
+        for (const char c : text) {
+            input_.characters.push_back(static_cast<unsigned>(c));
+            frame();
+        }
+        press(kKeyEnter);
+        return true;
+    }
     // Frames until the background trace has delivered (a generous bound: a hang check, not a timing).
     bool waitForTrace(std::chrono::seconds limit = std::chrono::seconds(60)) {
         const auto end = std::chrono::steady_clock::now() + limit;
         do {
             frame();
             if (!state().traces.job.running() && state().traces.trace) return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        } while (std::chrono::steady_clock::now() < end);
+        return false;
+    }
+    // Frames until a trace started since the results numbered `shownBefore` (TraceState::shownId) were
+    // shown has delivered and is shown: a live trace, or one fired while another was shown.
+    bool waitForNewTrace(std::uint64_t shownBefore, std::chrono::seconds limit = std::chrono::seconds(60)) {
+        const auto end = std::chrono::steady_clock::now() + limit;
+        do {
+            frame();
+            if (!state().traces.job.running()) {
+                frame();  // takes the result, should the run have ended after this frame took none
+                if (state().traces.shownId != shownBefore) return true;
+            }
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         } while (std::chrono::steady_clock::now() < end);
         return false;

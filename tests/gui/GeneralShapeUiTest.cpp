@@ -8,7 +8,6 @@
 #include "snapshot/Image.hpp"
 
 #include <gtest/gtest.h>
-#include <imgui.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -54,17 +53,7 @@ Point translationOf(AppHarness& harness, ShapeId id) {
 // Types `text` into the first box (x) of the shape editor's centre field and leaves the field.
 void typeCenterX(AppHarness& harness, const char* text) {
     harness.frame();  // the editor of a shape selected by the last frame's click is drawn in the next one
-    const auto field = harness.itemRects().find("centre");
-    ASSERT_NE(field, harness.itemRects().end()) << "the shape editor shows no centre field";
-    const float y = 0.5f * (field->second.minY + field->second.maxY);
-    harness.click(field->second.minX + 8.0f, y);
-    ASSERT_TRUE(ImGui::GetIO().WantTextInput) << "the click did not reach the centre field";
-    harness.press('A', true);  // select the whole number
-    for (const char* c = text; *c; ++c) {
-        harness.input().characters.push_back(static_cast<unsigned>(*c));
-        harness.frame();
-    }
-    harness.press(kKeyEnter);
+    harness.typeInto("centre", text);
 }
 
 TEST(GeneralShapeUi, ClickedParametricShapeMovesByItsCenterFieldInOneUndoStep) {

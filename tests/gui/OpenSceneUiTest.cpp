@@ -41,6 +41,7 @@ TEST(OpenSceneUi, OpeningASceneStartsThePanelsAfresh) {
     panels.angularPlot.xView = plot::AxisRange{10.0, 20.0};
     panels.angularPlot.exportPath = "elsewhere.csv";
     panels.filePrompt.screenshot.panels = true;
+    harness.state().view.layers.octree = true;  // opens the Octree panel (collapsed at first), which shows them
     harness.frame();
     const auto cloudLevels = harness.state().scene.document().octree().statistics();
     ASSERT_GE(cloudLevels.size(), 3u);
