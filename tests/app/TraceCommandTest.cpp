@@ -263,7 +263,8 @@ TEST_F(TraceCommand, PolarisationNoneKeepsTheFilesOfTheUnpolarisedModel) {
     EXPECT_EQ(summary()["polarisation"], "none");
     EXPECT_EQ(angular("out", false).size(), 12u);
     for (const std::string& line : lines(path("out/paths.jsonl"))) {
-        for (const Json& event : Json::parse(line)["events"]) EXPECT_FALSE(event.contains("stokes")) << line;
+        const Json photon = Json::parse(line);
+        for (const Json& event : photon["events"]) EXPECT_FALSE(event.contains("stokes")) << line;
     }
 }
 
