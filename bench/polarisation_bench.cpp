@@ -32,7 +32,7 @@ using dropscope::bench::parseCount;
 
 struct Options {
     std::uint64_t photons = 200000;      // per run, lone sphere and default scene
-    std::uint64_t cloudPhotons = 50000;  // per run, the cloud (about 60 interfaces each)
+    std::uint64_t cloudPhotons = 50000;  // per run, the cloud (slower photons: about 8.5 interfaces each)
     int repeat = 7;
 };
 

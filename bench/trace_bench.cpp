@@ -7,7 +7,9 @@
 // figures and how to read them.
 //
 // Run: build/bench/trace_bench [--photons 2e5] [--repeat 5] [--threads 2] [--reference-photons 2e4]
-//                              [--seed 1] [--scene FILE]
+//                              [--seed 1] [--scene FILE] [--polarisation none|stokes]
+// The photons are traced without polarisation unless asked (the figures of docs/performance.md were
+// measured so; polarisation_bench measures what Stokes vectors cost).
 #include "CloudScene.hpp"
 #include "geometry/Sphere.hpp"
 #include "octree/CountArgument.hpp"
@@ -54,6 +56,7 @@ struct Options {
     std::uint64_t referencePhotons = 20000;  // photons whose segments are replayed through firstHit
     std::uint64_t seed = 1;
     std::optional<std::string> scene;  // a scene file instead of the built-in cloud
+    PolarisationModel polarisation = PolarisationModel::None;
 };
 
 Options parseOptions(int argc, char** argv) {
@@ -63,7 +66,7 @@ Options parseOptions(int argc, char** argv) {
         if (flag == "--help" || flag == "-h") {
             std::cout << "trace_bench [--photons 2e5] [--repeat 5 (median of)] [--threads 2 (against 1)]\n"
                          "            [--reference-photons 2e4] [--seed 1] [--scene FILE (default: the built-in 1e5 "
-                         "cloud)]\n";
+                         "cloud)]\n            [--polarisation none|stokes (default none)]\n";
             std::exit(0);
         }
         if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
@@ -80,6 +83,8 @@ Options parseOptions(int argc, char** argv) {
             options.seed = parseCount(flag, value);
         else if (flag == "--scene")
             options.scene = value;
+        else if (flag == "--polarisation" && (std::string(value) == "none" || std::string(value) == "stokes"))
+            options.polarisation = std::string(value) == "none" ? PolarisationModel::None : PolarisationModel::Stokes;
         else
             throw std::invalid_argument("unknown option " + flag);
     }
@@ -171,10 +176,11 @@ std::vector<ThreadRuns> timeTransport(const OpticalScene& optical, const std::ve
     if (options.threads > 1) runs.push_back({options.threads, {}, {}});
     TraceSettings settings;
     settings.seed = options.seed;
+    settings.transport.polarisation = options.polarisation;
     settings.photons = std::min<std::uint64_t>(options.photons, 2000);  // warm-up: thread pool, caches
     for (const ThreadRuns& run : runs) {
         settings.threads = run.threads;
-        runTrace(optical, sources, settings, standardTallies());
+        runTrace(optical, sources, settings, standardTallies(180, options.polarisation));
     }
     settings.photons = options.photons;
     identical = true;
@@ -184,7 +190,7 @@ std::vector<ThreadRuns> timeTransport(const OpticalScene& optical, const std::ve
             std::cerr << "  trace: " << run.threads << " thread(s), run " << r + 1 << '/' << options.repeat << '\n';
             settings.threads = run.threads;
             const double cpuStart = processCpuSeconds();
-            TraceResult result = runTrace(optical, sources, settings, standardTallies());
+            TraceResult result = runTrace(optical, sources, settings, standardTallies(180, options.polarisation));
             run.cpuSeconds.push_back(processCpuSeconds() - cpuStart);
             run.seconds.push_back(result.seconds);
             identical = identical && !result.partial && (!first || sameTallies(*first, result));
@@ -199,12 +205,13 @@ std::vector<ThreadRuns> timeTransport(const OpticalScene& optical, const std::ve
 // and the leaving direction of each reflect, refract and TIR (tangent passes are not recorded; they
 // have measure zero), in tracing order.
 std::vector<Ray> segmentStarts(const OpticalScene& optical, const std::vector<Source>& sources, std::uint64_t count,
-                               std::uint64_t seed) {
+                               std::uint64_t seed, PolarisationModel polarisation) {
     TraceSettings settings;
     settings.photons = count;
     settings.seed = seed;
     settings.threads = 1;
     settings.paths = count;
+    settings.transport.polarisation = polarisation;  // the model timed: its choices make the segments
     const TraceResult recorded = runTrace(optical, sources, settings, TallySet{});
     std::vector<Ray> rays;
     for (const PhotonPath& path : recorded.paths) {
@@ -343,16 +350,18 @@ int main(int argc, char** argv) {
         BuildTimes build;
         const std::unique_ptr<OpticalScene> optical = buildOpticalScene(scene, options.repeat, build);
         std::cerr << "reference: segments of " << options.referencePhotons << " photons\n";
-        const std::vector<Ray> rays = segmentStarts(*optical, scene.sources, options.referencePhotons, options.seed);
+        const std::vector<Ray> rays =
+            segmentStarts(*optical, scene.sources, options.referencePhotons, options.seed, options.polarisation);
         FateTally tally;
         bool identical = false;
         const std::vector<ThreadRuns> runs = timeTransport(*optical, scene.sources, options, tally, identical);
         std::cerr << "reference: firstHit on " << rays.size() << " segments\n";
         const FirstHitTimes hits = timeFirstHits(optical->octree(), rays, options);
 
-        std::cout << "trace_bench: " << name << ", photons " << options.photons << ", repeat " << options.repeat
-                  << ", threads 1 and " << options.threads << ", seed " << options.seed << ", reference photons "
-                  << options.referencePhotons << '\n';
+        std::cout << "trace_bench: " << name << ", polarisation " << polarisationModelName(options.polarisation)
+                  << ", photons " << options.photons << ", repeat " << options.repeat << ", threads 1 and "
+                  << options.threads << ", seed " << options.seed << ", reference photons " << options.referencePhotons
+                  << '\n';
         printScene(scene, name, build, parseSeconds, builtIn);
         printPhotons(tally, builtIn ? std::exp(-builtInOpticalDepth(scene)) : -1.0);
         printTransport(runs, tally);

@@ -138,7 +138,7 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
         ->add_option("--polarisation", options.polarisation,
                      "stokes: Stokes vectors through every interface, Stokes columns in angular.csv; none: unpolarised "
                      "Fresnel reflectance, as before polarisation (the default with --fresnel schlick)")
-        ->default_str("stokes")
+        ->default_str("stokes; none with --fresnel schlick")
         ->check(CLI::IsMember({"stokes", "none"}));
     command->add_option("--out", options.outDir, "Output folder (created): summary.json, angular.csv, paths.jsonl")
         ->required();

@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -17,9 +18,9 @@ namespace {
 
 // Escapes per steradian in each angular bin, as a fraction of the photons traced (angular.csv's
 // fraction_per_sr, the quantity whose peaks are the rainbows), at the bin's centre; with polarisation, below
-// it the degree of linear polarisation and -Q/I in the scattering-plane frame (-P12/P11 for unpolarised
-// light: > 0 polarised across the plane) (NaN, not drawn, in empty bins).
-plot::Figure angularFigure(const AngularTally& angular) {
+// it the degree of linear polarisation and -Q/I in the scattering-plane frame (> 0 polarised across the plane;
+// named -P12/P11 when every source is unpolarised, which it then is) (NaN, not drawn, in empty bins).
+plot::Figure angularFigure(const AngularTally& angular, bool unpolarisedSources) {
     const AngularTally::Columns columns = angular.columns();
     std::vector<double> centres;
     for (int bin = 0; bin < angular.bins(); ++bin) {
@@ -36,12 +37,13 @@ plot::Figure angularFigure(const AngularTally& angular) {
         ratio.push_back(empty ? std::nan("") : -columns.stokesQ[bin] / columns.fraction[bin]);
         dolp.push_back(empty ? std::nan("") : columns.dolp[bin]);
     }
-    // DoLP first, so -P12/P11 is drawn over it: in the scattering-plane frame U averages out, and where
-    // -Q/I > 0 the two coincide (DoLP = |Q|/I); drawn last, DoLP hid -P12/P11 there.
-    figure.subPlots.push_back({"polarisation",
-                               {{"DoLP", centres, std::move(dolp)}, {"-P12/P11 (-Q/I)", centres, std::move(ratio)}},
-                               plot::Scale::Linear,
-                               plot::AxisRange{-1.0, 1.0}});
+    // DoLP first, so -Q/I is drawn over it: in the scattering-plane frame U averages out, and where
+    // -Q/I > 0 the two coincide (DoLP = |Q|/I); drawn last, DoLP hid -Q/I there.
+    figure.subPlots.push_back(
+        {"polarisation",
+         {{"DoLP", centres, std::move(dolp)}, {unpolarisedSources ? "-P12/P11" : "-Q/I", centres, std::move(ratio)}},
+         plot::Scale::Linear,
+         plot::AxisRange{-1.0, 1.0}});
     return figure;
 }
 
@@ -74,9 +76,13 @@ void drawResultsPanel(const TraceState& traces, UiState& ui) {
         }
     }
     ImGui::End();
-    if (traces.trace) {
-        drawPlotWindow(angularFigure(traces.trace->outcome.result.tallies.get<AngularTally>()), plotState, ui.status,
-                       ui.itemProbe);
+    if (traces.trace && plotState.open) {
+        const std::vector<Source>& sources = traces.trace->outcome.scene.sources;
+        const bool unpolarised = std::all_of(sources.begin(), sources.end(), [](const Source& source) {
+            return source.polarisation.kind == PolarisationKind::Unpolarised;
+        });
+        drawPlotWindow(angularFigure(traces.trace->outcome.result.tallies.get<AngularTally>(), unpolarised), plotState,
+                       ui.status, ui.itemProbe);
     }
 }
 

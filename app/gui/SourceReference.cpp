@@ -1,6 +1,7 @@
 #include "gui/SourceReference.hpp"
 
 #include "optics/OpticsTolerance.hpp"
+#include "transport/Emission.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -22,23 +23,21 @@ std::string vectorText(const Eigen::Vector3d& v) {
 }  // namespace
 
 Eigen::Vector3d perpendicularReference(const Direction& direction) {
-    Eigen::Index least = 0;
-    direction.vector().cwiseAbs().minCoeff(&least);
-    const Eigen::Vector3d axis = Eigen::Vector3d::Unit(least);
-    return (axis - axis.dot(direction.vector()) * direction.vector()).normalized();
+    // The least aligned axis's part across the direction: perpendicularBasis's v.
+    Eigen::Vector3d u;
+    Eigen::Vector3d v;
+    perpendicularBasis(direction, u, v);
+    return v;
 }
 
 std::string keepReferencePerpendicular(Source& source) {
     Eigen::Vector3d& reference = source.polarisation.reference;
     if (source.polarisation.kind == PolarisationKind::Unpolarised || source.type == SourceType::PointSource) return {};
     const Eigen::Vector3d& k = source.direction.vector();
-    const double length = reference.norm();
-    if (reference.allFinite() && length > 0.0 &&
-        std::abs(reference.dot(k)) <= tolerance::kReferencePerpendicularCosine * length) {
-        return {};
-    }
-    const Eigen::Vector3d across = reference - reference.dot(k) * k;
-    if (reference.allFinite() && length > 0.0 && across.norm() > kAlongDirection * length) {
+    const Direction unit(reference);  // normalised without overflow or underflow; invalid for zero or non-finite
+    if (unit && std::abs(unit.dot(k)) <= tolerance::kReferencePerpendicularCosine) return {};
+    const Eigen::Vector3d across = unit ? Eigen::Vector3d(unit.vector() - unit.dot(k) * k) : Eigen::Vector3d::Zero();
+    if (unit && across.norm() > kAlongDirection) {
         reference = across.normalized();
         return "polarisation reference projected across the direction: " + vectorText(reference);
     }

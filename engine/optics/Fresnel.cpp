@@ -19,11 +19,9 @@ double squared(double x) { return x * x; }
 }  // namespace
 
 FresnelReflectance fresnelReflectance(double cosIncidence, double n1, double n2) {
-    const double cosT = transmittedCosine(cosIncidence, n1, n2);
-    if (cosT < 0.0) return {1.0, 1.0};
-    const double s = squared((n1 * cosIncidence - n2 * cosT) / (n1 * cosIncidence + n2 * cosT));
-    const double p = squared((n1 * cosT - n2 * cosIncidence) / (n1 * cosT + n2 * cosIncidence));
-    return {s, p};
+    const FresnelAmplitudes a = fresnelAmplitudes(cosIncidence, n1, n2);
+    if (a.totalInternalReflection) return {1.0, 1.0};
+    return {std::norm(a.rs), std::norm(a.rp)};
 }
 
 FresnelAmplitudes fresnelAmplitudes(double cosIncidence, double n1, double n2, bool totalReflection) {

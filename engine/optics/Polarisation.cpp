@@ -54,10 +54,7 @@ PlaneOfIncidence planeOfIncidence(const Polarisation& light, const Direction& in
 }
 
 double polarisedReflectance(const PlaneOfIncidence& plane, const FresnelAmplitudes& amplitudes) {
-    const double rs2 = std::norm(amplitudes.rs);
-    const double rp2 = std::norm(amplitudes.rp);
-    const StokesVector& s = plane.stokes;
-    return (0.5 * (rp2 + rs2) * s[0] + 0.5 * (rp2 - rs2) * s[1]) / s[0];
+    return throughDiagonalElement(plane.stokes, amplitudes.rp, amplitudes.rs, 1.0)[0] / plane.stokes[0];
 }
 
 Polarisation reflectedPolarisation(const PlaneOfIncidence& plane, const FresnelAmplitudes& amplitudes,

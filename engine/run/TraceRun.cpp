@@ -7,6 +7,7 @@
 #include <exception>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace dropscope {
 
@@ -50,6 +51,13 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     const bool polarised = settings.transport.polarisation == PolarisationModel::Stokes;
     if (polarised && settings.transport.fresnel != FresnelModel::Exact) {
         throw std::invalid_argument("Schlick's approximation is unpolarised: trace it without polarisation");
+    }
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+        try {
+            checkPolarisation(sources[i]);
+        } catch (const std::invalid_argument& error) {
+            throw std::invalid_argument("source " + std::to_string(i) + ": " + error.what());
+        }
     }
 
     TraceResult result;

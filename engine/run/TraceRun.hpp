@@ -53,11 +53,12 @@ struct TraceControl {
 };
 
 // Traces settings.photons photons and scores each into `tallies` (unscored tallies: their bins and
-// filters; standardTallies() is what `dropscope trace` counts). Photon i comes from
+// filters; standardTallies is what `dropscope trace` counts). Photon i comes from
 // sources[i % sources.size()] with the random numbers PhotonRandom(seed, i). Each thread scores into
 // its own emptyCopy() of the tallies, merged at the end; tallies merge exactly (tally/Tally.hpp), so
-// the result is the same for any thread count. Throws std::invalid_argument when there are no sources, or
-// for PolarisationModel::Stokes with Schlick's approximation.
+// the result is the same for any thread count. Throws std::invalid_argument when there are no sources, for a
+// source whose polarisation checkPolarisation refuses, or for PolarisationModel::Stokes with Schlick's
+// approximation.
 TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sources, const TraceSettings& settings,
                      const TallySet& tallies, const TraceControl& control = {});
 

@@ -48,10 +48,9 @@ std::string shortText(double value) {
 }  // namespace
 
 void checkPolarisationReference(const Eigen::Vector3d& reference, const Direction& direction) {
-    if (!reference.allFinite() || reference.isZero(0.0)) {
-        throw std::invalid_argument("must be a finite, non-zero vector");
-    }
-    const double cosine = std::abs(reference.normalized().dot(direction.vector()));
+    const Direction unit(reference);  // normalised without overflow or underflow; invalid for zero or non-finite
+    if (!unit) throw std::invalid_argument("must be a finite, non-zero vector");
+    const double cosine = std::abs(unit.dot(direction.vector()));
     if (cosine > tolerance::kReferencePerpendicularCosine) {
         throw std::invalid_argument("must be perpendicular to the direction (their cosine is " + shortText(cosine) +
                                     ")");
@@ -61,11 +60,11 @@ void checkPolarisationReference(const Eigen::Vector3d& reference, const Directio
 void checkPolarisationStokes(const StokesVector& stokes) {
     if (!stokes.allFinite()) throw std::invalid_argument("must be four finite numbers [I, Q, U, V]");
     if (!(stokes[0] > 0.0)) throw std::invalid_argument("I must be > 0");
-    const double polarised = stokes.tail<3>().squaredNorm();
-    const double power = stokes[0] * stokes[0];
-    if (polarised > power * (1.0 + tolerance::kStokesDegreeSlack)) {
+    // (Q/I)^2 + (U/I)^2 + (V/I)^2 <= 1: scaled first, so that no square overflows or underflows.
+    const double degreeSquared = (stokes.tail<3>() / stokes[0]).squaredNorm();
+    if (!(degreeSquared <= 1.0 + tolerance::kStokesDegreeSlack)) {
         throw std::invalid_argument("Q^2 + U^2 + V^2 must not exceed I^2 (the degree of polarisation is " +
-                                    shortText(std::sqrt(polarised / power)) + ")");
+                                    shortText(std::sqrt(degreeSquared)) + ")");
     }
 }
 

@@ -5,8 +5,9 @@
 
 namespace dropscope {
 
-// What `dropscope trace` and the app count: a FateTally and an AngularTally of `angularBins` bins, with
-// the Stokes columns when the photons carry polarisation (it must be the run's TransportSettings model).
-TallySet standardTallies(int angularBins = 180, PolarisationModel polarisation = PolarisationModel::Stokes);
+// What `dropscope trace` and the app count: a FateTally and an AngularTally of `angularBins` bins (180 in the
+// app), with the Stokes columns when the photons carry polarisation: `polarisation` must be the run's
+// TransportSettings model (a Stokes tally given unpolarised photons throws std::logic_error).
+TallySet standardTallies(int angularBins, PolarisationModel polarisation);
 
 }  // namespace dropscope

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace dropscope {
 
@@ -23,8 +24,10 @@ Polarisation unpolarisedLight(const Direction& direction) {
 Polarisation emittedPolarisation(const Source& source, const Direction& direction) {
     const SourcePolarisation& polarisation = source.polarisation;
     if (polarisation.kind == PolarisationKind::Unpolarised) return unpolarisedLight(direction);
-    const Eigen::Vector3d& r = polarisation.reference;
-    return {polarisation.unitStokes(), (r - r.dot(direction.vector()) * direction.vector()).normalized()};
+    const Direction r(polarisation.reference);  // normalised first: any finite length
+    const Direction across(r.vector() - r.dot(direction.vector()) * direction.vector());
+    if (!across) throw std::invalid_argument("a polarisation reference must be a finite vector across the direction");
+    return {polarisation.unitStokes(), across.vector()};
 }
 
 Ray emitPhoton(const Source& source, PhotonRandom& random) {

@@ -19,7 +19,8 @@ Ray emitPhoton(const Source& source, PhotonRandom& random);
 
 // The polarisation of a photon leaving `source` along `direction`, with I = 1: the source's state in its
 // reference frame (made exactly perpendicular to `direction`), or unpolarised light in the frame
-// unpolarisedLight gives. Draws no random numbers.
+// unpolarisedLight gives. Draws no random numbers. Throws std::invalid_argument for a reference that is not
+// finite or lies along `direction` (checkPolarisation refuses those sources first).
 Polarisation emittedPolarisation(const Source& source, const Direction& direction);
 
 // Unpolarised light of unit power along `direction`, its reference the u of perpendicularBasis.

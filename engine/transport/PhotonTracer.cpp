@@ -26,7 +26,8 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     Direction direction = emitted.direction;
     ShapeId region = scene.regionAt(position, direction);
     std::optional<Polarisation> light;
-    if (settings.polarisation == PolarisationModel::Stokes) light = polarisation.value_or(unpolarisedLight(direction));
+    if (settings.polarisation == PolarisationModel::Stokes)
+        light = polarisation ? *polarisation : unpolarisedLight(direction);
     const auto observe = [&](const Event& event) {
         if (observer) observer->event(event, state);
     };

@@ -56,7 +56,7 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
     const MediumId startMedium = scene.mediumIdOf(startRegion);
     Branch start{ray.origin, ray.direction, startRegion, weight, 0, 0, std::nullopt};
     if (polarised) {
-        start.light = polarisation.value_or(unpolarisedLight(ray.direction));
+        start.light = polarisation ? *polarisation : unpolarisedLight(ray.direction);
         start.light->stokes *= weight;
     }
     Event emission{EventType::Emit, ray.origin,  ray.direction, OpticalScene::kAmbient,

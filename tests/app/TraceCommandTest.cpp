@@ -277,7 +277,7 @@ TEST_F(TraceCommand, StokesColumnsAreSharesOfThePhotonsAndDolpTheirRatio) {
         EXPECT_NEAR(row.dolp, row.fraction > 0 ? std::hypot(row.q, row.u) / row.fraction : 0.0, 1e-15);
     }
     // Unpolarised light scattered by water drops and a glass cell is polarised across the scattering plane
-    // near the rainbow (-Q > 0 between 135 and 145 degrees).
+    // inside the primary bow (-Q > 0 in the 140-150 and 150-160 degree bins).
     const std::vector<AngularRow> rows = angular();
     EXPECT_LT(rows[14].q + rows[15].q, 0.0);
 }

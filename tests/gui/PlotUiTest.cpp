@@ -94,7 +94,7 @@ TEST_F(PlotUi, ExportWritesOneRowPerAngularBin) {
         << harness_.state().ui.status.text();
     const std::vector<std::string> lines = linesOf(file);
     ASSERT_EQ(lines.size(), 1u + static_cast<std::size_t>(angular().bins()));
-    EXPECT_EQ(lines[0], "scattering angle (deg),fraction per sr,DoLP,-P12/P11 (-Q/I)");
+    EXPECT_EQ(lines[0], "scattering angle (deg),fraction per sr,DoLP,-P12/P11");
     EXPECT_EQ(lines[1].substr(0, 4), "0.5,");
     EXPECT_EQ(lines[180].substr(0, 6), "179.5,");
     std::filesystem::remove(file);

@@ -204,7 +204,9 @@ TEST(TotalInternalReflection, AFresnelRhombTurnsLinearLightAt45DegreesCircular) 
         light.reference = Eigen::Vector3d(light.reference.x(), light.reference.y(), -light.reference.z());
     }
     EXPECT_NEAR(light.stokes[0], 1.0, 1e-14);
-    EXPECT_NEAR(std::abs(light.stokes[3]), 1.0, 1e-6);  // |V| = I: circular
+    // Circular, right-handed: p lags s by delta per reflection, so E_par E_perp* = e^(-i 2 delta) / 2 and
+    // V = -2 Im(E_par E_perp*) = sin(2 delta) = +I (P2).
+    EXPECT_NEAR(light.stokes[3], 1.0, 1e-6);
     EXPECT_NEAR(light.stokes[1], 0.0, 1e-6);
     EXPECT_NEAR(light.stokes[2], 0.0, 2e-3);  // cos(90.03 degrees)
 }

@@ -27,7 +27,7 @@ std::string angularCsv(const ResultReport& report) {
 
 TEST(TraceFiles, NoPhotonTracedGivesNullFractionsAndAPartialSummary) {
     TraceResult result;
-    result.tallies = standardTallies(4);
+    result.tallies = standardTallies(4, PolarisationModel::Stokes);
     result.requested = 1000;
     result.partial = true;
     result.threads = 3;
@@ -65,7 +65,7 @@ TEST(TraceFiles, WithoutPolarisationTheAngularTableKeepsItsFourColumns) {
 
 TEST(TraceFiles, SummaryKeysComeInTheDocumentedOrder) {
     TraceResult result;
-    result.tallies = standardTallies(3);
+    result.tallies = standardTallies(3, PolarisationModel::Stokes);
     const ResultReport report = traceReport(result, TraceRunInfo{"scene.json", 1, {}});
     std::ostringstream summary;
     writeTraceSummary(report, summary);

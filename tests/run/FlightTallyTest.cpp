@@ -54,7 +54,7 @@ Scene glassSlab() {
 }
 
 TraceResult traceTrackLength(const Scene& scene, std::uint64_t photons, int threads) {
-    TallySet tallies = standardTallies();
+    TallySet tallies = standardTallies(180, PolarisationModel::Stokes);
     tallies.add(std::make_unique<TrackLengthTally>(1));  // glass
     TraceSettings settings;
     settings.photons = photons;

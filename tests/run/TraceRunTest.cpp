@@ -141,5 +141,19 @@ TEST(TraceRun, RefusesARunWithoutSourcesAndAnAngularTallyWithoutBins) {
     EXPECT_THROW(AngularTally(0), std::invalid_argument);
 }
 
+TEST(TraceRun, RefusesASourceWhosePolarisationCannotBeUsed) {
+    const Scene scene = loadScene(DROPSCOPE_SOURCE_DIR "/assets/scenes/default.json");
+    std::vector<Source> sources = scene.sources;
+    sources.front().polarisation.kind = PolarisationKind::Linear;  // and no reference
+    TraceSettings settings;
+    settings.photons = 10;
+    try {
+        runTrace(OpticalScene(scene), sources, settings, standardTallies(18, PolarisationModel::Stokes));
+        ADD_FAILURE() << "no error";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_EQ(std::string(error.what()), "source 0: polarisation reference: must be a finite, non-zero vector");
+    }
+}
+
 }  // namespace
 }  // namespace dropscope

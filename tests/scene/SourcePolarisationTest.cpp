@@ -59,9 +59,33 @@ TEST(SourcePolarisation, StokesVectorsAreScaledToUnitPower) {
     EXPECT_LE(decimal.unitStokes().tail<3>().norm(), 1.0);
 }
 
-TEST(SourcePolarisation, ARotatedReferenceWithinTheToleranceIsAccepted) {
-    // 1e-7 of a radian off perpendicular: a reference written with seven digits.
+TEST(SourcePolarisation, TheTolerancesAreWhereTheyAreDocumented) {
+    // A reference 1e-7 of a radian off perpendicular (written with seven digits) passes; 2e-6 is refused.
     EXPECT_NO_THROW(readPolarisation(R"({"linear_deg": 0, "reference": [1, 0, 1e-7]})"));
+    EXPECT_NE(sceneErrorOf(beamWith(R"({"linear_deg": 0, "reference": [1, 0, 2e-6]})")), "no error");
+    // A degree of polarisation of 1 + 1e-13 is within the slack of 1e-12 on its square; 1 + 1e-11 is not.
+    EXPECT_NO_THROW(readPolarisation(R"({"stokes": [1, 1.0000000000001, 0, 0], "reference": [1, 0, 0]})"));
+    EXPECT_NE(sceneErrorOf(beamWith(R"({"stokes": [1, 1.00000000001, 0, 0], "reference": [1, 0, 0]})")), "no error");
+}
+
+TEST(SourcePolarisation, HugeAndTinyNumbersAreJudgedByTheirRatios) {
+    // Squares of 1e200 overflow and of 1e-200 underflow: neither may let a bad state through or refuse a good one.
+    EXPECT_NO_THROW(readPolarisation(R"({"linear_deg": 0, "reference": [1e200, 0, 0]})"));
+    EXPECT_NO_THROW(readPolarisation(R"({"linear_deg": 0, "reference": [1e-200, 0, 0]})"));
+    EXPECT_EQ(sceneErrorOf(beamWith(R"({"linear_deg": 0, "reference": [1e200, 0, 1e200]})")),
+              "scene.json: sources[0].polarisation.reference: must be perpendicular to the direction (their cosine "
+              "is 0.707)");
+    EXPECT_EQ(sceneErrorOf(beamWith(R"({"linear_deg": 0, "reference": [1e-200, 0, 1e-200]})")),
+              "scene.json: sources[0].polarisation.reference: must be perpendicular to the direction (their cosine "
+              "is 0.707)");
+    EXPECT_EQ(sceneErrorOf(beamWith(R"({"stokes": [1e200, 1e201, 0, 0], "reference": [1, 0, 0]})")),
+              "scene.json: sources[0].polarisation.stokes: Q^2 + U^2 + V^2 must not exceed I^2 (the degree of "
+              "polarisation is 10)");
+    EXPECT_EQ(sceneErrorOf(beamWith(R"({"stokes": [1e-200, 1e-199, 0, 0], "reference": [1, 0, 0]})")),
+              "scene.json: sources[0].polarisation.stokes: Q^2 + U^2 + V^2 must not exceed I^2 (the degree of "
+              "polarisation is 10)");
+    const SourcePolarisation tiny = readPolarisation(R"({"stokes": [1e-200, 0, 1e-200, 0], "reference": [1, 0, 0]})");
+    EXPECT_EQ(tiny.unitStokes(), StokesVector(1, 0, 1, 0));
 }
 
 TEST(SourcePolarisation, EveryErrorNamesItsPath) {

@@ -62,7 +62,7 @@ void scoreAll(TallySet& tallies, const std::vector<ScoredPhoton>& all, std::size
 
 TEST(TallySet, ScoresMergedFromAnySplitEqualOnePass) {
     const std::vector<ScoredPhoton> all = photons(3000);
-    const TallySet prototype = standardTallies(36);
+    const TallySet prototype = standardTallies(36, PolarisationModel::Stokes);
     TallySet whole = prototype.emptyCopy();
     scoreAll(whole, all, 0, all.size());
     TallySet merged = prototype.emptyCopy();
@@ -84,7 +84,7 @@ TEST(TallySet, ScoresMergedFromAnySplitEqualOnePass) {
 }
 
 TEST(TallySet, CopiesAreDeepAndEmptyCopiesEmpty) {
-    TallySet tallies = standardTallies(4);
+    TallySet tallies = standardTallies(4, PolarisationModel::Stokes);
     scoreAll(tallies, photons(10), 0, 10);
     const TallySet copy = tallies;
     scoreAll(tallies, photons(10), 0, 10);

@@ -39,7 +39,7 @@ SphereRun traceSphere(double sigma) {
     TraceSettings settings;
     settings.photons = kPhotons;
     settings.seed = 17;
-    TallySet tallies = standardTallies(180);
+    TallySet tallies = standardTallies(180, PolarisationModel::Stokes);
     tallies.add(std::make_unique<test::RayOrderTally>(kOrders));
     std::vector<double> edges;
     for (int degree = 0; degree <= 180; ++degree) edges.push_back(degree);

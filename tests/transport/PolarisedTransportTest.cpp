@@ -56,7 +56,10 @@ TEST(PolarisedTransport, TwoTotalReflectionsInsideAGlassSphereActAsAFresnelRhomb
     EXPECT_NEAR(std::abs(once[3]), std::sin(radians(45.0)), 1e-3);  // a quarter of the way round
     const StokesVector& twice = path[2].polarisation->stokes;
     EXPECT_NEAR(twice[0], 1.0, 1e-14);
-    EXPECT_NEAR(std::abs(twice[3]), 1.0, 1e-6);  // circular
+    // Circular, and which hand: at the first wall s = k x N = +z and p = k x s = -y, so the source's light
+    // (z + y)/sqrt(2) has E_par = -E_perp, U = -I in the plane's frame. Each total reflection delays p
+    // against s by delta (P9), turning (U, V) by it (P4): V = U sin(2 delta) = -I, left-handed.
+    EXPECT_NEAR(twice[3], -1.0, 1e-6);
     EXPECT_NEAR(degreeOfPolarisation(twice), 1.0, 1e-12);
 }
 
@@ -179,6 +182,64 @@ TEST(PolarisedTransport, TurningTheWholeSceneLeavesEveryPhotonsPolarisationAlone
     }
 }
 
+TEST(PolarisedTransport, OneStateWrittenInTwoFramesGivesTheSameLightEverywhere) {
+    // Linear light at A from r is linear light at A + theta from r' = cos(theta) r - sin(theta) (r x k); an
+    // elliptical state's (Q, U) turn by (P3) with psi = theta. Traced photon by photon, the light after every
+    // event, turned into the first description's frame, is the same Stokes vector, signs of U and V included,
+    // and so are the angular tally's Stokes columns: the physics does not depend on how the state is written.
+    const Eigen::Vector3d k = Eigen::Vector3d(0.1, 0.05, 1.0).normalized();
+    const Eigen::Vector3d r = k.unitOrthogonal();
+    const double theta = 0.7;
+    const Eigen::Vector3d turned = std::cos(theta) * r - std::sin(theta) * r.cross(k);
+    const double q = 0.3, u = -0.5, v = 0.6;
+    const double qTurned = std::cos(2 * theta) * q - std::sin(2 * theta) * u;
+    const double uTurned = std::sin(2 * theta) * q + std::cos(2 * theta) * u;
+    const auto pencil = [&](const std::string& polarisation) {
+        std::ostringstream text;
+        text.precision(17);
+        text << R"({"type": "ray", "origin": [0.35, 0.2, -4], "direction": [)" << k.x() << ", " << k.y() << ", "
+             << k.z() << R"(], "polarisation": )" << polarisation << "}";
+        return text.str();
+    };
+    const auto vec = [](const Eigen::Vector3d& a) {
+        std::ostringstream text;
+        text.precision(17);
+        text << "[" << a.x() << ", " << a.y() << ", " << a.z() << "]";
+        return text.str();
+    };
+    const auto number = [](double x) {
+        std::ostringstream text;
+        text.precision(17);
+        text << x;
+        return text.str();
+    };
+    const std::vector<std::pair<std::string, std::string>> descriptions{
+        {R"({"linear_deg": 25, "reference": )" + vec(r) + "}",
+         R"({"linear_deg": )" + number(25 + theta * 180 / std::numbers::pi) + R"(, "reference": )" + vec(turned) + "}"},
+        {R"({"stokes": [1, )" + number(q) + ", " + number(u) + ", " + number(v) + R"(], "reference": )" + vec(r) + "}",
+         R"({"stokes": [1, )" + number(qTurned) + ", " + number(uTurned) + ", " + number(v) + R"(], "reference": )" +
+             vec(turned) + "}"}};
+    for (const auto& [first, second] : descriptions) {
+        SCOPED_TRACE(first + " against " + second);
+        const Scene scene = sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337}, "glass": {"n": 1.52})",
+                                          R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"},
+                                             {"type": "sphere", "center": [0.9, 0.4, 2.2], "radius": 0.7, "medium": "glass"})",
+                                          pencil(first) + ", " + pencil(second));
+        const OpticalScene optical(scene);
+        for (std::uint64_t photon = 0; photon < 400; ++photon) {
+            const std::vector<Event> a = recordedPath(optical, scene.sources[0], photon, TransportSettings{});
+            const std::vector<Event> b = recordedPath(optical, scene.sources[1], photon, TransportSettings{});
+            ASSERT_EQ(a.size(), b.size()) << photon;
+            for (std::size_t e = 0; e < a.size(); ++e) {
+                ASSERT_EQ(a[e].type, b[e].type) << photon << ", " << e;
+                const StokesVector inA =
+                    stokesInFrame(*b[e].polarisation, b[e].direction, a[e].polarisation->reference);
+                EXPECT_LT((inA - a[e].polarisation->stokes).cwiseAbs().maxCoeff(), 1e-12) << photon << ", " << e;
+            }
+        }
+    }
+}
+
 TEST(PolarisedTransport, EmittedPhotonsCarryTheSourcesStateInItsReferenceFrame) {
     Source source;
     source.type = SourceType::Beam;
@@ -189,6 +250,8 @@ TEST(PolarisedTransport, EmittedPhotonsCarryTheSourcesStateInItsReferenceFrame) 
     EXPECT_EQ(light.reference, Eigen::Vector3d(0, 1, 0));  // normalised, and made exactly perpendicular
     EXPECT_NEAR(light.stokes[1], 0.5, 1e-15);
     EXPECT_NEAR(light.stokes[2], std::sqrt(3.0) / 2.0, 1e-15);
+    source.polarisation.reference = Eigen::Vector3d(0, 1e200, 0);  // no square of it is taken
+    EXPECT_EQ(emittedPolarisation(source, source.direction).reference, Eigen::Vector3d(0, 1, 0));
     const Polarisation unpolarised = emittedPolarisation(Source{}, Direction(0.3, -0.2, 0.9));
     EXPECT_EQ(unpolarised.stokes, StokesVector(1, 0, 0, 0));
     EXPECT_NEAR(unpolarised.reference.dot(Direction(0.3, -0.2, 0.9).vector()), 0.0, 1e-16);
