@@ -11,6 +11,7 @@ endif()
 # longest matching prefix decides a file's layer.
 set(layers
     "1|geometry|engine/geometry"
+    "1|spectrum|engine/spectrum"
     "2|tree|engine/tree"
     "3|optics|engine/optics"
     "4|scene|engine/scene"
@@ -32,6 +33,7 @@ set(include_roots engine app)
 # Libraries a layer must not include (regular expressions on the <...> name), by layer name.
 set(no_ui "^(GL|GLES[0-9]*|EGL|KHR|glad|epoxy|GLFW|glm|CLI|stb)/|^imgui")
 set(forbidden_geometry "${no_ui}")
+set(forbidden_spectrum "${no_ui}")
 set(forbidden_tree "${no_ui}")
 set(forbidden_optics "${no_ui}")
 set(forbidden_scene "${no_ui}")

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace dropscope {
+
+// The wavelengths a source emits (docs/scene-format.md, "Sources"; docs/spectra.md, "Spectra"), as a
+// probability distribution of the vacuum wavelength in nm that each photon draws from.
+//   lines      (lambda, weight) pairs, weights > 0 (need not sum to 1): lambda_i with probability w_i / sum w;
+//   uniform    uniform on [lo, hi];
+//   table      a piecewise-linear density through (lambda, weight) points (lambda strictly ascending,
+//              weights >= 0, not all 0), 0 outside them;
+//   blackbody  Planck's spectral radiance per unit wavelength at `kelvin`, restricted to [lo, hi];
+//   sun        the blackbody at kSunKelvin over kSunRangeNm (written back as "sun").
+class Spectrum {
+public:
+    enum class Kind { Lines, Uniform, Table, Blackbody, Sun };
+
+    // One line at 532 nm; Spectrum::line(nm) for another.
+    Spectrum() : Spectrum(line(532.0)) {}
+    static Spectrum line(double wavelengthNm);
+    // Each throws std::invalid_argument naming what is wrong (not where) for empty lists, wavelengths that
+    // are not finite and > 0, weights that are not finite, negative or all 0, lo >= hi, kelvin <= 0, ...
+    static Spectrum lines(std::vector<std::pair<double, double>> linesNm);
+    static Spectrum uniform(double loNm, double hiNm);
+    static Spectrum table(std::vector<std::pair<double, double>> pointsNm);
+    static Spectrum blackbody(double kelvin, double loNm, double hiNm);
+    static Spectrum sun();
+
+    Kind kind() const { return kind_; }
+
+    // The wavelength at cumulative probability u in (0, 1): the inverse of cdf(), a line's wavelength for
+    // lines. Monotone in u.
+    double sample(double u) const;
+    // False for a single line: its photons draw no random number for their wavelength.
+    bool drawsRandomNumbers() const;
+    // P(lambda <= wavelengthNm).
+    double cdf(double wavelengthNm) const;
+    // The shortest and the longest wavelength emitted (a single line: both its wavelength).
+    std::pair<double, double> rangeNm() const;
+
+    // What the scene file gave, for writing it back.
+    const std::vector<std::pair<double, double>>& pointsNm() const { return points_; }  // lines, table
+    double kelvin() const { return kelvin_; }
+    std::pair<double, double> boundsNm() const { return bounds_; }  // uniform, blackbody, sun
+
+    friend bool operator==(const Spectrum& a, const Spectrum& b) {
+        return a.kind_ == b.kind_ && a.points_ == b.points_ && a.kelvin_ == b.kelvin_ && a.bounds_ == b.bounds_;
+    }
+
+private:
+    Kind kind_ = Kind::Lines;
+    std::vector<std::pair<double, double>> points_;
+    double kelvin_ = 0.0;
+    std::pair<double, double> bounds_{0.0, 0.0};
+    // Sampling tables built by the factories: cumulative probabilities at points_ (lines, table) or at a
+    // fine grid over bounds_ (blackbody, sun).
+    std::vector<double> gridNm_;
+    std::vector<double> cumulative_;
+};
+
+inline constexpr double kSunKelvin = 5778.0;
+inline constexpr std::pair<double, double> kSunRangeNm{380.0, 780.0};
+
+// Planck's spectral radiance per unit wavelength, up to a constant factor: lambda^-5 / (exp(hc/(lambda k T)) - 1).
+double planckDensity(double wavelengthNm, double kelvin);
+
+}  // namespace dropscope
