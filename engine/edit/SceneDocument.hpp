@@ -158,6 +158,8 @@ private:
     std::unique_ptr<Shape> shapeFor(const ShapeSpec& spec) const;
     void checkName(const std::string& name, std::optional<ShapeId> owner) const;
     void checkMediumId(MediumId id) const;
+    // Refuses media whose models fail at a wavelength the sources emit (findWavelengthCoverageProblem).
+    void checkWavelengths(const Properties& properties) const;
     Medium checkedMedium(const Medium& medium, std::optional<MediumId> replacing) const;
     std::optional<std::string> overlapOf(const Shape& shape, std::optional<ShapeId> ignore) const;
     std::string modifyLabel(ShapeId id, const Shape& before, const Shape& after) const;

@@ -8,6 +8,7 @@
 #include "scene/GeneratorReader.hpp"
 #include "scene/JsonPath.hpp"
 #include "scene/SceneOverlaps.hpp"
+#include "scene/WavelengthCoverage.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -120,18 +121,22 @@ Medium SceneDocument::checkedMedium(const Medium& medium, std::optional<MediumId
             refuse("medium name " + jsonpath::quoted(medium.name) + " is already used");
         }
     }
-    if (!(std::isfinite(medium.n) && medium.n > 0.0)) refuse("n must be finite and > 0");
     if (medium.kappa && medium.sigma) refuse("give either kappa or sigma, not both");
+    if (medium.kappaModel && !medium.kappa) refuse("a kappa model needs kappa");
+    if (medium.sigmaModel && !medium.sigma) refuse("a sigma model needs sigma");
+    Medium evaluated = medium;
+    try {
+        evaluateMediumAt(evaluated, wavelengthNm(), rest_.unitInMetres);  // the models' values at the scene wavelength
+    } catch (const std::logic_error& error) {
+        refuse(std::string(error.what()) + " (the scene wavelength)");
+    }
+    if (!(std::isfinite(evaluated.n) && evaluated.n > 0.0)) refuse("n must be finite and > 0");
     const auto nonNegative = [](const std::optional<double>& value) {
         return !value || (std::isfinite(*value) && *value >= 0.0);
     };
-    if (!nonNegative(medium.kappa)) refuse("kappa must be finite and >= 0");
-    if (!nonNegative(medium.sigma)) refuse("sigma must be finite and >= 0");
-    Medium checked = medium;
-    checked.absorptionPerUnit = 0.0;
-    if (medium.sigma) checked.absorptionPerUnit = *medium.sigma;
-    if (medium.kappa) checked.absorptionPerUnit = absorptionFromExtinction(*medium.kappa, wavelengthInSceneUnits());
-    return checked;
+    if (!nonNegative(evaluated.kappa)) refuse("kappa must be finite and >= 0");
+    if (!nonNegative(evaluated.sigma)) refuse("sigma must be finite and >= 0");
+    return evaluated;
 }
 
 // The scene's overlap rule against the candidates the octree finds.
@@ -246,9 +251,18 @@ std::vector<ShapeId> SceneDocument::generateCloud(const DropletCloudSpec& spec, 
 
 // ---- media, ambient, sources ----
 
+void SceneDocument::checkWavelengths(const Properties& properties) const {
+    const auto problem = findWavelengthCoverageProblem(properties.media, properties.sources, wavelengthNm());
+    if (!problem) return;
+    refuse("medium " + jsonpath::quoted(properties.media[problem->medium].name) + " " +
+           opticalQuantityKey(problem->quantity) + ": " + problem->message + " (the light of source " +
+           std::to_string(problem->source) + ")");
+}
+
 MediumId SceneDocument::addMedium(const Medium& medium) {
     Properties after = properties();
     after.media.push_back(checkedMedium(medium, std::nullopt));
+    checkWavelengths(after);
     commitProperties("add medium " + jsonpath::quoted(medium.name), std::move(after));
     return static_cast<MediumId>(media().size() - 1);
 }
@@ -257,6 +271,7 @@ void SceneDocument::setMedium(MediumId id, const Medium& medium) {
     checkMediumId(id);
     Properties after = properties();
     after.media[id] = checkedMedium(medium, id);
+    checkWavelengths(after);
     commitProperties("edit medium " + jsonpath::quoted(media()[id].name), std::move(after));
 }
 
@@ -280,12 +295,14 @@ void SceneDocument::setSources(std::vector<Source> sources, bool mergeWithPrevio
         }
         try {
             checkPolarisation(source);
+            checkDivergence(source);
         } catch (const std::invalid_argument& error) {
             refuse(which + error.what());
         }
     }
     Properties after = properties();
     after.sources = std::move(sources);
+    checkWavelengths(after);
     if (mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Sources) {
         setProperties(after);
         undo_.back().after = std::move(after);

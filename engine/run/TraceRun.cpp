@@ -1,5 +1,7 @@
 #include "run/TraceRun.hpp"
 
+#include "scene/WavelengthCoverage.hpp"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -55,10 +57,18 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     for (std::size_t i = 0; i < sources.size(); ++i) {
         try {
             checkPolarisation(sources[i]);
+            checkDivergence(sources[i]);
         } catch (const std::invalid_argument& error) {
             throw std::invalid_argument("source " + std::to_string(i) + ": " + error.what());
         }
     }
+    if (const auto problem = findWavelengthCoverageProblem(scene.media(), sources, scene.wavelengthNm())) {
+        throw std::invalid_argument("medium " + scene.media()[problem->medium].name + " " +
+                                    opticalQuantityKey(problem->quantity) + ": " + problem->message +
+                                    " (the light of source " + std::to_string(problem->source) + ")");
+    }
+    std::vector<Spectrum> spectra;
+    for (const Source& source : sources) spectra.push_back(sourceSpectrum(source, scene.wavelengthNm()));
 
     TraceResult result;
     result.requested = settings.photons;
@@ -96,19 +106,24 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                 const std::uint64_t last = std::min(first + kChunk, settings.photons);
                 for (std::uint64_t photon = first; photon < last; ++photon) {
                     const std::size_t sourceIndex = photon % sources.size();
+                    const Source& source = sources[sourceIndex];
                     PhotonRandom random(settings.seed, photon);
-                    const Ray emitted = emitPhoton(sources[sourceIndex], random);
+                    PhotonRandom sourceRandom(settings.seed, photon, PhotonRandom::kSourceStream);
+                    Ray emitted = emitPhoton(source, random);
+                    const EmittedLight light = emitLight(source, spectra[sourceIndex], sourceRandom);
+                    if (source.divergenceDeg > 0.0) emitted.direction = light.direction;
                     std::optional<Polarisation> polarisation;
-                    if (polarised) polarisation = emittedPolarisation(sources[sourceIndex], emitted.direction);
+                    if (polarised) polarisation = emittedPolarisation(source, emitted.direction);
                     std::vector<Event>* events = nullptr;
                     if (photon < recorded) {
                         paths[photon].photon = photon;
                         paths[photon].source = sourceIndex;
+                        paths[photon].wavelengthNm = light.wavelengthNm;
                         events = &paths[photon].events;
                     }
                     PhotonScorer scorer(local, photon, sourceIndex, events);
                     const PhotonOutcome outcome =
-                        tracePhoton(scene, emitted, random, settings.transport, &scorer, polarisation);
+                        tracePhoton(scene, emitted, random, settings.transport, &scorer, polarisation, light.wavelengthNm);
                     if (photon < recorded) paths[photon].fate = outcome.fate;
                 }
                 done.fetch_add(last - first, std::memory_order_relaxed);

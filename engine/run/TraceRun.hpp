@@ -24,6 +24,7 @@ struct TraceSettings {
 struct PhotonPath {
     std::uint64_t photon = 0;
     std::size_t source = 0;
+    double wavelengthNm = 0.0;
     PhotonFate fate = PhotonFate::Lost;
     std::vector<Event> events;
 };
@@ -56,9 +57,11 @@ struct TraceControl {
 // filters; standardTallies is what `dropscope trace` counts). Photon i comes from
 // sources[i % sources.size()] with the random numbers PhotonRandom(seed, i). Each thread scores into
 // its own emptyCopy() of the tallies, merged at the end; tallies merge exactly (tally/Tally.hpp), so
-// the result is the same for any thread count. Throws std::invalid_argument when there are no sources, for a
-// source whose polarisation checkPolarisation refuses, or for PolarisationModel::Stokes with Schlick's
-// approximation.
+// the result is the same for any thread count. Its wavelength and, in a divergent beam, its direction come
+// from PhotonRandom(seed, i, kSourceStream) (emitLight). Throws std::invalid_argument when there are no
+// sources, for a source whose polarisation checkPolarisation or divergence checkDivergence refuses, for a
+// medium that is not defined at a wavelength a source emits (findWavelengthCoverageProblem), or for
+// PolarisationModel::Stokes with Schlick's approximation.
 TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sources, const TraceSettings& settings,
                      const TallySet& tallies, const TraceControl& control = {});
 

@@ -44,11 +44,13 @@ public:
     std::optional<JsonReader> optionalMember(std::string_view key) const;
     std::vector<std::pair<std::string, JsonReader>> members() const;
 
-    // Arrays.
+    // Arrays. fixedArray fails unless the array has `size` elements, saying it expected `what`.
     std::vector<JsonReader> elements() const;
+    std::vector<JsonReader> fixedArray(std::size_t size, std::string_view what) const;
 
     bool isNumber() const { return value_.is_number(); }
     bool isString() const { return value_.is_string(); }
+    bool isObject() const { return value_.is_object(); }
 
     // Scalars. number() is finite; positive() is finite and > 0; nonNegative() finite and >= 0.
     double number() const;
@@ -66,8 +68,6 @@ public:
     Eigen::Matrix3d matrix3() const;
 
 private:
-    std::vector<JsonReader> fixedArray(std::size_t size, std::string_view what) const;
-
     const Json& value_;
     std::string path_;
     const std::string& origin_;

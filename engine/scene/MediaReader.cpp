@@ -1,36 +1,56 @@
 #include "scene/MediaReader.hpp"
 
 #include "scene/JsonPath.hpp"
+#include "scene/SpectrumReader.hpp"
+
+#include <stdexcept>
 
 namespace dropscope {
 
 namespace {
 
-Medium readMedium(const std::string& name, const JsonReader& json, double wavelengthInSceneUnits) {
+// Reads one of n, kappa, sigma: its number, or its model and the model's value at the scene wavelength.
+template <class Number>
+void readQuantity(const JsonReader& json, OpticalQuantity quantity, double wavelengthNm, Number& number,
+                  std::optional<SpectralFunction>& model) {
+    auto value = readSpectralValue(json, quantity);
+    if (auto* constant = std::get_if<double>(&value)) {
+        number = *constant;
+        return;
+    }
+    model = std::get<SpectralFunction>(std::move(value));
+    try {
+        number = checkedSpectralValue(*model, quantity, wavelengthNm);
+    } catch (const std::logic_error& error) {
+        json.fail(std::string(error.what()) + " (the scene's \"wavelength_nm\")");
+    }
+}
+
+Medium readMedium(const std::string& name, const JsonReader& json, double wavelengthNm, double unitInMetres) {
     json.expectKeys({"n", "kappa", "sigma"});
     Medium medium;
     medium.name = name;
-    medium.n = json.member("n").positive();
-    if (const auto kappa = json.optionalMember("kappa")) medium.kappa = kappa->nonNegative();
+    readQuantity(json.member("n"), OpticalQuantity::N, wavelengthNm, medium.n, medium.nModel);
+    if (const auto kappa = json.optionalMember("kappa")) {
+        medium.kappa = 0.0;
+        readQuantity(*kappa, OpticalQuantity::Kappa, wavelengthNm, *medium.kappa, medium.kappaModel);
+    }
     if (const auto sigma = json.optionalMember("sigma")) {
         if (medium.kappa) sigma->fail("give either \"kappa\" or \"sigma\", not both");
-        medium.sigma = sigma->nonNegative();
+        medium.sigma = 0.0;
+        readQuantity(*sigma, OpticalQuantity::Sigma, wavelengthNm, *medium.sigma, medium.sigmaModel);
     }
-    if (medium.sigma) {
-        medium.absorptionPerUnit = *medium.sigma;
-    } else if (medium.kappa) {
-        medium.absorptionPerUnit = absorptionFromExtinction(*medium.kappa, wavelengthInSceneUnits);
-    }
+    evaluateMediumAt(medium, wavelengthNm, unitInMetres);
     return medium;
 }
 
 }  // namespace
 
-std::vector<Medium> readMedia(const JsonReader& json, double wavelengthInSceneUnits) {
+std::vector<Medium> readMedia(const JsonReader& json, double wavelengthNm, double unitInMetres) {
     std::vector<Medium> media;
     for (const auto& [name, value] : json.members()) {
         if (name.empty()) value.fail("a medium name must not be empty");
-        media.push_back(readMedium(name, value, wavelengthInSceneUnits));
+        media.push_back(readMedium(name, value, wavelengthNm, unitInMetres));
     }
     return media;
 }

@@ -8,6 +8,7 @@
 #include "scene/SceneOverlaps.hpp"
 #include "scene/ShapeReader.hpp"
 #include "scene/SourceReader.hpp"
+#include "scene/WavelengthCoverage.hpp"
 
 #include <array>
 #include <cerrno>
@@ -127,6 +128,17 @@ void readView(const JsonReader& json, Scene& scene) {
     scene.view = view;
 }
 
+// Every dispersive medium must be defined at every wavelength a source emits.
+void checkMediaCoverSpectra(const JsonReader& root, const Scene& scene) {
+    const auto problem = findWavelengthCoverageProblem(scene.media, scene.sources, scene.wavelengthNm);
+    if (!problem) return;
+    const JsonReader model =
+        root.member("media").member(scene.media[problem->medium].name).member(opticalQuantityKey(problem->quantity));
+    const bool ownSpectrum = scene.sources[problem->source].spectrum.has_value();
+    model.fail(problem->message + " (the light of sources[" + std::to_string(problem->source) + "]" +
+               (ownSpectrum ? ".spectrum" : ", at the scene's \"wavelength_nm\"") + ")");
+}
+
 }  // namespace
 
 Scene parseScene(std::string_view jsonText, const std::string& origin) {
@@ -140,13 +152,14 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     readUnit(root, scene);
     if (const auto wavelength = root.optionalMember("wavelength_nm")) scene.wavelengthNm = wavelength->positive();
     if (const auto media = root.optionalMember("media")) {
-        scene.media = readMedia(*media, scene.wavelengthInSceneUnits());
+        scene.media = readMedia(*media, scene.wavelengthNm, scene.unitInMetres);
     }
     readAmbient(root, scene);
     if (const auto shapes = root.optionalMember("shapes")) readShapes(*shapes, scene);
     if (const auto sources = root.optionalMember("sources")) {
         for (const JsonReader& json : sources->elements()) scene.sources.push_back(readSource(json));
     }
+    checkMediaCoverSpectra(root, scene);
     if (const auto octree = root.optionalMember("octree")) readOctreeSettings(*octree, scene);
     if (const auto view = root.optionalMember("view")) readView(*view, scene);
     // Only the explicit shapes need the pairwise check; generated droplets avoid everything by construction.

@@ -26,12 +26,48 @@ Json vector3(const Eigen::Vector3d& v) { return Json::array({v.x(), v.y(), v.z()
 
 [[noreturn]] void refuse(const std::string& message) { throw std::invalid_argument("writeScene: " + message); }
 
+Json pairsJson(const std::vector<std::pair<double, double>>& pairs) {
+    Json json = Json::array();
+    for (const auto& [first, second] : pairs) json.push_back(Json::array({first, second}));
+    return json;
+}
+
+Json spectralJson(const SpectralFunction& function) {
+    switch (function.kind()) {
+    case SpectralFunction::Kind::Constant: return function.constantValue();
+    case SpectralFunction::Kind::Table: return {{"table_nm", pairsJson(function.tablePointsNm())}};
+    case SpectralFunction::Kind::Cauchy: return {{"cauchy_um", function.coefficients()}};
+    case SpectralFunction::Kind::Sellmeier:
+        return {{"sellmeier_um", {{"B", function.coefficients()}, {"C", function.sellmeierC()}}}};
+    case SpectralFunction::Kind::Builtin: {
+        Json json = {{"builtin", materialName(function.material())}};
+        if (function.material() == Material::Water && function.temperatureC() != 20.0) {
+            json["temperature_c"] = function.temperatureC();
+        }
+        return json;
+    }
+    }
+    return nullptr;
+}
+
 Json mediumJson(const Medium& medium) {
     Json json = Json::object();
-    json["n"] = medium.n;
-    if (medium.kappa) json["kappa"] = *medium.kappa;
-    if (medium.sigma) json["sigma"] = *medium.sigma;
+    json["n"] = medium.nModel ? spectralJson(*medium.nModel) : Json(medium.n);
+    if (medium.kappa) json["kappa"] = medium.kappaModel ? spectralJson(*medium.kappaModel) : Json(*medium.kappa);
+    if (medium.sigma) json["sigma"] = medium.sigmaModel ? spectralJson(*medium.sigmaModel) : Json(*medium.sigma);
     return json;
+}
+
+Json spectrumJson(const Spectrum& spectrum) {
+    const auto [lo, hi] = spectrum.boundsNm();
+    switch (spectrum.kind()) {
+    case Spectrum::Kind::Lines: return {{"lines_nm", pairsJson(spectrum.pointsNm())}};
+    case Spectrum::Kind::Uniform: return {{"uniform_nm", Json::array({lo, hi})}};
+    case Spectrum::Kind::Table: return {{"table_nm", pairsJson(spectrum.pointsNm())}};
+    case Spectrum::Kind::Blackbody: return {{"blackbody_K", spectrum.kelvin()}, {"range_nm", Json::array({lo, hi})}};
+    case Spectrum::Kind::Sun: return "sun";
+    }
+    return nullptr;
 }
 
 // values[offset ...] nested as `extents` says, row-major.
@@ -112,6 +148,8 @@ Json sourceJson(const Source& source) {
         break;
     }
     }
+    if (source.spectrum) json["spectrum"] = spectrumJson(*source.spectrum);
+    if (source.divergenceDeg != 0.0) json["divergence_deg"] = source.divergenceDeg;
     return json;
 }
 

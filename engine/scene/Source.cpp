@@ -2,6 +2,7 @@
 
 #include "optics/OpticsTolerance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -84,6 +85,32 @@ void checkPolarisation(const Source& source) {
         checkPolarisationReference(polarisation.reference, source.direction);
     } catch (const std::invalid_argument& error) {
         throw std::invalid_argument(std::string("polarisation reference: ") + error.what());
+    }
+}
+
+Spectrum sourceSpectrum(const Source& source, double sceneWavelengthNm) {
+    return source.spectrum ? *source.spectrum : Spectrum::line(sceneWavelengthNm);
+}
+
+std::pair<double, double> wavelengthRangeNm(const std::vector<Source>& sources, double sceneWavelengthNm) {
+    std::pair<double, double> range{sceneWavelengthNm, sceneWavelengthNm};
+    bool first = true;
+    for (const Source& source : sources) {
+        const auto [lo, hi] = source.spectrum ? source.spectrum->rangeNm() : std::pair{sceneWavelengthNm, sceneWavelengthNm};
+        range = first ? std::pair{lo, hi} : std::pair{std::min(range.first, lo), std::max(range.second, hi)};
+        first = false;
+    }
+    return range;
+}
+
+void checkDivergence(const Source& source) {
+    const double divergence = source.divergenceDeg;
+    if (!std::isfinite(divergence) || divergence < 0.0) {
+        throw std::invalid_argument("a divergence must be a finite angle >= 0 degrees");
+    }
+    if (divergence >= kMaxDivergenceDeg) throw std::invalid_argument("a divergence must be less than 90 degrees");
+    if (divergence > 0.0 && source.type == SourceType::PointSource) {
+        throw std::invalid_argument("a point source already sends light in every direction: it takes no divergence");
     }
 }
 

@@ -2,8 +2,12 @@
 
 #include "geometry/Vector.hpp"
 #include "optics/Stokes.hpp"
+#include "spectrum/Spectrum.hpp"
 
+#include <optional>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace dropscope {
 
@@ -29,13 +33,31 @@ struct SourcePolarisation {
 
 // Where photons come from. beam: uniform over a disk of `radius` perpendicular to `direction`;
 // ray: a pencil along `direction`; point: isotropic from `origin` (direction unused), unpolarised.
+// Beams and rays with a divergence send each photon in a direction uniform over the cone of that half-angle
+// around `direction`. Each photon's wavelength is drawn from `spectrum` (docs/spectra.md, "Spectra").
 struct Source {
     SourceType type = SourceType::Ray;
     Point origin = Point::Zero();
     Direction direction{0.0, 0.0, 1.0};
     double radius = 0.0;
     SourcePolarisation polarisation = {};
+    std::optional<Spectrum> spectrum;  // absent: one line at the scene's wavelength_nm
+    double divergenceDeg = 0.0;        // in [0, kMaxDivergenceDeg); 0 for a point source
 };
+
+// A divergence must leave every direction of the cone on the source's side, so that a polarisation
+// reference across the axis is never along a photon's direction.
+inline constexpr double kMaxDivergenceDeg = 90.0;
+
+// The spectrum a source's photons draw from: its own, or one line at `sceneWavelengthNm`.
+Spectrum sourceSpectrum(const Source& source, double sceneWavelengthNm);
+
+// The shortest and the longest wavelength of all the sources' spectra (docs/cli.md, angular_spectral.csv).
+std::pair<double, double> wavelengthRangeNm(const std::vector<Source>& sources, double sceneWavelengthNm);
+
+// Throws std::invalid_argument naming what is wrong (not where) for a divergence that is not finite, negative,
+// at least kMaxDivergenceDeg, or non-zero on a point source.
+void checkDivergence(const Source& source);
 
 // Each throws std::invalid_argument, with a message naming what is wrong but not where: a Stokes vector
 // with I <= 0, a component that is not finite, or Q^2 + U^2 + V^2 > I^2 (tolerance::kStokesDegreeSlack);

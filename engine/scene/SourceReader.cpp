@@ -1,6 +1,7 @@
 #include "scene/SourceReader.hpp"
 
 #include "scene/JsonPath.hpp"
+#include "scene/SpectrumReader.hpp"
 
 namespace dropscope {
 
@@ -52,13 +53,13 @@ Source readSource(const JsonReader& json) {
     const std::string type = typeJson.string();
     Source source;
     if (type == "beam") {
-        json.expectKeys({"type", "origin", "direction", "radius", "polarisation"});
+        json.expectKeys({"type", "origin", "direction", "radius", "polarisation", "spectrum", "divergence_deg"});
         source.type = SourceType::Beam;
     } else if (type == "ray") {
-        json.expectKeys({"type", "origin", "direction", "polarisation"});
+        json.expectKeys({"type", "origin", "direction", "polarisation", "spectrum", "divergence_deg"});
         source.type = SourceType::Ray;
     } else if (type == "point") {
-        json.expectKeys({"type", "origin", "polarisation"});
+        json.expectKeys({"type", "origin", "polarisation", "spectrum"});
         source.type = SourceType::PointSource;
     } else {
         typeJson.fail("unknown source type " + jsonpath::quoted(type) + " (known: beam, ray, point)");
@@ -68,6 +69,11 @@ Source readSource(const JsonReader& json) {
     if (source.type == SourceType::Beam) source.radius = json.member("radius").positive();
     if (const auto polarisation = json.optionalMember("polarisation")) {
         source.polarisation = readPolarisation(*polarisation, source);
+    }
+    if (const auto spectrum = json.optionalMember("spectrum")) source.spectrum = readSpectrum(*spectrum);
+    if (const auto divergence = json.optionalMember("divergence_deg")) {
+        source.divergenceDeg = divergence->nonNegative();
+        divergence->construct([&] { checkDivergence(source); });
     }
     return source;
 }

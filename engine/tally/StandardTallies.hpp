@@ -1,13 +1,18 @@
 #pragma once
 
+#include "tally/SpectralAngularTally.hpp"
 #include "tally/TallySet.hpp"
 #include "transport/SurfaceCrossing.hpp"
+
+#include <optional>
 
 namespace dropscope {
 
 // What `dropscope trace` and the app count: a FateTally and an AngularTally of `angularBins` bins (180 in the
 // app), with the Stokes columns when the photons carry polarisation: `polarisation` must be the run's
-// TransportSettings model (a Stokes tally given unpolarised photons throws std::logic_error).
-TallySet standardTallies(int angularBins, PolarisationModel polarisation);
+// TransportSettings model (a Stokes tally given unpolarised photons throws std::logic_error). With
+// `wavelengths`, also a SpectralAngularTally of the same angular bins.
+TallySet standardTallies(int angularBins, PolarisationModel polarisation,
+                         std::optional<WavelengthBins> wavelengths = std::nullopt);
 
 }  // namespace dropscope

@@ -51,4 +51,24 @@ Ray emitPhoton(const Source& source, PhotonRandom& random) {
     return {source.origin, source.direction};
 }
 
+Direction directionInCone(const Direction& axis, double halfAngleDeg, PhotonRandom& random) {
+    Eigen::Vector3d u;
+    Eigen::Vector3d v;
+    perpendicularBasis(axis, u, v);
+    const double halfSine = std::sin(0.5 * halfAngleDeg * (std::numbers::pi / 180.0));
+    const double oneMinusCos = 2.0 * halfSine * halfSine * random.uniform();  // 1 - cos theta
+    const double cosTheta = 1.0 - oneMinusCos;
+    const double sinTheta = std::sqrt(oneMinusCos * (1.0 + cosTheta));
+    const double phi = 2.0 * std::numbers::pi * random.uniform();
+    return Direction(cosTheta * axis.vector() + sinTheta * (std::cos(phi) * u + std::sin(phi) * v));
+}
+
+EmittedLight emitLight(const Source& source, const Spectrum& spectrum, PhotonRandom& sourceRandom) {
+    EmittedLight light;
+    light.wavelengthNm = spectrum.drawsRandomNumbers() ? spectrum.sample(sourceRandom.uniform()) : spectrum.rangeNm().first;
+    light.direction = source.divergenceDeg > 0.0 ? directionInCone(source.direction, source.divergenceDeg, sourceRandom)
+                                                 : source.direction;
+    return light;
+}
+
 }  // namespace dropscope

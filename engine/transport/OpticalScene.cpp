@@ -19,6 +19,8 @@ std::vector<std::unique_ptr<Shape>> cloneShapes(const Scene& scene) {
 
 OpticalScene::OpticalScene(const Scene& scene)
     : media_(scene.media),
+      wavelengthNm_(scene.wavelengthNm),
+      unitInMetres_(scene.unitInMetres),
       ambient_(scene.ambient),
       octree_(cloneShapes(scene), scene.octree),
       parents_(octree_.slotCount(), kAmbient) {
@@ -26,6 +28,17 @@ OpticalScene::OpticalScene(const Scene& scene)
         const Shape* inner = octree_.shape(id);
         if (inner) parents_[id] = smallestContainer(*inner, id);
     }
+    // The numbers the scene already holds: the light of the scene wavelength is traced exactly as before.
+    for (const Medium& medium : media_) sceneOptics_.push_back({medium.n, medium.absorptionPerUnit});
+}
+
+void OpticalScene::opticsAt(double wavelengthNm, std::vector<MediumOptics>& optics) const {
+    if (wavelengthNm == wavelengthNm_) {
+        optics = sceneOptics_;
+        return;
+    }
+    optics.resize(media_.size());
+    for (std::size_t id = 0; id < media_.size(); ++id) optics[id] = mediumOpticsAt(media_[id], wavelengthNm, unitInMetres_);
 }
 
 ShapeId OpticalScene::smallestContainer(const Shape& inner, ShapeId innerId) const {

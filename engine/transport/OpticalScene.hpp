@@ -21,6 +21,12 @@ public:
 
     const Octree& octree() const { return octree_; }
     const std::vector<Medium>& media() const { return media_; }
+    double wavelengthNm() const { return wavelengthNm_; }
+    double unitInMetres() const { return unitInMetres_; }
+    // Every medium's n and absorption at the scene wavelength, by medium id.
+    const std::vector<MediumOptics>& sceneOptics() const { return sceneOptics_; }
+    // The same at `wavelengthNm` into `optics` (the scene's own when it is the scene wavelength, bit for bit).
+    void opticsAt(double wavelengthNm, std::vector<MediumOptics>& optics) const;
 
     // The region a point lies in (a point on a surface band belongs to the region around that shape).
     ShapeId regionAt(const Point& p) const;
@@ -41,6 +47,9 @@ private:
     ShapeId smallestContainer(const Shape& inner, ShapeId innerId) const;
 
     std::vector<Medium> media_;
+    double wavelengthNm_;
+    double unitInMetres_;
+    std::vector<MediumOptics> sceneOptics_;
     MediumId ambient_;
     Octree octree_;
     std::vector<ShapeId> parents_;

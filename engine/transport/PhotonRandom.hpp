@@ -8,11 +8,17 @@ namespace dropscope {
 
 // The random numbers of one photon: Philox4x64-10 (Random123) keyed by the run's seed, counting
 // through blocks of the photon's own counter space. A photon's numbers depend only on (seed, photon
-// index), so a trace is bit-identical whatever the thread count or the order photons are run in.
+// index, stream), so a trace is bit-identical whatever the thread count or the order photons are run in.
+// Stream kTransportStream is its path (emission point, absorption, reflection); kSourceStream its
+// wavelength and its direction within a divergent beam, so that giving a source a spectrum or a
+// divergence leaves the path's own numbers where they were.
 class PhotonRandom {
 public:
-    PhotonRandom(std::uint64_t seed, std::uint64_t photon)
-        : key_{{seed, 0x64726f7073636f70ULL}}, counter_{{photon, 0, 0, 0}} {}
+    static constexpr std::uint64_t kTransportStream = 0;
+    static constexpr std::uint64_t kSourceStream = 1;
+
+    PhotonRandom(std::uint64_t seed, std::uint64_t photon, std::uint64_t stream = kTransportStream)
+        : key_{{seed, 0x64726f7073636f70ULL}}, counter_{{photon, 0, stream, 0}} {}
 
     std::uint64_t bits() {
         if (next_ == kBlockSize) refill();

@@ -18,10 +18,18 @@ std::string_view photonFateName(PhotonFate fate) {
 
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
                           const TransportSettings& settings, PhotonObserver* observer,
-                          const std::optional<Polarisation>& polarisation) {
+                          const std::optional<Polarisation>& polarisation, std::optional<double> wavelengthNm) {
     const bool flights = observer && observer->wantsFlights();
     PhotonOutcome outcome;
     PhotonState state{emitted};
+    state.wavelengthNm = wavelengthNm.value_or(scene.wavelengthNm());
+    // The media at this photon's wavelength, in a buffer each thread reuses.
+    thread_local std::vector<MediumOptics> ownWavelength;
+    std::span<const MediumOptics> optics = scene.sceneOptics();
+    if (state.wavelengthNm != scene.wavelengthNm()) {
+        scene.opticsAt(state.wavelengthNm, ownWavelength);
+        optics = ownWavelength;
+    }
     Point position = emitted.origin;
     Direction direction = emitted.direction;
     ShapeId region = scene.regionAt(position, direction);
@@ -55,7 +63,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     // Draws an absorption distance in the current medium; when it is shorter than `distance` the
     // photon flies there and is absorbed.
     const auto absorbedWithin = [&](double distance) {
-        const double sigma = scene.mediumOf(region).absorptionPerUnit;
+        const double sigma = optics[scene.mediumIdOf(region)].absorptionPerUnit;
         if (sigma <= 0.0) return false;
         const double freePath = -std::log(random.uniform()) / sigma;
         if (freePath >= distance) return false;
@@ -93,7 +101,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         outcome.metSurface = state.metSurface = true;
         if (++state.interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap);
         const SurfaceCrossing crossing =
-            crossSurface(scene, region, hit.shape, position, direction, settings.fresnel, !light);
+            crossSurface(scene, region, hit.shape, position, direction, settings.fresnel, !light, optics);
         if (crossing.kind == SurfaceCrossing::Kind::Lost) return lose(crossing.lostReason);
         if (crossing.kind == SurfaceCrossing::Kind::Tangent) continue;  // goes on unchanged (seed 000 ch. 4)
 

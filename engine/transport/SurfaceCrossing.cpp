@@ -12,7 +12,8 @@ std::string_view polarisationModelName(PolarisationModel model) {
 }
 
 SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId shape, const Point& point,
-                             const Direction& direction, FresnelModel fresnel, bool unpolarisedReflectance) {
+                             const Direction& direction, FresnelModel fresnel, bool unpolarisedReflectance,
+                             std::span<const MediumOptics> optics) {
     SurfaceCrossing crossing;
     const Direction normal = scene.octree().shape(shape)->normal(point);
     if (!normal) {
@@ -32,8 +33,9 @@ SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId 
     crossing.regionBeyond = entering ? shape : scene.parentOf(shape);
     crossing.from = scene.mediumIdOf(region);
     crossing.to = scene.mediumIdOf(crossing.regionBeyond);
-    const double n1 = scene.media()[crossing.from].n;
-    const double n2 = scene.media()[crossing.to].n;
+    if (optics.empty()) optics = scene.sceneOptics();
+    const double n1 = optics[crossing.from].n;
+    const double n2 = optics[crossing.to].n;
     crossing.normal = normal;
     crossing.cosIncidence = std::abs(cosine);
     crossing.n1 = n1;

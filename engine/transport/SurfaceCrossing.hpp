@@ -3,6 +3,7 @@
 #include "transport/Event.hpp"
 #include "transport/OpticalScene.hpp"
 
+#include <span>
 #include <string_view>
 
 namespace dropscope {
@@ -40,8 +41,10 @@ struct SurfaceCrossing {
 // returned by the octree, so within the shape's surface band). The outward normal's side tells
 // whether it enters or leaves `shape`; that must agree with `region`, or the crossing is lost. The
 // unpolarised reflectance is computed only when `unpolarisedReflectance` (polarised light has its own,
-// PolarisedCrossing).
+// PolarisedCrossing). The indices are those of `optics` (by medium id: the ray's wavelength), or the scene
+// wavelength's when it is empty.
 SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId shape, const Point& point,
-                             const Direction& direction, FresnelModel fresnel, bool unpolarisedReflectance = true);
+                             const Direction& direction, FresnelModel fresnel, bool unpolarisedReflectance = true,
+                             std::span<const MediumOptics> optics = {});
 
 }  // namespace dropscope
