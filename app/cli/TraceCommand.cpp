@@ -31,6 +31,10 @@ namespace fs = std::filesystem;
 constexpr std::uint64_t kMaxBins = 100'000;     // 0.0018 degrees; a tally per thread: 0.8 MB each at most
 constexpr std::uint64_t kMaxThreads = 1024;     // beyond any machine we run on; a typo otherwise
 constexpr std::uint64_t kMaxPaths = 1'000'000;  // every event kept in memory: ~1 KB per photon
+// Bins of angular_spectral.csv: K wavelength bands times --bins angles, a tally per thread of up to
+// kMaxBins * kMaxWavelengthBins counters would not fit, so the product is bounded too.
+constexpr std::uint64_t kMaxWavelengthBins = 10'000;
+constexpr std::uint64_t kMaxSpectralCells = 10'000'000;  // 80 MB of counters per thread at most
 
 // Refuses an --out that names something other than a folder, or holds an output name that is not a
 // regular file, before any work is done.
@@ -140,7 +144,14 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
                      "Fresnel reflectance, as before polarisation (the default with --fresnel schlick)")
         ->default_str("stokes; none with --fresnel schlick")
         ->check(CLI::IsMember({"stokes", "none"}));
-    command->add_option("--out", options.outDir, "Output folder (created): summary.json, angular.csv, paths.jsonl")
+    command
+        ->add_option("--wavelength-bins", options.wavelengthBins,
+                     "Equal wavelength bins over the sources' spectra in angular_spectral.csv")
+        ->capture_default_str()
+        ->transform(wholeNumberIn(1, kMaxWavelengthBins));
+    command
+        ->add_option("--out", options.outDir,
+                     "Output folder (created): summary.json, angular.csv, angular_spectral.csv, paths.jsonl")
         ->required();
     return command;
 }
@@ -148,14 +159,29 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
 int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err) {
     const fs::path directory = options.outDir;
     const TraceSettings settings = traceSettings(options);
-    const TallySet tallies = standardTallies(options.bins, settings.transport.polarisation);
-    checkOutputPath(directory, traceFileNames(tallies));
+    if (static_cast<std::uint64_t>(options.bins) * static_cast<std::uint64_t>(options.wavelengthBins) >
+        kMaxSpectralCells) {
+        throw BadInputError("--bins " + std::to_string(options.bins) + " with --wavelength-bins " +
+                            std::to_string(options.wavelengthBins) + ": more than " +
+                            std::to_string(kMaxSpectralCells) + " cells in angular_spectral.csv");
+    }
+    // The file names do not depend on the bins: checked before the scene is read.
+    checkOutputPath(directory, traceFileNames(standardTallies(options.bins, settings.transport.polarisation,
+                                                              WavelengthBins{1, 1.0, 1.0})));
     const Scene scene = loadScene(options.scenePath);
     if (scene.sources.empty()) throw SceneError(scene.origin, "sources", "the scene has no light sources to trace");
+    const auto [lo, hi] = wavelengthRangeNm(scene.sources, scene.wavelengthNm);
+    const WavelengthBins wavelengths{options.wavelengthBins, lo, hi};
+    try {
+        wavelengths.check();
+    } catch (const std::invalid_argument& error) {
+        throw BadInputError("--wavelength-bins " + std::to_string(options.wavelengthBins) + ": " + error.what());
+    }
+    const TallySet tallies = standardTallies(options.bins, settings.transport.polarisation, wavelengths);
     const OpticalScene opticalScene(scene);
     createOutputDirectory(directory);
 
-    const TraceRunInfo info{options.scenePath, scene.sources.size(), settings};
+    const TraceRunInfo info{options.scenePath, scene.sources.size(), settings, scene.wavelengthNm, scene.sources};
     // Alive until the files are written: a first Ctrl-C while writing them is absorbed, not fatal.
     const InterruptGuard interrupt;
     std::optional<ProgressLine> progress;

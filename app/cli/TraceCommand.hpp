@@ -20,11 +20,12 @@ struct TraceOptions {
     std::uint32_t maxEvents = 10000;
     std::string fresnel = "exact";
     std::string polarisation;  // "stokes" | "none"; empty: stokes, or none with --fresnel schlick
+    int wavelengthBins = 1;
     std::string outDir;
 };
 
 // Registers `dropscope trace SCENE --photons N [--seed S] [--bins B] [--threads T] [--paths K]
-// [--max-events M] [--fresnel exact|schlick] [--polarisation stokes|none] --out DIR`.
+// [--max-events M] [--fresnel exact|schlick] [--polarisation stokes|none] [--wavelength-bins K] --out DIR`.
 CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options);
 
 // Traces the photons (engine/transport runTrace) and writes DIR/summary.json, DIR/angular.csv and

@@ -41,8 +41,11 @@ void writePathsJsonl(const std::vector<PhotonPath>& paths, const std::vector<Med
     for (const PhotonPath& path : paths) {
         Json events = Json::array();
         for (const Event& event : path.events) events.push_back(eventJson(event, media));
-        const Json line = {
-            {"photon", path.photon}, {"source", path.source}, {"fate", photonFateName(path.fate)}, {"events", events}};
+        const Json line = {{"photon", path.photon},
+                           {"source", path.source},
+                           {"wavelength_nm", path.wavelengthNm},
+                           {"fate", photonFateName(path.fate)},
+                           {"events", events}};
         out << line.dump() << '\n';
     }
 }

@@ -23,6 +23,23 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
     report.set({"max_events"}, static_cast<std::uint64_t>(info.settings.transport.maxEvents));
     report.set({"paths"}, static_cast<std::uint64_t>(result.paths.size()));
     report.set({"sources"}, static_cast<std::uint64_t>(info.sourceCount));
+    if (info.sceneWavelengthNm > 0.0) report.set({"wavelength_nm"}, info.sceneWavelengthNm);
+    for (std::size_t i = 0; i < info.sources.size(); ++i) {
+        const Source& source = info.sources[i];
+        const Spectrum spectrum = sourceSpectrum(source, info.sceneWavelengthNm);
+        const std::string key = std::to_string(i);
+        const auto [lo, hi] = spectrum.rangeNm();
+        report.set({"spectra", key, "spectrum"}, std::string(source.spectrum ? spectrumKindName(spectrum.kind()) : "scene"));
+        report.set({"spectra", key, "lo_nm"}, lo);
+        report.set({"spectra", key, "hi_nm"}, hi);
+        if (spectrum.kind() == Spectrum::Kind::Lines) {
+            report.set({"spectra", key, "lines"}, static_cast<std::uint64_t>(spectrum.pointsNm().size()));
+        }
+        if (spectrum.kind() == Spectrum::Kind::Blackbody || spectrum.kind() == Spectrum::Kind::Sun) {
+            report.set({"spectra", key, "kelvin"}, spectrum.kelvin());
+        }
+        report.set({"spectra", key, "divergence_deg"}, source.divergenceDeg);
+    }
     result.tallies.report(report);
     return report;
 }
@@ -32,7 +49,8 @@ void writeTraceSummary(const ResultReport& report, std::ostream& out) {
     static const std::vector<std::string_view> kKeyOrder{
         "photons",           "seed",    "threads", "seconds",      "fractions", "events",
         "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
-        "max_events",        "paths",   "counts",  "lost_reasons", "sources"};
+        "max_events",        "paths",   "counts",  "lost_reasons", "sources",   "wavelength_nm",
+        "spectra"};
     writeSummaryJson(report, kKeyOrder, out);
 }
 

@@ -18,12 +18,15 @@ struct TraceRunInfo {
     std::string scenePath;  // as given on the command line
     std::size_t sourceCount = 0;
     TraceSettings settings;
+    double sceneWavelengthNm = 0.0;  // 0: not reported
+    std::vector<Source> sources;     // their spectra and divergences are reported (none: not reported)
 };
 
 std::string_view fresnelModelName(FresnelModel model);  // "exact", "schlick"
 
 // Everything a run reports: the run's own values (photons, seed, threads, seconds, photons_requested,
-// partial, scene, fresnel, polarisation, max_events, paths, sources) and then every tally's report.
+// partial, scene, fresnel, polarisation, max_events, paths, sources, wavelength_nm, spectra) and then every
+// tally's report.
 ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info);
 
 // summary.json: the report's summary, keys in the order docs/cli.md gives them, then any others.

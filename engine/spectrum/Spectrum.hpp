@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -60,6 +61,18 @@ private:
     std::vector<double> gridNm_;
     std::vector<double> cumulative_;
 };
+
+// "lines", "uniform", "table", "blackbody", "sun": as scene files and summary.json name them.
+inline std::string_view spectrumKindName(Spectrum::Kind kind) {
+    switch (kind) {
+    case Spectrum::Kind::Lines: return "lines";
+    case Spectrum::Kind::Uniform: return "uniform";
+    case Spectrum::Kind::Table: return "table";
+    case Spectrum::Kind::Blackbody: return "blackbody";
+    case Spectrum::Kind::Sun: return "sun";
+    }
+    return "?";
+}
 
 inline constexpr double kSunKelvin = 5778.0;
 inline constexpr std::pair<double, double> kSunRangeNm{380.0, 780.0};
