@@ -9,8 +9,8 @@ namespace dropscope {
 // dropscope_embed_text), so that no program needs to find the assets at run time. Each file starts with
 // '#' lines naming its source, then a header line, then rows of comma-separated numbers.
 namespace embedded {
-extern const std::string_view kCie1931Cmf;   // assets/data/cie1931_2deg_cmf.csv
-extern const std::string_view kWaterKappa;   // assets/data/water_kappa_hale_querry_1973.csv
+extern const std::string_view kCie1931Cmf;  // assets/data/cie1931_2deg_cmf.csv
+extern const std::string_view kWaterKappa;  // assets/data/water_kappa_hale_querry_1973.csv
 }  // namespace embedded
 
 // The rows of numbers of such a file (comments and the header line skipped), each with `columns` numbers.

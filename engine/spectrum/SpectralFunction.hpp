@@ -49,7 +49,7 @@ public:
     bool isConstant() const { return kind_ == Kind::Constant; }
 
     // The value at `wavelengthNm`. Throws std::out_of_range, with a message that names the wavelength and
-    // the valid range ("700 nm is outside the table's 400-650 nm"), outside domainNm(); std::domain_error
+    // the valid range ("700 nm is outside the table (400-650 nm)"), outside domainNm(); std::domain_error
     // where a model has no real value (a Sellmeier pole, n^2 <= 0).
     double at(double wavelengthNm) const;
     // The wavelengths where at() is defined, both ends included; nullopt: every wavelength > 0.
