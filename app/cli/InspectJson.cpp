@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <ostream>
+#include <stdexcept>
 
 namespace dropscope {
 
@@ -24,12 +25,31 @@ Json mediaJson(const Scene& scene) {
     Json media = Json::array();
     for (std::size_t id = 0; id < scene.media.size(); ++id) {
         const Medium& medium = scene.media[id];
+        Json dispersion = nullptr;
+        if (medium.dispersive()) {
+            Json values = Json::array();
+            for (const double wavelength : inspectWavelengthsNm(scene)) {
+                Json value = {{"wavelength_nm", wavelength}, {"n", nullptr}, {"absorption_per_unit", nullptr}};
+                try {
+                    const MediumOptics optics = mediumOpticsAt(medium, wavelength, scene.unitInMetres);
+                    value["n"] = optics.n;
+                    value["absorption_per_unit"] = optics.absorptionPerUnit;
+                } catch (const std::logic_error&) {  // outside the model's range: null
+                }
+                values.push_back(value);
+            }
+            dispersion = {{"n", spectralModelText(medium.nModel)},
+                          {"kappa", spectralModelText(medium.kappaModel)},
+                          {"sigma", spectralModelText(medium.sigmaModel)},
+                          {"values", values}};
+        }
         media.push_back({{"id", id},
                          {"name", medium.name},
                          {"n", medium.n},
                          {"kappa", optionalJson(medium.kappa)},
                          {"sigma", optionalJson(medium.sigma)},
-                         {"absorption_per_unit", medium.absorptionPerUnit}});
+                         {"absorption_per_unit", medium.absorptionPerUnit},
+                         {"dispersion", dispersion}});
     }
     return media;
 }
@@ -72,6 +92,22 @@ Json polarisationJson(const SourcePolarisation& polarisation) {
     return nullptr;
 }
 
+// null for the scene's line; else the kind and the range (and a blackbody's temperature).
+Json spectrumJson(const Source& source) {
+    if (!source.spectrum) return nullptr;
+    const auto [lo, hi] = source.spectrum->rangeNm();
+    Json json = {{"kind", spectrumKindName(source.spectrum->kind())}, {"lo_nm", lo}, {"hi_nm", hi}};
+    if (source.spectrum->kind() == Spectrum::Kind::Lines) {
+        Json lines = Json::array();
+        for (const auto& [wavelength, weight] : source.spectrum->pointsNm()) lines.push_back({wavelength, weight});
+        json["lines_nm"] = lines;
+    }
+    if (source.spectrum->kind() == Spectrum::Kind::Blackbody || source.spectrum->kind() == Spectrum::Kind::Sun) {
+        json["kelvin"] = source.spectrum->kelvin();
+    }
+    return json;
+}
+
 Json sourcesJson(const Scene& scene) {
     Json sources = Json::array();
     for (std::size_t id = 0; id < scene.sources.size(); ++id) {
@@ -82,7 +118,9 @@ Json sourcesJson(const Scene& scene) {
              {"origin", vectorJson(source.origin)},
              {"direction", source.type == SourceType::PointSource ? Json(nullptr) : vectorJson(source.direction)},
              {"radius", source.type == SourceType::Beam ? Json(source.radius) : Json(nullptr)},
-             {"polarisation", polarisationJson(source.polarisation)}});
+             {"polarisation", polarisationJson(source.polarisation)},
+             {"spectrum", spectrumJson(source)},
+             {"divergence_deg", source.divergenceDeg}});
     }
     return sources;
 }

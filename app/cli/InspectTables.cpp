@@ -2,7 +2,10 @@
 #include "cli/TextTable.hpp"
 #include "geometry/GeneralShape.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <ostream>
+#include <stdexcept>
 #include <sstream>
 
 namespace dropscope {
@@ -29,14 +32,47 @@ void writeMedia(const Scene& scene, std::ostream& out) {
                      {"n", Align::Right},
                      {"kappa", Align::Right},
                      {"sigma", Align::Right},
-                     {"absorption [1/" + scene.unit + "]", Align::Right}});
+                     {"absorption [1/" + scene.unit + "]", Align::Right},
+                     {"dispersion"}});
+    bool dispersive = false;
     for (std::size_t id = 0; id < scene.media.size(); ++id) {
         const Medium& medium = scene.media[id];
+        std::string models;
+        const auto add = [&](const char* key, const std::optional<SpectralFunction>& model) {
+            if (model) models += (models.empty() ? "" : ", ") + std::string(key) + ": " + spectralModelText(model);
+        };
+        add("n", medium.nModel);
+        add("kappa", medium.kappaModel);
+        add("sigma", medium.sigmaModel);
+        dispersive |= medium.dispersive();
         table.addRow({std::to_string(id), medium.name, formatNumber(medium.n), optionalNumber(medium.kappa),
-                      optionalNumber(medium.sigma), formatNumber(medium.absorptionPerUnit)});
+                      optionalNumber(medium.sigma), formatNumber(medium.absorptionPerUnit),
+                      models.empty() ? "-" : models});
     }
-    out << "\nmedia\n";
+    out << "\nmedia (at " << formatNumber(scene.wavelengthNm) << " nm)\n";
     table.write(out);
+    if (!dispersive) return;
+
+    TextTable dispersion({{"medium"},
+                          {"wavelength [nm]", Align::Right},
+                          {"n", Align::Right},
+                          {"absorption [1/" + scene.unit + "]", Align::Right}});
+    for (const Medium& medium : scene.media) {
+        if (!medium.dispersive()) continue;
+        for (const double wavelength : inspectWavelengthsNm(scene)) {
+            std::string n = "-";
+            std::string absorption = "-";
+            try {
+                const MediumOptics optics = mediumOpticsAt(medium, wavelength, scene.unitInMetres);
+                n = formatNumber(optics.n);
+                absorption = formatNumber(optics.absorptionPerUnit);
+            } catch (const std::logic_error&) {  // outside the model's range: shown as "-"
+            }
+            dispersion.addRow({medium.name, formatNumber(wavelength), n, absorption});
+        }
+    }
+    out << "\ndispersive media\n";
+    dispersion.write(out);
 }
 
 void writeShapes(const Scene& scene, std::ostream& out) {
@@ -105,13 +141,14 @@ void writeSources(const Scene& scene, std::ostream& out) {
                      {"origin"},
                      {"direction"},
                      {"radius [" + scene.unit + "]", Align::Right},
-                     {"polarisation"}});
+                     {"polarisation"},
+                     {"spectrum"}});
     for (std::size_t id = 0; id < scene.sources.size(); ++id) {
         const Source& source = scene.sources[id];
         table.addRow({std::to_string(id), std::string(sourceTypeName(source.type)), formatVector(source.origin),
                       source.type == SourceType::PointSource ? "-" : formatVector(source.direction),
                       source.type == SourceType::Beam ? formatNumber(source.radius) : "-",
-                      polarisationText(source.polarisation)});
+                      polarisationText(source.polarisation), spectrumText(source)});
     }
     out << "\nsources\n";
     table.write(out);
@@ -151,6 +188,49 @@ void writeOctree(const SceneSummary& summary, std::ostream& out) {
 }
 
 }  // namespace
+
+std::vector<double> inspectWavelengthsNm(const Scene& scene) {
+    std::vector<double> wavelengths;
+    for (const Source& source : scene.sources) {
+        if (!source.spectrum || source.spectrum->kind() != Spectrum::Kind::Lines) continue;
+        for (const auto& line : source.spectrum->pointsNm()) wavelengths.push_back(line.first);
+    }
+    if (wavelengths.empty()) return {std::begin(kInspectWavelengthsNm), std::end(kInspectWavelengthsNm)};
+    std::sort(wavelengths.begin(), wavelengths.end());
+    wavelengths.erase(std::unique(wavelengths.begin(), wavelengths.end()), wavelengths.end());
+    return wavelengths;
+}
+
+std::string spectralModelText(const std::optional<SpectralFunction>& model) {
+    if (!model) return "-";
+    switch (model->kind()) {
+    case SpectralFunction::Kind::Constant: return formatNumber(model->constantValue());
+    case SpectralFunction::Kind::Table: return "table (" + std::to_string(model->tablePointsNm().size()) + " points)";
+    case SpectralFunction::Kind::Cauchy: return "cauchy (" + std::to_string(model->coefficients().size()) + " terms)";
+    case SpectralFunction::Kind::Sellmeier:
+        return "sellmeier (" + std::to_string(model->coefficients().size()) + " terms)";
+    case SpectralFunction::Kind::Builtin:
+        return "builtin " + materialName(model->material()) +
+               (model->material() == Material::Water && model->quantity() == OpticalQuantity::N
+                    ? " (" + formatNumber(model->temperatureC()) + " C)"
+                    : "");
+    }
+    return "?";
+}
+
+std::string spectrumText(const Source& source) {
+    std::string text = "scene line";
+    if (source.spectrum) {
+        const Spectrum& spectrum = *source.spectrum;
+        const auto [lo, hi] = spectrum.rangeNm();
+        text = std::string(spectrumKindName(spectrum.kind())) + " " + formatNumber(lo) +
+               (lo == hi ? "" : "-" + formatNumber(hi)) + " nm";
+        if (spectrum.kind() == Spectrum::Kind::Lines) text += " (" + std::to_string(spectrum.pointsNm().size()) + ")";
+        if (spectrum.kind() == Spectrum::Kind::Blackbody) text += " at " + formatNumber(spectrum.kelvin()) + " K";
+    }
+    if (source.divergenceDeg > 0.0) text += ", divergence " + formatNumber(source.divergenceDeg) + " deg";
+    return text;
+}
 
 void writeInspectTables(const Scene& scene, const SceneSummary& summary, std::ostream& out) {
     writeSettings(scene, out);

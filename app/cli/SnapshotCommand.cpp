@@ -48,9 +48,10 @@ void addLayerOptions(CLI::App& command, SnapshotCommandOptions& options) {
         ->check(CLI::IsMember({"level", "occupancy"}));
     command
         .add_option("--colour-by", options.colourBy,
-                    "Paths coloured by weight (viridis), by event type, or by degree of linear polarisation (viridis)")
+                    "Paths coloured by weight (viridis), by event type, by degree of linear polarisation (viridis) "
+                    "or by the colour of their wavelength (CIE 1931)")
         ->capture_default_str()
-        ->check(CLI::IsMember({"weight", "event", "dolp"}));
+        ->check(CLI::IsMember({"weight", "event", "dolp", "wavelength"}));
     command
         .add_option("--polarisation", options.polarisation,
                     "Paths and ray tree traced with Stokes vectors, or with the unpolarised reflectance (as trace)")
@@ -93,9 +94,10 @@ void applyLayerOptions(SnapshotCommandOptions& options) {
             "--colour-by dolp: needs --polarisation stokes (paths without polarisation have no degree "
             "of polarisation)");
     }
-    layers.pathColouring = options.colourBy == "event"  ? render::PathColouring::Event
-                           : options.colourBy == "dolp" ? render::PathColouring::Dolp
-                                                        : render::PathColouring::Weight;
+    layers.pathColouring = options.colourBy == "event"        ? render::PathColouring::Event
+                           : options.colourBy == "dolp"       ? render::PathColouring::Dolp
+                           : options.colourBy == "wavelength" ? render::PathColouring::Wavelength
+                                                              : render::PathColouring::Weight;
     options.render.polarisation = options.polarisation == "none" ? PolarisationModel::None : PolarisationModel::Stokes;
     layers.render.shapes = !options.noShapes;
 }

@@ -1,6 +1,7 @@
 #include "render/PathLayer.hpp"
 
 #include "render/Colour.hpp"
+#include "spectrum/Colour.hpp"
 
 namespace dropscope::render {
 
@@ -9,8 +10,15 @@ namespace {
 // Paths traced without polarisation have no degree of polarisation to show.
 constexpr Colour kNoPolarisationColour{0.55f, 0.55f, 0.55f};
 
+Colour wavelengthColour(double wavelengthNm) {
+    // Line colours reach the image as they are (the renderer applies no transfer curve): sRGB-encoded.
+    const Rgb rgb = displayColourOfWavelength(wavelengthNm);
+    return {static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]), 1.0f};
+}
+
 Colour segmentColour(const Event& start, PathColouring colouring) {
     switch (colouring) {
+    case PathColouring::Wavelength: break;  // one colour per path (addPhotonPaths)
     case PathColouring::Weight: return viridis(start.weight);
     case PathColouring::Event: return eventColour(start.type);
     case PathColouring::Dolp:
@@ -26,13 +34,18 @@ void addPhotonPaths(LineBatch& lines, const std::vector<PhotonPath>& paths, doub
                     PathColouring colouring) {
     for (const PhotonPath& path : paths) {
         if (path.events.empty()) continue;
+        const bool byWavelength = colouring == PathColouring::Wavelength;
+        const Colour pathColour = byWavelength ? wavelengthColour(path.wavelengthNm) : Colour{};
+        const auto colourFrom = [&](const Event& start) {
+            return byWavelength ? pathColour : segmentColour(start, colouring);
+        };
         for (std::size_t k = 0; k + 1 < path.events.size(); ++k) {
-            lines.add(path.events[k].position, path.events[k + 1].position, segmentColour(path.events[k], colouring));
+            lines.add(path.events[k].position, path.events[k + 1].position, colourFrom(path.events[k]));
         }
         const Event& last = path.events.back();
         if (last.type == EventType::Escape) {
             const Point end = last.position + escapeLength * last.direction.vector();
-            lines.add(last.position, end, segmentColour(last, colouring));
+            lines.add(last.position, end, colourFrom(last));
         }
     }
 }

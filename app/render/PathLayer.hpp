@@ -14,6 +14,7 @@ enum class PathColouring {
     Event,   // by the type of the event the segment starts at (eventColour): how the light got there
     Dolp,    // along viridis by the degree of linear polarisation the segment starts with; grey when the
              // photons carry no polarisation (traced with PolarisationModel::None)
+    Wavelength,  // the colour of the photon's wavelength (displayColourOfWavelength, docs/spectra.md "Colour")
 };
 
 // Photon paths as polylines; an escape goes on for `escapeLength` along its direction.
