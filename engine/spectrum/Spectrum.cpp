@@ -11,7 +11,7 @@ namespace dropscope {
 namespace {
 
 // The blackbody grid starts with this many segments and doubles until the cdf stops changing by more than
-// kBlackbodyCdfError (docs/spectra.md, "Blackbody and sun"). 256 already resolves the sun to ~1e-5.
+// kBlackbodyCdfError (docs/spectra.md, "Spectra", on blackbodies).
 constexpr std::size_t kFirstBlackbodySegments = 256;
 // Beyond this many segments (16 MB of tables) a blackbody is refused: its emission lies in a band too narrow
 // for a uniform grid over [lo, hi] (a body far too cold for the range, e.g. 0.1 K over the visible; 1 K still works).

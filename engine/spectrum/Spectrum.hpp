@@ -58,7 +58,7 @@ private:
     std::vector<std::pair<double, double>> points_;
     double kelvin_ = 0.0;
     std::pair<double, double> bounds_{0.0, 0.0};
-    // Sampling tables built by the factories (docs/spectra.md, "Sampling"). Lines: the distinct wavelengths,
+    // Sampling tables built by the factories (docs/spectra.md, "Spectra"). Lines: the distinct wavelengths,
     // ascending, and the probability of lambda <= each. Table, blackbody, sun: the nodes of a piecewise-linear
     // density (the table's points; a fine grid over bounds_), the density there (normalised: integral 1)
     // and the cumulative probability at each node.
@@ -68,7 +68,7 @@ private:
 };
 
 inline constexpr double kSunKelvin = 5778.0;
-// The largest error of a blackbody's tabulated cdf (docs/spectra.md, "Blackbody and sun"): a thousandth of
+// The largest error of a blackbody's tabulated cdf (docs/spectra.md, "Spectra"): a thousandth of
 // the statistical noise, 1e-4, of a band's share of 1e8 photons (the largest runs), so no run can see it.
 inline constexpr double kBlackbodyCdfError = 1e-7;
 inline constexpr std::pair<double, double> kSunRangeNm{380.0, 780.0};
