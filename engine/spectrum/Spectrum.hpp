@@ -52,13 +52,19 @@ public:
     }
 
 private:
+    // The factories' start (the public default constructor is itself a factory's result).
+    explicit Spectrum(Kind kind) : kind_(kind) {}
+
     Kind kind_ = Kind::Lines;
     std::vector<std::pair<double, double>> points_;
     double kelvin_ = 0.0;
     std::pair<double, double> bounds_{0.0, 0.0};
-    // Sampling tables built by the factories: cumulative probabilities at points_ (lines, table) or at a
-    // fine grid over bounds_ (blackbody, sun).
+    // Sampling tables built by the factories (docs/spectra.md, "Spectra"). Lines: the distinct wavelengths,
+    // ascending, and the probability of lambda <= each. Table, blackbody, sun: the nodes of a piecewise-linear
+    // density (the table's points; a fine grid over bounds_), the density there (normalised: integral 1)
+    // and the cumulative probability at each node.
     std::vector<double> gridNm_;
+    std::vector<double> density_;
     std::vector<double> cumulative_;
 };
 
@@ -75,9 +81,15 @@ inline std::string_view spectrumKindName(Spectrum::Kind kind) {
 }
 
 inline constexpr double kSunKelvin = 5778.0;
+// The largest error of a blackbody's tabulated cdf (docs/spectra.md, "Spectra"): a thousandth of
+// the statistical noise, 1e-4, of a band's share of 1e8 photons (the largest runs), so no run can see it.
+inline constexpr double kBlackbodyCdfError = 1e-7;
 inline constexpr std::pair<double, double> kSunRangeNm{380.0, 780.0};
 
-// Planck's spectral radiance per unit wavelength, up to a constant factor: lambda^-5 / (exp(hc/(lambda k T)) - 1).
+// hc/k, the second radiation constant, in m K (CODATA 2018: h, c and k are exact in the 2019 SI).
+inline constexpr double kSecondRadiationConstant = 1.438776877e-2;
+// Planck's spectral radiance per unit wavelength, up to a constant factor: lambda^-5 / (exp(hc/(lambda k T)) - 1)
+// with lambda in metres (B_lambda / 2hc^2, in m^-5).
 double planckDensity(double wavelengthNm, double kelvin);
 
 }  // namespace dropscope
