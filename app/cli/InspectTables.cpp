@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <iterator>
 #include <ostream>
-#include <stdexcept>
 #include <sstream>
+#include <stdexcept>
 
 namespace dropscope {
 
@@ -223,8 +223,11 @@ std::string spectrumText(const Source& source) {
     if (source.spectrum) {
         const Spectrum& spectrum = *source.spectrum;
         const auto [lo, hi] = spectrum.rangeNm();
-        text = std::string(spectrumKindName(spectrum.kind())) + " " + formatNumber(lo) +
-               (lo == hi ? "" : "-" + formatNumber(hi)) + " nm";
+        text = std::string(spectrumKindName(spectrum.kind()));
+        text += ' ';
+        text += formatNumber(lo);
+        if (lo != hi) text += '-' + formatNumber(hi);
+        text += " nm";
         if (spectrum.kind() == Spectrum::Kind::Lines) text += " (" + std::to_string(spectrum.pointsNm().size()) + ")";
         if (spectrum.kind() == Spectrum::Kind::Blackbody) text += " at " + formatNumber(spectrum.kelvin()) + " K";
     }

@@ -10,10 +10,10 @@ namespace dropscope::render {
 
 // How photon path segments are coloured.
 enum class PathColouring {
-    Weight,  // along viridis by the weight the segment starts with (an analog photon's is 1: the top)
-    Event,   // by the type of the event the segment starts at (eventColour): how the light got there
-    Dolp,    // along viridis by the degree of linear polarisation the segment starts with; grey when the
-             // photons carry no polarisation (traced with PolarisationModel::None)
+    Weight,      // along viridis by the weight the segment starts with (an analog photon's is 1: the top)
+    Event,       // by the type of the event the segment starts at (eventColour): how the light got there
+    Dolp,        // along viridis by the degree of linear polarisation the segment starts with; grey when the
+                 // photons carry no polarisation (traced with PolarisationModel::None)
     Wavelength,  // the colour of the photon's wavelength (displayColourOfWavelength, docs/spectra.md "Colour")
 };
 

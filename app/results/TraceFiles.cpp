@@ -29,7 +29,8 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
         const Spectrum spectrum = sourceSpectrum(source, info.sceneWavelengthNm);
         const std::string key = std::to_string(i);
         const auto [lo, hi] = spectrum.rangeNm();
-        report.set({"spectra", key, "spectrum"}, std::string(source.spectrum ? spectrumKindName(spectrum.kind()) : "scene"));
+        report.set({"spectra", key, "spectrum"},
+                   std::string(source.spectrum ? spectrumKindName(spectrum.kind()) : "scene"));
         report.set({"spectra", key, "lo_nm"}, lo);
         report.set({"spectra", key, "hi_nm"}, hi);
         if (spectrum.kind() == Spectrum::Kind::Lines) {
@@ -47,10 +48,9 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
 void writeTraceSummary(const ResultReport& report, std::ostream& out) {
     // docs/cli.md's order: scripts that diff summaries across versions see the same file.
     static const std::vector<std::string_view> kKeyOrder{
-        "photons",           "seed",    "threads", "seconds",      "fractions", "events",
-        "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
-        "max_events",        "paths",   "counts",  "lost_reasons", "sources",   "wavelength_nm",
-        "spectra"};
+        "photons", "seed",         "threads", "seconds",       "fractions",       "events",     "photons_requested",
+        "partial", "scene",        "bins",    "fresnel",       "polarisation",    "max_events", "paths",
+        "counts",  "lost_reasons", "sources", "wavelength_nm", "wavelength_bins", "spectra"};
     writeSummaryJson(report, kKeyOrder, out);
 }
 

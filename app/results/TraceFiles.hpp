@@ -18,8 +18,8 @@ struct TraceRunInfo {
     std::string scenePath;  // as given on the command line
     std::size_t sourceCount = 0;
     TraceSettings settings;
-    double sceneWavelengthNm = 0.0;  // 0: not reported
-    std::vector<Source> sources;     // their spectra and divergences are reported (none: not reported)
+    double sceneWavelengthNm = 0.0;    // 0: not reported
+    std::vector<Source> sources = {};  // their spectra and divergences are reported (none: not reported)
 };
 
 std::string_view fresnelModelName(FresnelModel model);  // "exact", "schlick"

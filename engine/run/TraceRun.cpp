@@ -122,8 +122,8 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                         events = &paths[photon].events;
                     }
                     PhotonScorer scorer(local, photon, sourceIndex, events);
-                    const PhotonOutcome outcome =
-                        tracePhoton(scene, emitted, random, settings.transport, &scorer, polarisation, light.wavelengthNm);
+                    const PhotonOutcome outcome = tracePhoton(scene, emitted, random, settings.transport, &scorer,
+                                                              polarisation, light.wavelengthNm);
                     if (photon < recorded) paths[photon].fate = outcome.fate;
                 }
                 done.fetch_add(last - first, std::memory_order_relaxed);

@@ -23,7 +23,9 @@ double checkedSpectralValue(const SpectralFunction& model, OpticalQuantity quant
     const bool positive = quantity == OpticalQuantity::N;
     if (!std::isfinite(value) || (positive ? value <= 0.0 : value < 0.0)) {
         std::ostringstream message;
-        message << (quantity == OpticalQuantity::N ? "n" : quantity == OpticalQuantity::Kappa ? "kappa" : "sigma")
+        message << (quantity == OpticalQuantity::N       ? "n"
+                    : quantity == OpticalQuantity::Kappa ? "kappa"
+                                                         : "sigma")
                 << " is " << value << " at " << formatWavelength(wavelengthNm)
                 << (positive ? " (must be > 0)" : " (must be >= 0)");
         throw std::domain_error(message.str());
@@ -45,13 +47,16 @@ MediumOptics mediumOpticsAt(const Medium& medium, double wavelengthNm, double un
 
 void evaluateMediumAt(Medium& medium, double wavelengthNm, double unitInMetres) {
     if (medium.nModel) medium.n = checkedSpectralValue(*medium.nModel, OpticalQuantity::N, wavelengthNm);
-    if (medium.kappaModel) medium.kappa = checkedSpectralValue(*medium.kappaModel, OpticalQuantity::Kappa, wavelengthNm);
-    if (medium.sigmaModel) medium.sigma = checkedSpectralValue(*medium.sigmaModel, OpticalQuantity::Sigma, wavelengthNm);
+    if (medium.kappaModel)
+        medium.kappa = checkedSpectralValue(*medium.kappaModel, OpticalQuantity::Kappa, wavelengthNm);
+    if (medium.sigmaModel)
+        medium.sigma = checkedSpectralValue(*medium.sigmaModel, OpticalQuantity::Sigma, wavelengthNm);
     medium.absorptionPerUnit = 0.0;
     if (medium.sigma) {
         medium.absorptionPerUnit = *medium.sigma;
     } else if (medium.kappa) {
-        medium.absorptionPerUnit = absorptionFromExtinction(*medium.kappa, wavelengthInUnits(wavelengthNm, unitInMetres));
+        medium.absorptionPerUnit =
+            absorptionFromExtinction(*medium.kappa, wavelengthInUnits(wavelengthNm, unitInMetres));
     }
 }
 

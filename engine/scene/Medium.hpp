@@ -20,9 +20,9 @@ struct Medium {
     // sigma = 2*omega*kappa/c with omega = 2*pi*c/lambda); 0 for a clear medium.
     double absorptionPerUnit = 0.0;
     // Dispersion: the functions of wavelength n, kappa and sigma were given as (absent: a number).
-    std::optional<SpectralFunction> nModel;
-    std::optional<SpectralFunction> kappaModel;
-    std::optional<SpectralFunction> sigmaModel;
+    std::optional<SpectralFunction> nModel = std::nullopt;
+    std::optional<SpectralFunction> kappaModel = std::nullopt;
+    std::optional<SpectralFunction> sigmaModel = std::nullopt;
 
     bool dispersive() const { return nModel || kappaModel || sigmaModel; }
 };

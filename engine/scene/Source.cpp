@@ -96,7 +96,8 @@ std::pair<double, double> wavelengthRangeNm(const std::vector<Source>& sources, 
     std::pair<double, double> range{sceneWavelengthNm, sceneWavelengthNm};
     bool first = true;
     for (const Source& source : sources) {
-        const auto [lo, hi] = source.spectrum ? source.spectrum->rangeNm() : std::pair{sceneWavelengthNm, sceneWavelengthNm};
+        const auto [lo, hi] =
+            source.spectrum ? source.spectrum->rangeNm() : std::pair{sceneWavelengthNm, sceneWavelengthNm};
         range = first ? std::pair{lo, hi} : std::pair{std::min(range.first, lo), std::max(range.second, hi)};
         first = false;
     }

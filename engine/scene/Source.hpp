@@ -41,8 +41,8 @@ struct Source {
     Direction direction{0.0, 0.0, 1.0};
     double radius = 0.0;
     SourcePolarisation polarisation = {};
-    std::optional<Spectrum> spectrum;  // absent: one line at the scene's wavelength_nm
-    double divergenceDeg = 0.0;        // in [0, kMaxDivergenceDeg); 0 for a point source
+    std::optional<Spectrum> spectrum = std::nullopt;  // absent: one line at the scene's wavelength_nm
+    double divergenceDeg = 0.0;                       // in [0, kMaxDivergenceDeg); 0 for a point source
 };
 
 // A divergence must leave every direction of the cone on the source's side, so that a polarisation

@@ -64,7 +64,8 @@ std::variant<double, SpectralFunction> readSpectralValue(const JsonReader& json,
     }
     if (const auto sellmeier = json.optionalMember("sellmeier_um")) {
         json.expectKeys({"sellmeier_um"});
-        if (quantity != OpticalQuantity::N) sellmeier->fail("Sellmeier's formula gives a refractive index: use it for n");
+        if (quantity != OpticalQuantity::N)
+            sellmeier->fail("Sellmeier's formula gives a refractive index: use it for n");
         sellmeier->expectKeys({"B", "C"});
         const std::vector<double> b = readNumbers(sellmeier->member("B"));
         const std::vector<double> c = readNumbers(sellmeier->member("C"));
@@ -74,7 +75,8 @@ std::variant<double, SpectralFunction> readSpectralValue(const JsonReader& json,
         json.expectKeys({"builtin", "temperature_c"});
         const std::string name = builtin->string();
         const std::optional<Material> material = materialNamed(name);
-        if (!material) builtin->fail("unknown material " + jsonpath::quoted(name) + " (known: water, bk7, fused_silica)");
+        if (!material)
+            builtin->fail("unknown material " + jsonpath::quoted(name) + " (known: water, bk7, fused_silica)");
         double temperature = 20.0;
         if (const auto t = json.optionalMember("temperature_c")) {
             if (*material != Material::Water) t->fail("only water's index depends on a temperature here");
@@ -89,7 +91,8 @@ std::variant<double, SpectralFunction> readSpectralValue(const JsonReader& json,
 Spectrum readSpectrum(const JsonReader& json) {
     if (json.isString()) {
         const std::string name = json.string();
-        if (name != "sun") json.fail("unknown spectrum " + jsonpath::quoted(name) + " (expected " + kSpectrumForms + ")");
+        if (name != "sun")
+            json.fail("unknown spectrum " + jsonpath::quoted(name) + " (expected " + kSpectrumForms + ")");
         return Spectrum::sun();
     }
     if (!json.isObject()) json.fail(std::string("expected ") + kSpectrumForms);

@@ -24,10 +24,12 @@ std::string problemOn(const SpectralFunction& model, OpticalQuantity quantity, c
         const auto [lo, hi] = spectrum.rangeNm();
         if (const auto domain = model.domainNm(); domain && (lo < domain->first || hi > domain->second)) {
             return "the spectrum's " + formatWavelength(lo) + " to " + formatWavelength(hi) + " is not within " +
-                   formatWavelength(domain->first) + " to " + formatWavelength(domain->second) + ", where it is defined";
+                   formatWavelength(domain->first) + " to " + formatWavelength(domain->second) +
+                   ", where it is defined";
         }
         for (int i = 0; i <= kCoverageSamplesPerSpectrum; ++i) {
-            wavelengths.push_back(i == kCoverageSamplesPerSpectrum ? hi : lo + (hi - lo) * i / kCoverageSamplesPerSpectrum);
+            wavelengths.push_back(i == kCoverageSamplesPerSpectrum ? hi
+                                                                   : lo + (hi - lo) * i / kCoverageSamplesPerSpectrum);
         }
     }
     for (const double wavelength : wavelengths) {
@@ -43,8 +45,8 @@ std::string problemOn(const SpectralFunction& model, OpticalQuantity quantity, c
 }  // namespace
 
 std::optional<WavelengthCoverageProblem> findWavelengthCoverageProblem(const std::vector<Medium>& media,
-                                                                        const std::vector<Source>& sources,
-                                                                        double sceneWavelengthNm) {
+                                                                       const std::vector<Source>& sources,
+                                                                       double sceneWavelengthNm) {
     for (std::size_t m = 0; m < media.size(); ++m) {
         const Medium& medium = media[m];
         const std::pair<const std::optional<SpectralFunction>*, OpticalQuantity> models[] = {

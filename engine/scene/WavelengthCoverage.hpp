@@ -22,8 +22,8 @@ struct WavelengthCoverageProblem {
 // must lie within the model's domain, and the model is evaluated at its ends and at
 // kCoverageSamplesPerSpectrum wavelengths between them (docs/spectra.md, "Checking media against spectra").
 std::optional<WavelengthCoverageProblem> findWavelengthCoverageProblem(const std::vector<Medium>& media,
-                                                                        const std::vector<Source>& sources,
-                                                                        double sceneWavelengthNm);
+                                                                       const std::vector<Source>& sources,
+                                                                       double sceneWavelengthNm);
 
 // How densely a continuous spectrum's range is checked: finer than any tabulated medium data in assets/data
 // (1 nm over 360-830 nm needs ~470), coarse enough to cost nothing at load.

@@ -17,8 +17,8 @@ struct WavelengthBins {
     // Throws std::invalid_argument for count < 1, a range that is not finite and positive or has lo > hi,
     // and count > 1 on a single wavelength.
     void check() const;
-    double edgeNm(int k) const;             // lo + (hi - lo) k / K, exactly hi at k = K
-    int binOf(double wavelengthNm) const;   // clamped to [0, K)
+    double edgeNm(int k) const;            // lo + (hi - lo) k / K, exactly hi at k = K
+    int binOf(double wavelengthNm) const;  // clamped to [0, K)
 };
 
 // The angular distribution per wavelength band: the table "angular_spectral" (angular_spectral.csv,

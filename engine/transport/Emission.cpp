@@ -65,7 +65,8 @@ Direction directionInCone(const Direction& axis, double halfAngleDeg, PhotonRand
 
 EmittedLight emitLight(const Source& source, const Spectrum& spectrum, PhotonRandom& sourceRandom) {
     EmittedLight light;
-    light.wavelengthNm = spectrum.drawsRandomNumbers() ? spectrum.sample(sourceRandom.uniform()) : spectrum.rangeNm().first;
+    light.wavelengthNm =
+        spectrum.drawsRandomNumbers() ? spectrum.sample(sourceRandom.uniform()) : spectrum.rangeNm().first;
     light.direction = source.divergenceDeg > 0.0 ? directionInCone(source.direction, source.divergenceDeg, sourceRandom)
                                                  : source.direction;
     return light;

@@ -38,7 +38,8 @@ void OpticalScene::opticsAt(double wavelengthNm, std::vector<MediumOptics>& opti
         return;
     }
     optics.resize(media_.size());
-    for (std::size_t id = 0; id < media_.size(); ++id) optics[id] = mediumOpticsAt(media_[id], wavelengthNm, unitInMetres_);
+    for (std::size_t id = 0; id < media_.size(); ++id)
+        optics[id] = mediumOpticsAt(media_[id], wavelengthNm, unitInMetres_);
 }
 
 ShapeId OpticalScene::smallestContainer(const Shape& inner, ShapeId innerId) const {

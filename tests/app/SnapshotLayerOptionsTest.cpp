@@ -101,7 +101,7 @@ TEST(SnapshotLayerOptions, BadValuesAreBadInput) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
         {{"--octree-filter", "all"}, "--octree-filter: all not in {level,upto,leaves}"},
         {{"--octree-colour", "heat", "--octree-level", "1"}, "--octree-colour: heat not in {level,occupancy}"},
-        {{"--colour-by", "type"}, "--colour-by: type not in {weight,event,dolp}"},
+        {{"--colour-by", "type"}, "--colour-by: type not in {weight,event,dolp,wavelength}"},
         {{"--polarisation", "linear"}, "--polarisation: linear not in {stokes,none}"},
         {{"--colour-by", "dolp", "--polarisation", "none"}, "--colour-by dolp: needs --polarisation stokes"},
         {{"--select", "-1"}, "--select: Value -1 not in range"},

@@ -105,7 +105,7 @@ std::vector<std::string> keysOf(const Json& object) {
     return keys;
 }
 
-TEST_F(TraceCommand, WritesTheThreeFilesWithTheDocumentedKeys) {
+TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
     const CliRun run = trace(kDefaultScene, "20000", {"--paths", "3", "--bins", "36", "--seed", "9"});
     ASSERT_EQ(run.status, kExitSuccess) << run.err;
     EXPECT_EQ(run.err, "");  // no progress line: err is not a terminal
@@ -113,15 +113,20 @@ TEST_F(TraceCommand, WritesTheThreeFilesWithTheDocumentedKeys) {
     EXPECT_NE(run.out.find(path("out")), std::string::npos) << run.out;
 
     const Json s = summary();
-    EXPECT_EQ(keysOf(s),
-              (std::vector<std::string>{"photons", "seed", "threads", "seconds", "fractions", "events",
-                                        "photons_requested", "partial", "scene", "bins", "fresnel", "polarisation",
-                                        "max_events", "paths", "counts", "lost_reasons", "sources"}));
+    EXPECT_EQ(keysOf(s), (std::vector<std::string>{
+                             "photons",           "seed",    "threads", "seconds",      "fractions", "events",
+                             "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
+                             "max_events",        "paths",   "counts",  "lost_reasons", "sources",   "wavelength_nm",
+                             "wavelength_bins",   "spectra"}));
     EXPECT_EQ(keysOf(s["fractions"]), (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered"}));
     EXPECT_EQ(keysOf(s["counts"]), (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered"}));
     EXPECT_EQ(keysOf(s["events"]), (std::vector<std::string>{"reflect", "refract", "tir", "absorb"}));
     EXPECT_EQ(keysOf(s["lost_reasons"]),
               (std::vector<std::string>{"event_cap", "undefined_normal", "medium_mismatch", "no_exit"}));
+    EXPECT_EQ(s["wavelength_nm"], 532.0);
+    EXPECT_EQ(s["wavelength_bins"], 1);
+    EXPECT_EQ(s["spectra"], Json::parse(R"({"0": {"spectrum": "scene", "lo_nm": 532.0, "hi_nm": 532.0, "lines": 1,
+                                             "divergence_deg": 0.0}})"));
     EXPECT_EQ(s["photons"], 20000);
     EXPECT_EQ(s["photons_requested"], 20000);
     EXPECT_EQ(s["partial"], false);
@@ -220,9 +225,10 @@ TEST_F(TraceCommand, PathsHoldTheFirstKPhotonsFromEmissionToTheirFate) {
     for (std::size_t i = 0; i < jsonLines.size(); ++i) {
         SCOPED_TRACE(jsonLines[i]);
         const Json photon = Json::parse(jsonLines[i]);
-        EXPECT_EQ(keysOf(photon), (std::vector<std::string>{"photon", "source", "fate", "events"}));
+        EXPECT_EQ(keysOf(photon), (std::vector<std::string>{"photon", "source", "wavelength_nm", "fate", "events"}));
         EXPECT_EQ(photon["photon"], i);
         EXPECT_EQ(photon["source"], 0);
+        EXPECT_EQ(photon["wavelength_nm"], 532.0);  // the default scene's wavelength_nm, no spectrum
         const Json& events = photon["events"];
         ASSERT_GE(events.size(), 2u);
         EXPECT_EQ(events.front()["type"], "emit");
@@ -370,7 +376,7 @@ TEST_F(TraceCommand, BadInputLeavesAnEarlierRunsFilesAlone) {
     expectOneLineFailure(trace(kNoSources, "10"));
     expectOneLineFailure(trace(kSingleRay, "10", {"--bins", "0"}));
     EXPECT_EQ(read(path("out/summary.json")), before);
-    EXPECT_EQ(std::distance(fs::directory_iterator(path("out")), fs::directory_iterator()), 3);  // no leftovers
+    EXPECT_EQ(std::distance(fs::directory_iterator(path("out")), fs::directory_iterator()), 4);  // no leftovers
 }
 
 TEST_F(TraceCommand, AnOutputNameTakenByAFolderIsRefusedBeforeAnyFileIsReplaced) {

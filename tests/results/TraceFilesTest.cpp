@@ -121,7 +121,7 @@ TEST(TraceFiles, PolarisedPathEventsEndWithTheirStokesVectorAndReference) {
     path.events = {escape};
     std::ostringstream jsonl;
     writePathsJsonl({path}, media, jsonl);
-    EXPECT_EQ(jsonl.str(), R"({"photon":0,"source":0,"fate":"escaped","events":[)"
+    EXPECT_EQ(jsonl.str(), R"({"photon":0,"source":0,"wavelength_nm":0.0,"fate":"escaped","events":[)"
                            R"({"type":"escape","position":[0.0,0.0,0.0],"direction":[0.0,0.0,1.0],"shape":null,)"
                            R"("medium_from":"air","medium_to":"air","R":null,"weight":1.0,)"
                            R"("stokes":[1.0,-0.5,0.25,0.125],"stokes_reference":[0.0,1.0,0.0]}]})"
@@ -133,6 +133,7 @@ TEST(TraceFiles, PathEventsNameMediaAndWriteNullForNoShapeOrNoReflectance) {
     PhotonPath path;
     path.photon = 4;
     path.source = 1;
+    path.wavelengthNm = 486.125;
     path.fate = PhotonFate::Lost;
     Event emit;
     emit.direction = Direction(0, 0, 1);
@@ -150,7 +151,7 @@ TEST(TraceFiles, PathEventsNameMediaAndWriteNullForNoShapeOrNoReflectance) {
     std::ostringstream jsonl;
     writePathsJsonl({path}, media, jsonl);
     EXPECT_EQ(jsonl.str(),
-              R"({"photon":4,"source":1,"fate":"lost","events":[)"
+              R"({"photon":4,"source":1,"wavelength_nm":486.125,"fate":"lost","events":[)"
               R"({"type":"emit","position":[0.0,0.0,0.0],"direction":[0.0,0.0,1.0],"shape":null,)"
               R"("medium_from":"air","medium_to":"air","R":null,"weight":1.0},)"
               R"({"type":"refract","position":[0.0,0.0,0.0],"direction":[0.0,0.0,1.0],"shape":7,)"

@@ -2,8 +2,10 @@
 // the options below), byte for byte, at any thread count. The runs without polarisation were written by the
 // engine before its tallies moved onto Tally/TallySet and before photons carried Stokes vectors: with
 // --polarisation none every later change must keep them; their summary.json differs only in the
-// "polarisation": "none" line added since. "stokes" pins the polarised files as first written. summary.json's
-// "seconds" and "threads" are the only other lines allowed to differ.
+// "polarisation": "none" line added since. "stokes" pins the polarised files as first written. Since photons
+// carry wavelengths, summary.json has "wavelength_nm" and "spectra" and each line of paths.jsonl a
+// "wavelength_nm": those keys are checked here and then taken out, and what remains must be the reference's
+// bytes. summary.json's "seconds" and "threads" are the only other lines allowed to differ.
 #include "results/TraceFiles.hpp"
 #include "scene/SceneLoader.hpp"
 #include "tally/StandardTallies.hpp"
@@ -11,6 +13,7 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -59,6 +62,17 @@ std::string withoutTimings(const std::string& text) {
     return kept;
 }
 
+using Json = nlohmann::ordered_json;
+
+// `text` (summary.json, or one line of paths.jsonl) without `key`, written as the result writers write it,
+// after checking that the key holds `expected`.
+std::string withoutKey(const std::string& text, const char* key, const Json& expected, int indent) {
+    Json json = Json::parse(text);
+    EXPECT_EQ(json[key], expected) << key;
+    json.erase(key);
+    return json.dump(indent) + (indent >= 0 ? "\n" : "");
+}
+
 std::string contents(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     EXPECT_TRUE(in) << file;
@@ -74,7 +88,7 @@ TEST_P(TraceReference, FilesAreTheReferenceBytesOnOneAndTwoThreads) {
     const fs::path reference = fs::path(DROPSCOPE_TEST_DATA_DIR) / "trace-reference" / run.name;
     for (int threads : {1, 2}) {
         SCOPED_TRACE(::testing::Message() << run.name << ", " << threads << " thread(s)");
-        TraceRunInfo info{run.scene, scene.sources.size(), {}};
+        TraceRunInfo info{run.scene, scene.sources.size(), {}, scene.wavelengthNm, scene.sources};
         info.settings.photons = run.photons;
         info.settings.paths = run.paths;
         info.settings.seed = run.seed;
@@ -92,6 +106,10 @@ TEST_P(TraceReference, FilesAreTheReferenceBytesOnOneAndTwoThreads) {
             std::string actual = contents(out / name);
             std::string expected = contents(reference / name);
             if (name == "summary.json") {
+                actual = withoutKey(actual, "wavelength_nm", 532.0, 2);
+                actual = withoutKey(actual, "spectra", Json::parse(R"({"0": {"spectrum": "scene", "lo_nm": 532.0,
+                                                       "hi_nm": 532.0, "lines": 1, "divergence_deg": 0.0}})"),
+                                    2);
                 actual = withoutTimings(actual);
                 expected = withoutTimings(expected);
                 if (run.polarisation == PolarisationModel::None) {
@@ -99,6 +117,13 @@ TEST_P(TraceReference, FilesAreTheReferenceBytesOnOneAndTwoThreads) {
                     ASSERT_NE(line, std::string::npos) << actual;
                     actual.erase(line, std::string(kNoPolarisationLine).size());
                 }
+            }
+            if (name == "paths.jsonl") {
+                std::istringstream lines(actual);
+                std::string line;
+                std::string kept;
+                while (std::getline(lines, line)) kept += withoutKey(line, "wavelength_nm", 532.0, -1) + '\n';
+                actual = kept;
             }
             EXPECT_EQ(actual, expected) << name;
         }

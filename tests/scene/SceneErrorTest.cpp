@@ -114,7 +114,7 @@ TEST(SceneError, UnknownKeyWithoutANearOneListsTheValidKeys) {
               R"(scene.json: unknown key "camera" (valid keys: dropscope, unit, wavelength_nm, ambient, media, )"
               R"(shapes, sources, octree, generators, view))");
     EXPECT_EQ(sourceError(R"({"type": "point", "origin": [0, 0, 0], "direction": [0, 0, 1]})"),
-              R"(scene.json: sources[0]: unknown key "direction" (valid keys: type, origin, polarisation))");
+              R"(scene.json: sources[0]: unknown key "direction" (valid keys: type, origin, polarisation, spectrum))");
 }
 
 TEST(SceneError, UnknownTypes) {
