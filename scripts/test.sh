@@ -13,7 +13,7 @@ scripts/build.sh build -DCMAKE_BUILD_TYPE=Release -DDROPSCOPE_BUILD_TESTS=ON -DD
 ctest --test-dir build --output-on-failure --parallel "$jobs"
 
 echo "== Sanitizer build and tests (build-asan/: ASan + UBSan)"
-scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+scripts/build.sh build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" \
   -DDROPSCOPE_SANITIZE=ON -DDROPSCOPE_BUILD_TESTS=ON -DDROPSCOPE_BUILD_BENCH=OFF
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   LSAN_OPTIONS=suppressions="$root/scripts/lsan.supp" \
