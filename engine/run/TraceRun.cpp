@@ -122,8 +122,11 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                         events = &paths[photon].events;
                     }
                     PhotonScorer scorer(local, photon, sourceIndex, events);
+                    // Beams and rays: scattering angles from their axis, so a divergent beam's spread shows.
+                    std::optional<Direction> axis;
+                    if (source.type != SourceType::PointSource) axis = source.direction;
                     const PhotonOutcome outcome = tracePhoton(scene, emitted, random, settings.transport, &scorer,
-                                                              polarisation, light.wavelengthNm);
+                                                              polarisation, light.wavelengthNm, axis);
                     if (photon < recorded) paths[photon].fate = outcome.fate;
                 }
                 done.fetch_add(last - first, std::memory_order_relaxed);

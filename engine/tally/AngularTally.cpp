@@ -36,7 +36,7 @@ AngularTally::AngularTally(int bins, bool stokes) {
 void AngularTally::score(const Event& event, const TallyContext& photon) {
     if (event.type == EventType::Emit) ++photons_;
     if (event.type != EventType::Escape) return;
-    const Direction& emitted = photon.state.emitted.direction;
+    const Direction& emitted = photon.state.axis;
     const double cosine = std::clamp(event.direction.dot(emitted), -1.0, 1.0);
     const double fraction = std::acos(cosine) / std::numbers::pi;
     const auto bins = escapes_.size();

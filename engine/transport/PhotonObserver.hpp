@@ -10,10 +10,11 @@ namespace dropscope {
 
 // What the tracer knows about the photon it is following, passed with every observation.
 struct PhotonState {
-    Ray emitted;                        // where and in which direction it left its source
-    bool metSurface = false;            // it has reached a surface (tangent passes included)
-    std::uint64_t interfaceEvents = 0;  // surfaces reached so far (reflect, refract, tir, tangent)
-    double wavelengthNm = 0.0;          // its vacuum wavelength
+    Ray emitted;                         // where and in which direction it left its source
+    Direction axis = emitted.direction;  // what scattering angles are measured from: its source's axis
+    bool metSurface = false;             // it has reached a surface (tangent passes included)
+    std::uint64_t interfaceEvents = 0;   // surfaces reached so far (reflect, refract, tir, tangent)
+    double wavelengthNm = 0.0;           // its vacuum wavelength
 };
 
 // One straight stretch of a photon's path: from `origin` along `direction` for `length` (infinite for

@@ -18,10 +18,11 @@ std::string_view photonFateName(PhotonFate fate) {
 
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
                           const TransportSettings& settings, PhotonObserver* observer,
-                          const std::optional<Polarisation>& polarisation, std::optional<double> wavelengthNm) {
+                          const std::optional<Polarisation>& polarisation, std::optional<double> wavelengthNm,
+                          const std::optional<Direction>& axis) {
     const bool flights = observer && observer->wantsFlights();
     PhotonOutcome outcome;
-    PhotonState state{emitted};
+    PhotonState state{emitted, axis.value_or(emitted.direction)};
     state.wavelengthNm = wavelengthNm.value_or(scene.wavelengthNm());
     // The media at this photon's wavelength, in a buffer each thread reuses.
     thread_local std::vector<MediumOptics> ownWavelength;

@@ -41,11 +41,13 @@ struct PhotonOutcome {
 // PolarisationModel::Stokes the photon carries `polarisation` (unpolarisedLight when absent), R is that of
 // its Stokes vector, and the Stokes vector of the branch taken is renormalised to I = 1. The photon's vacuum
 // wavelength is `wavelengthNm` (the scene's when absent): every interface uses the media's n and every
-// flight their absorption at it. An `observer` is told every event, starting with the emission, and (if it
-// wants them) every flight between them.
+// flight their absorption at it. Observers measure scattering angles from `axis` (PhotonState::axis: the
+// axis of a divergent beam; the emitted direction when absent). An `observer` is told every event, starting
+// with the emission, and (if it wants them) every flight between them.
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
                           const TransportSettings& settings, PhotonObserver* observer = nullptr,
                           const std::optional<Polarisation>& polarisation = std::nullopt,
-                          std::optional<double> wavelengthNm = std::nullopt);
+                          std::optional<double> wavelengthNm = std::nullopt,
+                          const std::optional<Direction>& axis = std::nullopt);
 
 }  // namespace dropscope

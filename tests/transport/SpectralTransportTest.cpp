@@ -139,7 +139,8 @@ TEST(SpectralTransport, EachPhotonIsAbsorbedAtItsWavelength) {
     }
     const double expected[2] = {1.0 - std::exp(-0.5), 1.0 - std::exp(-2.0)};
     for (int line = 0; line < 2; ++line) {
-        EXPECT_NEAR(photons[line] / settings.photons, 0.5, monteCarloTolerance(0.5, settings.photons));
+        const double total = static_cast<double>(settings.photons);
+        EXPECT_NEAR(photons[line] / total, 0.5, monteCarloTolerance(0.5, total));
         EXPECT_NEAR(absorbed[line] / photons[line], expected[line], monteCarloTolerance(expected[line], photons[line]));
     }
 }

@@ -1,5 +1,6 @@
 // The rainbows of rainbow.json (a clear water sphere under a beam) against Descartes' minimum
 // deviation, and Alexander's dark band between them (docs/validation.md, "The rainbows").
+#include "Descartes.hpp"
 #include "ValidationRuns.hpp"
 
 #include "transport/SphereRayOptics.hpp"
@@ -33,24 +34,9 @@ constexpr Window kOutsideSecondary{122, 128};
 // side and 3.6 on the secondary's (computed below), so this holds with margin at any photon count.
 constexpr double kAlexanderContrast = 2.0;
 
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 int firstBin(const Window& window) { return static_cast<int>(std::lround(window.loDeg / kBinDeg)); }
 int endBin(const Window& window) { return static_cast<int>(std::lround(window.hiDeg / kBinDeg)); }
-
-// The caustic of the rays that leave after k internal reflections: D = 2(θi − θt) + k(π − 2θt) is
-// least where cos² θi = (n² − 1)/(k(k + 2)) (Descartes). The rays pile up on the side of larger D.
-struct Caustic {
-    double scatteringDeg;  // D folded into [0, 180]
-    bool brightAbove;      // the bright side is at larger scattering angles
-};
-
-Caustic descartes(double n, int k) {
-    const double thetaI = std::acos(std::sqrt((n * n - 1) / (k * (k + 2))));
-    const double thetaT = std::asin(std::sin(thetaI) / n);
-    const double deviation = 2 * (thetaI - thetaT) + k * (std::numbers::pi - 2 * thetaT);
-    return {degrees(std::acos(std::cos(deviation))), std::sin(deviation) > 0};
-}
 
 // Geometric optics puts an inverse square-root singularity at the caustic, on its bright side: the
 // share of it in [lo, hi] is the integral of |θ − θR|^(-1/2) over the part of the bin on that side.
