@@ -18,7 +18,7 @@ namespace dropscope::gui {
 namespace {
 
 constexpr float kWindowWidth = 360.0f;  // when first opened, beside the left column
-constexpr float kWindowHeight = 470.0f;
+constexpr float kWindowHeight = 330.0f;
 constexpr float kPlotHeight = 90.0f;
 constexpr float kBarHeight = 6.0f;   // the wavelength bar under the plot
 constexpr int kPlotSamples = 161;    // 2.5 nm apart over the visible
@@ -224,8 +224,7 @@ void drawDispersionWindow(SceneDocument& document, MediaPanelFields& fields, Sta
     ImGui::SetNextWindowSize(ImVec2(kWindowWidth, kWindowHeight), ImGuiCond_FirstUseEver);
     const std::string title = "Dispersion: " + medium.name + "###Dispersion";
     if (ImGui::Begin(title.c_str(), &fields.dispersionOpen)) {
-        ImGui::TextDisabled("at the scene wavelength, %s: n %.6g (Enter applies)", formatWavelength(sceneNm).c_str(),
-                            medium.n);
+        ImGui::TextDisabled("n %.6g at the scene's %s; Enter applies", medium.n, formatWavelength(sceneNm).c_str());
         ModelDraft n = draftOf(medium.nModel, medium.n);
         if (quantityEditor(OpticalQuantity::N, n, medium.nModel, sceneNm, probe)) {
             applyDraft(document, id, OpticalQuantity::N, n, status);

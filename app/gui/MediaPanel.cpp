@@ -55,7 +55,9 @@ void mediumRow(SceneDocument& document, UiState& ui, MediumId id) {
         fields.dispersionOf = id;
     }
     reportItemRect(ui.itemProbe, "dispersion " + medium.name);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("n and absorption as functions of the wavelength");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%s: n and absorption as functions of the wavelength", dispersionSummary(medium).c_str());
+    }
     if (changed) {
         status.attempt("medium not changed", [&] {
             document.setMedium(id, medium);

@@ -29,7 +29,7 @@ constexpr const char* kColouringHelp =
 constexpr std::array<const char*, 5> kStokesColumns{"I", "Q", "U", "V", "DoLP"};  // stokesCells' order
 constexpr int kLegendSteps = 16;  // bands of the viridis legend, enough to read as a ramp
 constexpr float kLegendWidth = 120.0f;
-constexpr float kColouringWidth = 90.0f;    // the colouring's combo box, on the row of the layer switches
+constexpr float kColouringWidth = 100.0f;   // the colouring's combo box, on the row of the layer switches
 constexpr float kPhotonListHeight = 64.0f;  // three photons
 constexpr float kMinTableHeight = 90.0f;    // the header and four events
 
@@ -89,7 +89,7 @@ void photonList(TraceState& traces) {
         for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
             const PhotonPath& path = paths[static_cast<std::size_t>(row)];
             const std::string label =
-                "photon " + std::to_string(path.photon) + ": " + formatWavelength(path.wavelengthNm) + ", " +
+                "photon " + std::to_string(path.photon) + ": " + wavelengthText(path.wavelengthNm) + ", " +
                 std::string(photonFateName(path.fate)) + ", " + std::to_string(path.events.size()) + " events";
             if (ImGui::Selectable(label.c_str(), row == traces.selectedPath)) selectEvent(traces, row, 0);
         }
@@ -165,10 +165,10 @@ void eventTable(TraceState& traces, const ItemProbe& probe) {
     if (ImGui::ArrowButton("next", ImGuiDir_Right)) stepEvent(traces, +1);
     ImGui::SameLine();
     ImGui::Text("event %d of %zu (Left/Right keys)", traces.selectedEvent + 1, path.events.size());
-    ImGui::SameLine();
-    probedText(probe, "photon wavelength", wavelengthText(path.wavelengthNm));
+    probedText(probe, "photon wavelength", wavelengthText(path.wavelengthNm) + ";");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the photon's vacuum wavelength: n1 and n2 are at it");
     if (path.events.empty()) return;
+    ImGui::SameLine();
     eventPolarisation(path.events[static_cast<std::size_t>(traces.selectedEvent)], probe);
     // Columns can be dragged into another order, or hidden from the header's context menu.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |

@@ -196,7 +196,7 @@ TEST(SpectralUi, ColouringByWavelengthGivesEachPathItsWavelengthsColour) {
     const auto wavelength = harness.item("photon wavelength");
     ASSERT_TRUE(wavelength);
     char expected[32];
-    std::snprintf(expected, sizeof expected, "%.6g nm", paths[0].wavelengthNm);
+    std::snprintf(expected, sizeof expected, "%.6g nm;", paths[0].wavelengthNm);
     EXPECT_EQ(wavelength->text, expected);
 }
 
