@@ -85,3 +85,23 @@ shot app-polarisation-paths "$default" "mousemove 1040 261" "click 1" "key ctrl+
 # -P12/P11 and DoLP read out there.
 shot app-polarisation-results "$default" "mousemove 1040 215" "click 1" "key ctrl+a" "type 100000" "key Return" \
     "mousemove 640 60" "key space" "sleep 3" "mousemove 35 702" "click 1" "mousemove 791 500" "sleep 0.5"
+# Wavelengths (docs/gui.md, "Wavelengths"): a water droplet with water's own n and kappa under a beam of
+# sunlight 0.266 degrees wide. The Fire panel with its sun spectrum and divergence, 1000 photons fired.
+rainbow="$root/assets/scenes/sunlit-rainbow.json"
+shot app-spectra-fire "$rainbow" "mousemove 640 60" "key space" "sleep 2"
+# The Media panel's Dispersion window on the droplet's water (its dispersion button), n plotted.
+shot app-spectra-media "$rainbow" "mousemove 270 386" "click 1" "sleep 0.5" "mousemove 520 190" "sleep 0.5"
+# 200 paths kept (typed into the Fire panel), coloured by wavelength (the Paths panel's colour switch),
+# photon 0 selected (Right).
+shot app-spectra-paths "$rainbow" "mousemove 1040 333" "click 1" "key ctrl+a" "type 200" "key Return" \
+    "mousemove 640 60" "key space" "sleep 2" "mousemove 1143 500" "click 1" "sleep 0.5" "mousemove 1143 583" \
+    "click 1" "mousemove 640 60" "key Right"
+# 1,000,000 photons in 6 wavelength bands (both typed into the Fire panel), the Results plot moved to the
+# top left and enlarged (dragged by its title and its corner), zoomed to 125-150 degrees (a drag over the
+# bands), the mouse on the bands at the primary bow.
+shot app-spectra-results "$rainbow" "mousemove 1040 310" "click 1" "key ctrl+a" "type 1000000" "key Return" \
+    "mousemove 1000 402" "click 1" "key ctrl+a" "type 6" "key Return" "mousemove 640 60" "key space" "sleep 8" \
+    "mousemove 35 702" "click 1" "mousemove 500 190" "mousedown 1" "mousemove 420 110" "mousemove 350 30" \
+    "mouseup 1" "mousemove 798 458" "mousedown 1" "mousemove 1000 600" "mousemove 1270 770" "mouseup 1" \
+    "mousemove 929 400" "mousedown 1" "mousemove 1000 400" "mousemove 1070 400" "mouseup 1" \
+    "mousemove 773 420" "sleep 0.5"

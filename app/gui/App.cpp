@@ -52,7 +52,7 @@ void App::buildUi() {
     handleShortcuts(state_);
     drawMainMenu(state_);
     drawScenePanel(state_);
-    drawMediaPanel(state_.scene.document(), state_.ui.status);
+    drawMediaPanel(state_.scene.document(), state_.ui);
     drawPlacementPanel(state_.placement, state_.view.slice, state_.scene.document());
     drawFirePanel(state_);
     drawOctreePanel(state_);

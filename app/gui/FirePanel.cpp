@@ -3,6 +3,7 @@
 #include "gui/Panels.hpp"
 #include "gui/PolarisationEditor.hpp"
 #include "gui/SourceReference.hpp"
+#include "gui/SpectrumEditor.hpp"
 #include "gui/TraceActions.hpp"
 
 #include <imgui.h>
@@ -26,10 +27,16 @@ constexpr const char* kPolarisationHelp =
 // recorded path costs memory and drawing, so those are capped.
 constexpr std::uint64_t kMaxPhotons = 1'000'000'000;
 constexpr std::uint64_t kMaxPaths = 100'000;
+// Wavelength bands of the Results plot: 180 angular bins each, so kept to a few dozen curves.
+constexpr int kMaxWavelengthBins = 24;
+constexpr float kBinsFieldWidth = 150.0f;
+constexpr const char* kWavelengthBinsHelp =
+    "bands of equal width over the sources' wavelengths, each with its angular distribution in the\n"
+    "Results plot (angular_spectral.csv's bands); 1, or light of one wavelength: none";
 
-// The selected source's type, place, aim, beam radius and polarisation, edited in `source`; `note` gets
-// what an edit changed besides its field.
-void sourceFields(AppState& state, Source& source, FieldEdits& edits, std::string& note) {
+// The selected source's type, place, aim, beam radius, polarisation, spectrum and divergence, edited in
+// `source`; `note` gets what an edit changed besides its field, `refusal` why an edit cannot be made.
+void sourceFields(AppState& state, Source& source, FieldEdits& edits, std::string& note, std::string& refusal) {
     int type = static_cast<int>(source.type);
     if (edits.track(ImGui::Combo("type", &type, kSourceTypes, 3), "type")) {
         source.type = static_cast<SourceType>(type);
@@ -37,6 +44,10 @@ void sourceFields(AppState& state, Source& source, FieldEdits& edits, std::strin
         if (source.type == SourceType::PointSource && source.polarisation.kind != PolarisationKind::Unpolarised) {
             source.polarisation.kind = PolarisationKind::Unpolarised;
             note = "a point source is unpolarised: its polarisation was dropped";
+        }
+        if (source.type == SourceType::PointSource && source.divergenceDeg != 0.0) {
+            source.divergenceDeg = 0.0;
+            note += std::string(note.empty() ? "" : "; ") + "a point source is isotropic: its divergence was dropped";
         }
     }
     edits.track(inputVector3("origin (G)", source.origin, "%.5g"), "origin (G)");
@@ -58,6 +69,7 @@ void sourceFields(AppState& state, Source& source, FieldEdits& edits, std::strin
         source.radius = std::max(source.radius, 1e-9);
     }
     polarisationEditor(source, edits, note, state.ui.itemProbe);
+    spectrumEditor(source, state.scene.document().wavelengthNm(), edits, refusal, state.ui.itemProbe);
 }
 
 // The sources, the selected one's fields, add and remove; every edit goes to the document as one undo
@@ -72,7 +84,8 @@ void sourceEditor(AppState& state) {
     }
     FieldEdits edits(state.ui.panels.firePanel.editingItem);
     std::string note;
-    if (!sources.empty()) sourceFields(state, sources[scene.selectedSource()], edits, note);
+    std::string refusal;
+    if (!sources.empty()) sourceFields(state, sources[scene.selectedSource()], edits, note, refusal);
     if (edits.track(ImGui::Button("Add source"), "Add source")) {
         const render::Camera& camera = state.view.camera;
         Source source;
@@ -86,7 +99,9 @@ void sourceEditor(AppState& state) {
         sources.erase(sources.begin() + static_cast<std::ptrdiff_t>(scene.selectedSource()));
         scene.selectSource(0);
     }
-    if (edits.changed()) {
+    if (!refusal.empty()) {
+        state.ui.status.refuse("source not changed: " + refusal);
+    } else if (edits.changed()) {
         state.ui.status.attempt("source not changed", [&] {
             scene.document().setSources(std::move(sources), edits.continuesLast());
             edits.applied();
@@ -108,6 +123,11 @@ void fireControls(AppState& state) {
     if (choiceCombo("trace with", model, kPolarisationModels, state.ui.itemProbe, kPolarisationHelp)) {
         fire.polarisation = static_cast<PolarisationModel>(model);
     }
+    ImGui::SetNextItemWidth(kBinsFieldWidth);  // narrower than the others: room for its label
+    ImGui::InputInt("wavelength bins", &fire.wavelengthBins);
+    fire.wavelengthBins = std::clamp(fire.wavelengthBins, 1, kMaxWavelengthBins);
+    reportItemRect(state.ui.itemProbe, "wavelength bins");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kWavelengthBinsHelp);
     ImGui::Checkbox("live: trace again when the scene changes", &fire.live);
     if (ImGui::Button("Fire photons (Space)")) fireTrace(state);
     ImGui::SameLine();

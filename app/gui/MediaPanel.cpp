@@ -1,4 +1,6 @@
+#include "gui/DispersionWindow.hpp"
 #include "gui/PanelLayout.hpp"
+#include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
 
 #include <imgui.h>
@@ -8,8 +10,20 @@ namespace dropscope::gui {
 
 namespace {
 
-// One medium's row: name, n, and its absorption as kappa or sigma (the form the file gave).
-void mediumRow(SceneDocument& document, StatusLine& status, MediumId id) {
+// A number field, or, where a model gives the value, the value at the scene wavelength (the model is
+// edited in the Dispersion window).
+bool numberCell(const char* label, double& value, bool modelled, const char* format) {
+    ImGui::SetNextItemWidth(-1.0f);
+    if (!modelled) return ImGui::InputDouble(label, &value, 0.0, 0.0, format, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::TextDisabled(format, value);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("at the scene wavelength; its model: Dispersion (last column)");
+    return false;
+}
+
+// One medium's row: name, n, its absorption as kappa or sigma (the form the file gave), and how they depend
+// on the wavelength, a button that opens the Dispersion window on it.
+void mediumRow(SceneDocument& document, UiState& ui, MediumId id) {
+    StatusLine& status = ui.status;
     Medium medium = document.media()[id];
     ImGui::PushID(static_cast<int>(id));
     bool changed = false;
@@ -18,22 +32,31 @@ void mediumRow(SceneDocument& document, StatusLine& status, MediumId id) {
     ImGui::SetNextItemWidth(-1.0f);
     changed |= ImGui::InputText("##name", &medium.name, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::TableNextColumn();
-    ImGui::SetNextItemWidth(-1.0f);
-    changed |= ImGui::InputDouble("##n", &medium.n, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue);
+    changed |= numberCell("##n", medium.n, medium.nModel.has_value(), "%.6g");
     ImGui::TableNextColumn();
-    ImGui::SetNextItemWidth(-1.0f);
     if (medium.sigma) {
         double sigma = *medium.sigma;
-        if (ImGui::InputDouble("sigma##s", &sigma, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+        if (numberCell("sigma##s", sigma, medium.sigmaModel.has_value(), "%.4g")) {
             medium.sigma = sigma;
             changed = true;
         }
     } else {
         double kappa = medium.kappa.value_or(0.0);
-        if (ImGui::InputDouble("kappa##k", &kappa, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+        if (numberCell("kappa##k", kappa, medium.kappaModel.has_value(), "%.4g")) {
             medium.kappa = kappa;
             changed = true;
         }
+    }
+    ImGui::TableNextColumn();
+    MediaPanelFields& fields = ui.panels.mediaPanel;
+    const std::string summary = dispersionSummary(medium) + "##dispersion";
+    if (ImGui::SmallButton(summary.c_str())) {
+        fields.dispersionOpen = true;
+        fields.dispersionOf = id;
+    }
+    reportItemRect(ui.itemProbe, "dispersion " + medium.name);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%s: n and absorption as functions of the wavelength", dispersionSummary(medium).c_str());
     }
     if (changed) {
         status.attempt("medium not changed", [&] {
@@ -44,31 +67,33 @@ void mediumRow(SceneDocument& document, StatusLine& status, MediumId id) {
     ImGui::PopID();
 }
 
-}  // namespace
-
-void drawMediaPanel(SceneDocument& document, StatusLine& status) {
-    placeNextPanel(PanelSide::Left, 0.36f, 0.15f);
-    if (!ImGui::Begin("Media")) {
-        ImGui::End();
-        return;
-    }
+void mediaTable(SceneDocument& document, UiState& ui) {
     const auto& media = document.media();
     ImGui::Text("ambient: %s (Enter applies an edit)", media.at(document.ambient()).name.c_str());
-    if (ImGui::BeginTable("media", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    if (ImGui::BeginTable("media", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("name");
         ImGui::TableSetupColumn("n");
         ImGui::TableSetupColumn("absorption");
+        ImGui::TableSetupColumn("dispersion");
         ImGui::TableHeadersRow();
-        for (MediumId id = 0; id < media.size(); ++id) mediumRow(document, status, id);
+        for (MediumId id = 0; id < media.size(); ++id) mediumRow(document, ui, id);
         ImGui::EndTable();
     }
     if (ImGui::Button("Add medium")) {
         Medium medium;
         medium.name = "medium" + std::to_string(media.size());
         medium.n = 1.33;
-        status.attempt("no medium added", [&] { document.addMedium(medium); });
+        ui.status.attempt("no medium added", [&] { document.addMedium(medium); });
     }
+}
+
+}  // namespace
+
+void drawMediaPanel(SceneDocument& document, UiState& ui) {
+    placeNextPanel(PanelSide::Left, 0.36f, 0.15f);
+    if (ImGui::Begin("Media")) mediaTable(document, ui);
     ImGui::End();
+    drawDispersionWindow(document, ui.panels.mediaPanel, ui.status, ui.itemProbe);
 }
 
 }  // namespace dropscope::gui

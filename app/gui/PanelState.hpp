@@ -1,5 +1,6 @@
 #pragma once
 
+#include "geometry/Shape.hpp"
 #include "gui/plot/PlotWindowState.hpp"
 #include "tree/OctreeTypes.hpp"
 
@@ -46,6 +47,12 @@ struct ScenePanelFields {
     CloudFields cloud;
 };
 
+// The Media panel's Dispersion window (DispersionWindow.cpp): open or not, and for which medium.
+struct MediaPanelFields {
+    bool dispersionOpen = false;
+    MediumId dispersionOf = 0;
+};
+
 // The Fire panel's source editor (FirePanel.cpp).
 struct FirePanelFields {
     std::uint32_t editingItem = 0;  // the ImGui item whose edits merge into one undo step (0: none)
@@ -64,6 +71,7 @@ struct OctreeStatistics {
 struct PanelState {
     FilePromptFields filePrompt;
     ScenePanelFields scenePanel;
+    MediaPanelFields mediaPanel;
     FirePanelFields firePanel;
     OctreeStatistics octreeStatistics;
     bool octreeCellsShown = false;  // in the last frame: the Octree panel opens when the cells are switched on

@@ -10,7 +10,8 @@ namespace dropscope::gui {
 void drawMainMenu(AppState& state);
 // Shapes, the selected shape's editor, add, droplet cloud.
 void drawScenePanel(AppState& state);
-void drawMediaPanel(SceneDocument& document, StatusLine& status);
+// Media, and the Dispersion window of one of them.
+void drawMediaPanel(SceneDocument& document, UiState& ui);
 // Placement mode and plane, slice plane.
 void drawPlacementPanel(PlacementState& placement, SliceSettings& slice, const SceneDocument& document);
 // Sources, fire, progress.

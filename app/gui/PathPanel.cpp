@@ -2,6 +2,7 @@
 #include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
 #include "gui/PolarisationText.hpp"
+#include "gui/SpectralWidgets.hpp"
 #include "gui/TraceActions.hpp"
 #include "render/Colour.hpp"
 
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -17,16 +19,17 @@ namespace dropscope::gui {
 
 namespace {
 
-constexpr std::array<const char*, 3> kColourings{"weight", "event", "DoLP"};  // render::PathColouring
+constexpr std::array<const char*, 4> kColourings{"weight", "event", "DoLP", "wavelength"};  // render::PathColouring
 constexpr const char* kColouringHelp =
     "weight: viridis by the weight each segment starts with\n"
     "event: by the type of the event it starts at (the markers' colours)\n"
     "DoLP: viridis by its degree of linear polarisation, 0 purple to 1 yellow;\n"
-    "grey when the trace carried no polarisation";
+    "grey when the trace carried no polarisation\n"
+    "wavelength: the colour of the photon's wavelength (dim grey outside 360-830 nm)";
 constexpr std::array<const char*, 5> kStokesColumns{"I", "Q", "U", "V", "DoLP"};  // stokesCells' order
 constexpr int kLegendSteps = 16;  // bands of the viridis legend, enough to read as a ramp
 constexpr float kLegendWidth = 120.0f;
-constexpr float kColouringWidth = 70.0f;    // the colouring's combo box, on the row of the layer switches
+constexpr float kColouringWidth = 100.0f;   // the colouring's combo box, on the row of the layer switches
 constexpr float kPhotonListHeight = 64.0f;  // three photons
 constexpr float kMinTableHeight = 90.0f;    // the header and four events
 
@@ -61,6 +64,22 @@ void dolpLegend() {
     ImGui::TextUnformatted("1, grey: none");
 }
 
+// "532 nm", "420.405 nm": a photon's wavelength, to six digits (as its other numbers are shown).
+std::string wavelengthText(double wavelengthNm) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g nm", wavelengthNm);
+    return text;
+}
+
+// The colours of the visible wavelengths, 380 to 780 nm.
+void wavelengthLegend() {
+    ImGui::TextUnformatted("380 nm");
+    ImGui::SameLine();
+    wavelengthBar(kVisibleRangeNm[0], kVisibleRangeNm[1], kLegendWidth, ImGui::GetTextLineHeight());
+    ImGui::SameLine();
+    ImGui::TextUnformatted("780 nm");
+}
+
 void photonList(TraceState& traces) {
     const auto& paths = traces.trace->outcome.result.paths;
     ImGui::BeginChild("photons", ImVec2(0.0f, kPhotonListHeight), true);
@@ -69,9 +88,9 @@ void photonList(TraceState& traces) {
     while (clipper.Step()) {
         for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
             const PhotonPath& path = paths[static_cast<std::size_t>(row)];
-            const std::string label = "photon " + std::to_string(path.photon) + ": " +
-                                      std::string(photonFateName(path.fate)) + ", " +
-                                      std::to_string(path.events.size()) + " events";
+            const std::string label =
+                "photon " + std::to_string(path.photon) + ": " + wavelengthText(path.wavelengthNm) + ", " +
+                std::string(photonFateName(path.fate)) + ", " + std::to_string(path.events.size()) + " events";
             if (ImGui::Selectable(label.c_str(), row == traces.selectedPath)) selectEvent(traces, row, 0);
         }
     }
@@ -146,7 +165,10 @@ void eventTable(TraceState& traces, const ItemProbe& probe) {
     if (ImGui::ArrowButton("next", ImGuiDir_Right)) stepEvent(traces, +1);
     ImGui::SameLine();
     ImGui::Text("event %d of %zu (Left/Right keys)", traces.selectedEvent + 1, path.events.size());
+    probedText(probe, "photon wavelength", wavelengthText(path.wavelengthNm) + ";");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the photon's vacuum wavelength: n1 and n2 are at it");
     if (path.events.empty()) return;
+    ImGui::SameLine();
     eventPolarisation(path.events[static_cast<std::size_t>(traces.selectedEvent)], probe);
     // Columns can be dragged into another order, or hidden from the header's context menu.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
@@ -184,6 +206,7 @@ void drawPathPanel(render::LayerOptions& layers, TraceState& traces, const ItemP
     }
     layerSwitches(layers, probe);
     if (layers.pathColouring == render::PathColouring::Dolp) dolpLegend();
+    if (layers.pathColouring == render::PathColouring::Wavelength) wavelengthLegend();
     if (!traces.trace || traces.trace->outcome.result.paths.empty()) {
         ImGui::TextDisabled("fire photons (Space) with 'paths kept' > 0 to inspect them here");
         ImGui::End();

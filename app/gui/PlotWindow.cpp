@@ -56,7 +56,13 @@ const std::array<ImU32, 7> kPalette{
     IM_COL32(86, 180, 233, 255),  IM_COL32(230, 159, 0, 255),  IM_COL32(0, 158, 115, 255), IM_COL32(213, 94, 0, 255),
     IM_COL32(204, 121, 167, 255), IM_COL32(240, 228, 66, 255), IM_COL32(0, 114, 178, 255)};
 
-ImU32 curveColour(std::size_t index) { return kPalette[index % kPalette.size()]; }
+// A curve's own colour, else the palette's by its place in the sub-plot.
+ImU32 curveColour(const SubPlot& subPlot, std::size_t index) {
+    if (const auto& colour = subPlot.curves[index].colour) {
+        return ImGui::ColorConvertFloat4ToU32(ImVec4((*colour)[0], (*colour)[1], (*colour)[2], 1.0f));
+    }
+    return kPalette[index % kPalette.size()];
+}
 
 // One sub-plot's frame in screen pixels and its y axis.
 struct FrameLayout {
@@ -138,7 +144,8 @@ void drawHeader(const SubPlot& subPlot, Scale& scale) {
         const ImVec2 at = ImGui::GetCursorScreenPos();
         const float middle = at.y + 0.5f * ImGui::GetFrameHeight();
         ImGui::Dummy(ImVec2(kSwatchWidth, ImGui::GetFrameHeight()));
-        draw->AddLine(ImVec2(at.x, middle), ImVec2(at.x + kSwatchWidth, middle), curveColour(k), kSwatchThickness);
+        draw->AddLine(ImVec2(at.x, middle), ImVec2(at.x + kSwatchWidth, middle), curveColour(subPlot, k),
+                      kSwatchThickness);
         ImGui::SameLine();
         ImGui::TextUnformatted(curve.name.c_str());
         if (!plot::anyDrawable(curve, scale)) {
@@ -209,7 +216,7 @@ void drawFrame(const SubPlot& subPlot, const FrameLayout& frame, const Layout& l
     }
     draw->PushClipRect(frame.min, frame.max, true);
     for (std::size_t k = 0; k < subPlot.curves.size(); ++k) {
-        drawCurve(draw, subPlot.curves[k], curveColour(k), layout.x, frame);
+        drawCurve(draw, subPlot.curves[k], curveColour(subPlot, k), layout.x, frame);
     }
     draw->PopClipRect();
     draw->AddRect(frame.min, frame.max, text);
@@ -233,7 +240,7 @@ void handleMouse(const Figure& figure, std::size_t index, const Layout& layout, 
 }
 
 // Over every frame: the x range being dragged over, or the cursor line and the readout's samples.
-void drawCursor(const Layout& layout, const PlotWindowState& state, bool dragging) {
+void drawCursor(const Figure& figure, const Layout& layout, const PlotWindowState& state, bool dragging) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImGuiIO& io = ImGui::GetIO();
     for (const FrameLayout& frame : layout.frames) {
@@ -253,8 +260,8 @@ void drawCursor(const Layout& layout, const PlotWindowState& state, bool draggin
         const double px = layout.x.toPixel(sample.x);
         const double py = frame.y.toPixel(sample.y);
         if (std::isfinite(px) && std::isfinite(py)) {
-            draw->AddCircle(clampedPoint(px, py, frame), kSampleMarkRadius + 1.0f, curveColour(sample.curve), 0,
-                            kRingThickness);
+            draw->AddCircle(clampedPoint(px, py, frame), kSampleMarkRadius + 1.0f,
+                            curveColour(figure.subPlots[state.hovered->subPlot], sample.curve), 0, kRingThickness);
         }
     }
 }
@@ -264,7 +271,8 @@ void drawReadoutTooltip(const Figure& figure, const plot::Readout& readout) {
     ImGui::BeginTooltip();
     ImGui::TextUnformatted(lines.front().c_str());
     for (std::size_t k = 1; k < lines.size(); ++k) {
-        ImGui::PushStyleColor(ImGuiCol_Text, curveColour(readout.samples[k - 1].curve));
+        ImGui::PushStyleColor(ImGuiCol_Text,
+                              curveColour(figure.subPlots[readout.subPlot], readout.samples[k - 1].curve));
         ImGui::TextUnformatted(lines[k].c_str());
         ImGui::PopStyleColor();
     }
@@ -287,7 +295,7 @@ void drawSubPlots(const Figure& figure, PlotWindowState& state, const ItemProbe&
         drawFrame(figure.subPlots[i], frame, layout, state.grid, i + 1 == figure.subPlots.size());
         ImGui::PopID();
     }
-    drawCursor(layout, state, dragging);
+    drawCursor(figure, layout, state, dragging);
     const FrameLayout& bottom = layout.frames.back();
     const float line = ImGui::GetTextLineHeight();
     const float middle = 0.5f * (bottom.min.x + bottom.max.x);
@@ -330,6 +338,12 @@ void drawToolbar(const Figure& figure, PlotWindowState& state, StatusLine& statu
 void drawPlotWindow(const Figure& figure, PlotWindowState& state, StatusLine& status, const ItemProbe& probe) {
     state.hovered.reset();
     if (!state.open) return;
+    std::vector<std::string> labels;
+    for (const SubPlot& subPlot : figure.subPlots) labels.push_back(subPlot.yLabel);
+    if (labels != state.scaledSubPlots) {
+        state.scales.clear();
+        state.scaledSubPlots = std::move(labels);
+    }
     for (std::size_t i = state.scales.size(); i < figure.subPlots.size(); ++i) {
         state.scales.push_back(figure.subPlots[i].defaultScale);
     }

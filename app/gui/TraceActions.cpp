@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace dropscope::gui {
@@ -12,7 +13,15 @@ namespace dropscope::gui {
 namespace {
 
 TracedWith tracedNow(const AppState& state) {
-    return {state.scene.document().revision(), state.traces.fire.polarisation};
+    return {state.scene.document().revision(), state.traces.fire.polarisation, state.traces.fire.wavelengthBins};
+}
+
+// The fire settings' bands over the sources' wavelengths; none for one band or light of one wavelength.
+std::optional<WavelengthBins> wavelengthBands(const AppState& state) {
+    const SceneDocument& document = state.scene.document();
+    const auto [lo, hi] = wavelengthRangeNm(document.sources(), document.wavelengthNm());
+    if (state.traces.fire.wavelengthBins <= 1 || !(lo < hi)) return std::nullopt;
+    return WavelengthBins{state.traces.fire.wavelengthBins, lo, hi};
 }
 
 void startTrace(AppState& state, bool automatic) {
@@ -28,7 +37,7 @@ void startTrace(AppState& state, bool automatic) {
     std::vector<ShapeId> slots;
     Scene scene = document.toScene(&slots);
     traces.pendingSlots = std::move(slots);
-    traces.job.start(std::move(scene), settings);
+    traces.job.start(std::move(scene), settings, wavelengthBands(state));
     traces.automatic = automatic;
     if (!automatic) state.ui.status.say("tracing " + std::to_string(settings.photons) + " photons ...");
 }

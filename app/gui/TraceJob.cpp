@@ -20,7 +20,7 @@ TraceJob::~TraceJob() {
     joinWorker();
 }
 
-void TraceJob::start(Scene scene, TraceSettings settings) {
+void TraceJob::start(Scene scene, TraceSettings settings, std::optional<WavelengthBins> wavelengths) {
     cancel();
     joinWorker();
     outcome_.reset();
@@ -30,7 +30,9 @@ void TraceJob::start(Scene scene, TraceSettings settings) {
     done_.store(0);
     total_.store(settings.photons);
     seconds_.store(0.0);
-    worker_ = std::thread([this, traced = std::move(scene), settings]() mutable { run(std::move(traced), settings); });
+    worker_ = std::thread([this, traced = std::move(scene), settings, wavelengths]() mutable {
+        run(std::move(traced), settings, wavelengths);
+    });
 }
 
 void TraceJob::cancel() { stop_.store(true, std::memory_order_relaxed); }
@@ -59,7 +61,7 @@ void TraceJob::joinWorker() {
 }
 
 // On the worker thread: nothing here may escape, or std::thread would call std::terminate.
-void TraceJob::run(Scene scene, const TraceSettings& settings) {
+void TraceJob::run(Scene scene, const TraceSettings& settings, const std::optional<WavelengthBins>& wavelengths) {
     TraceOutcome outcome;
     try {
         const OpticalScene optical(scene);
@@ -71,8 +73,8 @@ void TraceJob::run(Scene scene, const TraceSettings& settings) {
             done_.store(progress.done, std::memory_order_relaxed);
             seconds_.store(progress.seconds, std::memory_order_relaxed);
         };
-        outcome.result =
-            runTrace(optical, scene.sources, settings, standardTallies(180, settings.transport.polarisation), control);
+        outcome.result = runTrace(optical, scene.sources, settings,
+                                  standardTallies(180, settings.transport.polarisation, wavelengths), control);
         done_.store(outcome.result.photons, std::memory_order_relaxed);
         seconds_.store(outcome.result.seconds, std::memory_order_relaxed);
     } catch (const std::exception& error) {

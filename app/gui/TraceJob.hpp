@@ -2,6 +2,7 @@
 
 #include "run/TraceRun.hpp"
 #include "scene/Scene.hpp"
+#include "tally/SpectralAngularTally.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -48,9 +49,10 @@ public:
     TraceJob(const TraceJob&) = delete;
     TraceJob& operator=(const TraceJob&) = delete;
 
-    // Starts tracing `scene`. A run still going is cancelled and waited for first, and its result (or a
-    // finished one not yet taken) is dropped: only the new run's outcome is delivered.
-    void start(Scene scene, TraceSettings settings);
+    // Starts tracing `scene` into standardTallies (180 angular bins; with `wavelengths`, the angular
+    // distribution per band too). A run still going is cancelled and waited for first, and its result (or
+    // a finished one not yet taken) is dropped: only the new run's outcome is delivered.
+    void start(Scene scene, TraceSettings settings, std::optional<WavelengthBins> wavelengths = std::nullopt);
     // Asks the run to stop; it ends soon after (see above) with a partial result. Returns at once.
     void cancel();
     // Whether a run has started and not yet finished.
@@ -63,7 +65,7 @@ public:
     std::optional<TraceOutcome> takeResult();
 
 private:
-    void run(Scene scene, const TraceSettings& settings);
+    void run(Scene scene, const TraceSettings& settings, const std::optional<WavelengthBins>& wavelengths);
     void joinWorker();
 
     std::thread worker_;

@@ -19,13 +19,17 @@ struct FireSettings {
     std::uint64_t seed = 1;
     // Stokes: every photon and ray-tree branch carries its Stokes vector; None: unpolarised Fresnel.
     PolarisationModel polarisation = PolarisationModel::Stokes;
-    bool live = true;  // trace again when the scene or the polarisation model changes
+    // Equal wavelength bands over the sources' range, each with its angular distribution (Results); 1: none.
+    int wavelengthBins = 1;
+    bool live = true;  // trace again when the scene, the polarisation model or the bands change
 };
 
-// What "live" traces again for when it changes: the document's revision and the polarisation model.
+// What "live" traces again for when it changes: the document's revision, the polarisation model and the
+// wavelength bands.
 struct TracedWith {
     std::uint64_t revision = 0;
     PolarisationModel polarisation = PolarisationModel::Stokes;
+    int wavelengthBins = 1;
 
     bool operator==(const TracedWith&) const = default;
 };

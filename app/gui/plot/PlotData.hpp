@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -28,6 +29,9 @@ struct Curve {
     std::string name{};  // the legend's entry and the CSV column's header
     std::vector<double> x{};
     std::vector<double> y{};
+    // Its line's colour (sRGB components in [0, 1], used as they are); none: the window's palette, by
+    // the curve's place in its sub-plot.
+    std::optional<std::array<float, 3>> colour{};
 };
 
 inline std::size_t sampleCount(const Curve& curve) { return std::min(curve.x.size(), curve.y.size()); }

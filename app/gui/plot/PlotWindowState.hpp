@@ -14,7 +14,10 @@ namespace dropscope::gui::plot {
 // can give just some: {.exportPath = "angular-plot.csv"}.
 struct PlotWindowState {
     bool open = false;
-    std::vector<Scale> scales{};       // per sub-plot as the user set it; sub-plots past its end start at defaultScale
+    std::vector<Scale> scales{};  // per sub-plot as the user set it; sub-plots past its end start at defaultScale
+    // The y labels of the sub-plots `scales` belongs to: a figure with other sub-plots (a trace with
+    // wavelength bands after one without) starts every sub-plot at its defaultScale again.
+    std::vector<std::string> scaledSubPlots{};
     bool grid = true;                  // grid lines at the major ticks
     std::optional<AxisRange> xView{};  // the x range zoomed to; none: the whole axis
     std::string exportPath{};          // the CSV export's file name field
