@@ -7,16 +7,10 @@
 //
 // Run: build/bench/polarisation_bench [--photons 2e5] [--cloud-photons 5e4] [--repeat 7]
 #include "CloudScene.hpp"
-#include "octree/CountArgument.hpp"
-#include "octree/Measure.hpp"
-#include "run/TraceRun.hpp"
+#include "PairedRuns.hpp"
 #include "scene/SceneLoader.hpp"
-#include "tally/FateTally.hpp"
 #include "tally/StandardTallies.hpp"
 
-#include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -25,80 +19,30 @@
 namespace {
 
 using namespace dropscope;
-using dropscope::bench::cloudSceneText;
-using dropscope::bench::fixed;
-using dropscope::bench::median;
-using dropscope::bench::parseCount;
+using namespace dropscope::bench;
 
-struct Options {
-    std::uint64_t photons = 200000;      // per run, lone sphere and default scene
-    std::uint64_t cloudPhotons = 50000;  // per run, the cloud (slower photons: about 8.5 interfaces each)
-    int repeat = 7;
-};
-
-Options parseOptions(int argc, char** argv) {
-    Options options;
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        if (flag == "--help" || flag == "-h") {
-            std::cout << "polarisation_bench [--photons 2e5] [--cloud-photons 5e4] [--repeat 7 (median of)]\n";
-            std::exit(0);
-        }
-        if (i + 1 >= argc) throw std::invalid_argument(flag + ": missing value");
-        const char* value = argv[++i];
-        if (flag == "--photons")
-            options.photons = parseCount(flag, value);
-        else if (flag == "--cloud-photons")
-            options.cloudPhotons = parseCount(flag, value);
-        else if (flag == "--repeat")
-            options.repeat = std::max(1, static_cast<int>(parseCount(flag, value)));
-        else
-            throw std::invalid_argument("unknown option " + flag);
-    }
-    return options;
-}
-
-struct Row {
-    std::string scene;
-    std::uint64_t photons = 0;
-    double interfacesPerPhoton = 0.0;
-    std::vector<double> stokes, none;  // seconds of each run
-};
-
-double runSeconds(const OpticalScene& optical, const Scene& scene, std::uint64_t photons, PolarisationModel model,
-                  double* interfacesPerPhoton = nullptr) {
-    TraceSettings settings;
-    settings.photons = photons;
-    settings.threads = 1;
-    settings.transport.polarisation = model;
-    const TraceResult result = runTrace(optical, scene.sources, settings, standardTallies(180, model));
-    if (interfacesPerPhoton) {
-        const EventCounts& e = result.tallies.get<FateTally>().events();
-        *interfacesPerPhoton = static_cast<double>(e.reflect + e.refract + e.tir) / static_cast<double>(photons);
-    }
-    return result.seconds;
-}
-
-// The two models alternate, so both see the same drift in the machine's load.
-Row measure(const std::string& name, const Scene& scene, std::uint64_t photons, int repeat) {
-    std::cerr << name << '\n';
+bench::PairedRow measure(const std::string& name, const Scene& scene, std::uint64_t photons, int repeat) {
     const OpticalScene optical(scene);
-    Row row{name, photons, 0.0, {}, {}};
-    runSeconds(optical, scene, std::min<std::uint64_t>(photons, 2000), PolarisationModel::Stokes);  // warm-up
-    for (int r = 0; r < repeat; ++r) {
-        row.stokes.push_back(runSeconds(optical, scene, photons, PolarisationModel::Stokes, &row.interfacesPerPhoton));
-        row.none.push_back(runSeconds(optical, scene, photons, PolarisationModel::None));
-    }
-    return row;
+    const auto run = [&](PolarisationModel model) {
+        return [&, model](std::uint64_t count) {
+            TraceSettings settings;
+            settings.photons = count;
+            settings.threads = 1;
+            settings.transport.polarisation = model;
+            return runTrace(optical, scene.sources, settings, standardTallies(180, model));
+        };
+    };
+    return measurePair(name, photons, repeat, run(PolarisationModel::Stokes), run(PolarisationModel::None));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     try {
-        const Options options = parseOptions(argc, argv);
+        const PairedOptions options =
+            parsePairedOptions(argc, argv, "polarisation_bench [--photons 2e5] [--cloud-photons 5e4] [--repeat 7]");
         const std::string source = DROPSCOPE_SOURCE_DIR;
-        std::vector<Row> rows;
+        std::vector<PairedRow> rows;
         rows.push_back(measure("lone water sphere (validation/rainbow.json)",
                                loadScene(source + "/assets/scenes/validation/rainbow.json"), options.photons,
                                options.repeat));
@@ -107,16 +51,7 @@ int main(int argc, char** argv) {
         rows.push_back(measure("cloud of 1e5 droplets (bench/CloudScene.hpp)",
                                parseScene(cloudSceneText(100000, 15.0), "cloud"), options.cloudPhotons,
                                options.repeat));
-        std::cout << "polarisation_bench: one thread, median of " << options.repeat << " runs per model\n\n"
-                  << "| scene | photons per run | interfaces per photon | stokes photons/s | none photons/s | "
-                     "time stokes / none |\n|---|---|---|---|---|---|\n";
-        for (const Row& row : rows) {
-            const double stokes = median(row.stokes), none = median(row.none);
-            const auto photons = static_cast<double>(row.photons);
-            std::cout << "| " << row.scene << " | " << row.photons << " | " << fixed(row.interfacesPerPhoton, 2)
-                      << " | " << fixed(photons / stokes, 0) << " | " << fixed(photons / none, 0) << " | "
-                      << fixed(stokes / none, 3) << " |\n";
-        }
+        printPairedTable("polarisation_bench", "stokes", "none", options.repeat, rows);
         return 0;
     } catch (const std::exception& error) {
         std::cerr << "polarisation_bench: " << error.what() << '\n';
