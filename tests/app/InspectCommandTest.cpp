@@ -178,5 +178,37 @@ TEST(InspectCommand, MalformedSceneExitsTwo) {
     EXPECT_NE(run.err.find("line 4, column 10"), std::string::npos) << run.err;
 }
 
+TEST(InspectCommand, DispersiveMediaAndSpectraAreShown) {
+    const std::string scene = kSourceDir + "/assets/scenes/sunlit-rainbow.json";
+    const CliRun table = runDropscope({"inspect", scene});
+    ASSERT_EQ(table.status, kExitSuccess) << table.err;
+    EXPECT_NE(table.out.find("media (at 550 nm)"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("n: builtin water (20 C), kappa: builtin water"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("dispersive media"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("sun 380-780 nm, divergence 0.266 deg"), std::string::npos) << table.out;
+
+    const CliRun run = runDropscope({"inspect", scene, "--json"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    const nlohmann::json json = nlohmann::json::parse(run.out);
+    const nlohmann::json* water = nullptr;
+    for (const auto& medium : json["media"]) {
+        if (medium["name"] == "water") water = &medium;
+        if (medium["name"] == "air") EXPECT_TRUE(medium["dispersion"].is_null());
+    }
+    ASSERT_NE(water, nullptr);
+    const nlohmann::json& values = (*water)["dispersion"]["values"];
+    // no source has lines: 400, 550 and 700 nm, the index falling with the wavelength
+    ASSERT_EQ(values.size(), 3u);
+    EXPECT_EQ(values[0]["wavelength_nm"], 400.0);
+    EXPECT_EQ(values[2]["wavelength_nm"], 700.0);
+    EXPECT_GT(values[0]["n"].get<double>(), values[1]["n"].get<double>());
+    EXPECT_GT(values[1]["n"].get<double>(), values[2]["n"].get<double>());
+    EXPECT_EQ(values[1]["n"], (*water)["n"]);  // 550 nm is the scene wavelength
+    const nlohmann::json& source = json["sources"][0];
+    EXPECT_EQ(source["spectrum"]["kind"], "sun");
+    EXPECT_EQ(source["spectrum"]["kelvin"], 5778.0);
+    EXPECT_EQ(source["divergence_deg"], 0.266);
+}
+
 }  // namespace
 }  // namespace dropscope

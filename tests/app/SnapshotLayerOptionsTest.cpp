@@ -41,6 +41,7 @@ TEST(SnapshotLayerOptions, EverySwitchRenders) {
         {"--traversal", "--no-shapes"},
         {"--paths", "5", "--colour-by", "event", "--markers"},
         {"--paths", "5", "--colour-by", "dolp", "--polarisation", "stokes"},
+        {"--paths", "5", "--colour-by", "wavelength"},
         {"--paths", "5", "--ray-tree", "--polarisation", "none"},
         {"--sources", "--axes", "--grid", "--select", "4"},
     };
@@ -76,6 +77,9 @@ TEST(SnapshotLayerOptions, EachLayerAddsItsColour) {
          5},
         {{"--paths", "10", "--colour-by", "dolp"},  // the unpolarised beam: viridis(0), dark purple
          [](int r, int g, int b) { return r > 50 && r < 90 && g < 25 && b > 65 && b < 105; },
+         5},
+        {{"--paths", "10", "--colour-by", "wavelength"},  // the scene's 532 nm: green (displayColourOfWavelength)
+         [](int r, int g, int) { return r < 60 && g > 230; },
          5},
     };
     const std::string plainPng = outputPng("plain");

@@ -348,6 +348,14 @@ TEST_F(TraceCommand, BadInputExitsTwoWithOneLineAndWritesNothing) {
          "dropscope: --fresnel: fast not in"},
         {{"trace", kDefaultScene, "--photons", "10", "--polarisation", "linear", "--out", path("out")},
          "dropscope: --polarisation: linear not in"},
+        {{"trace", kDefaultScene, "--photons", "10", "--wavelength-bins", "0", "--out", path("out")},
+         "dropscope: --wavelength-bins: must be a whole number from 1 to 10000"},
+        {{"trace", kDefaultScene, "--photons", "10", "--wavelength-bins", "2", "--out", path("out")},
+         "--wavelength-bins 2: the light has one wavelength: more than one wavelength bin needs a "
+         "spectrum"},
+        {{"trace", kDefaultScene, "--photons", "10", "--bins", "100000", "--wavelength-bins", "101", "--out",
+          path("out")},
+         "--bins 100000 with --wavelength-bins 101: more than 10000000 cells in angular_spectral.csv"},
         {{"trace", kDefaultScene, "--photons", "10"}, "dropscope: --out is required"},
         {{"trace", kDefaultScene, "--photons", "10", "--out", path("file")},
          path("file") + ": exists and is not a directory"},
@@ -388,6 +396,56 @@ TEST_F(TraceCommand, AnOutputNameTakenByAFolderIsRefusedBeforeAnyFileIsReplaced)
     expectOneLineFailure(run);
     EXPECT_TRUE(run.err.starts_with(path("out/summary.json") + ": exists and is not a regular file")) << run.err;
     EXPECT_EQ(read(path("out/angular.csv")), angular);
+}
+
+const std::string kSunlitRainbow = std::string(DROPSCOPE_SOURCE_DIR) + "/assets/scenes/sunlit-rainbow.json";
+
+TEST_F(TraceCommand, WavelengthBinsSplitTheAngularDistributionByBand) {
+    const CliRun run = trace(kSunlitRainbow, "20000", {"--bins", "36", "--wavelength-bins", "4", "--paths", "50"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    EXPECT_NE(run.out.find("angular_spectral.csv"), std::string::npos) << run.out;
+    const Json s = summary();
+    EXPECT_EQ(s["wavelength_nm"], 550.0);
+    EXPECT_EQ(s["wavelength_bins"], 4);
+    EXPECT_EQ(s["spectra"]["0"]["spectrum"], "sun");
+    EXPECT_EQ(s["spectra"]["0"]["lo_nm"], 380.0);
+    EXPECT_EQ(s["spectra"]["0"]["hi_nm"], 780.0);
+    EXPECT_EQ(s["spectra"]["0"]["kelvin"], 5778.0);
+    EXPECT_EQ(s["spectra"]["0"]["divergence_deg"], 0.266);
+
+    const std::vector<std::string> rows = lines(path("out/angular_spectral.csv"));
+    ASSERT_EQ(rows.size(), 1u + 4u * 36u);
+    EXPECT_EQ(rows.front(), "wavelength_lo_nm,wavelength_hi_nm," + kAngularHeader + kStokesColumns);
+    // K blocks of B rows; the K fractions of an angle add up to angular.csv's (exactly in counts: here within
+    // the rounding of four divisions by the photon count)
+    const std::vector<AngularRow> total = angular();
+    std::vector<double> sum(36, 0.0);
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        std::istringstream fields(rows[i]);
+        double lo = 0, hi = 0, thetaLo = 0, thetaHi = 0, fraction = 0;
+        char comma = 0;
+        fields >> lo >> comma >> hi >> comma >> thetaLo >> comma >> thetaHi >> comma >> fraction;
+        const std::size_t band = (i - 1) / 36, angle = (i - 1) % 36;
+        EXPECT_EQ(lo, 380.0 + 100.0 * static_cast<double>(band)) << rows[i];
+        EXPECT_EQ(hi, 380.0 + 100.0 * static_cast<double>(band + 1)) << rows[i];
+        EXPECT_EQ(thetaLo, total[angle].lo);
+        sum[angle] += fraction;
+    }
+    for (std::size_t angle = 0; angle < 36; ++angle) EXPECT_NEAR(sum[angle], total[angle].fraction, 1e-15);
+    // each photon's wavelength, from the sun's 380-780 nm
+    for (const std::string& line : lines(path("out/paths.jsonl"))) {
+        const double wavelength = Json::parse(line)["wavelength_nm"];
+        EXPECT_GE(wavelength, 380.0);
+        EXPECT_LE(wavelength, 780.0);
+    }
+}
+
+TEST_F(TraceCommand, OneWavelengthBinIsTheAngularTableWithItsEdges) {
+    ASSERT_EQ(trace(kDefaultScene, "5000", {"--bins", "18"}).status, kExitSuccess);
+    const std::vector<std::string> angular = lines(path("out/angular.csv"));
+    const std::vector<std::string> spectral = lines(path("out/angular_spectral.csv"));
+    ASSERT_EQ(spectral.size(), angular.size());
+    for (std::size_t i = 1; i < angular.size(); ++i) EXPECT_EQ(spectral[i], "532,532," + angular[i]);
 }
 
 }  // namespace
