@@ -151,4 +151,19 @@ private:
     std::unique_ptr<App> app_;
 };
 
+// The scene's first source, as the document holds it.
+inline const Source& firstSource(AppHarness& harness) { return harness.state().scene.document().sources().front(); }
+
+// Fires `photons` (keeping `paths` of them) with Space and waits until their results are shown.
+inline void fire(AppHarness& harness, std::uint64_t photons = 200, std::uint64_t paths = 10) {
+    harness.state().traces.fire.photons = photons;
+    harness.state().traces.fire.paths = paths;
+    const std::uint64_t shown = harness.state().traces.shownId;
+    harness.press(kKeySpace);
+    ASSERT_TRUE(harness.waitForNewTrace(shown));
+}
+
+// The run whose results the app shows.
+inline const TraceResult& shownTrace(AppHarness& harness) { return harness.state().traces.trace->outcome.result; }
+
 }  // namespace dropscope::gui::testing

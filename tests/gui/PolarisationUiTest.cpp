@@ -45,18 +45,6 @@ constexpr double kTableDigits = 5e-4;
 // Line vertices are floats relative to the anchor, here the sphere's centre, a few units away.
 constexpr double kFloatRounding = 1e-5;
 
-const Source& firstSource(AppHarness& harness) { return harness.state().scene.document().sources().front(); }
-
-void fire(AppHarness& harness, std::uint64_t photons = 200, std::uint64_t paths = 10) {
-    harness.state().traces.fire.photons = photons;
-    harness.state().traces.fire.paths = paths;
-    const std::uint64_t shown = harness.state().traces.shownId;
-    harness.press(kKeySpace);
-    ASSERT_TRUE(harness.waitForNewTrace(shown));
-}
-
-const TraceResult& shownTrace(AppHarness& harness) { return harness.state().traces.trace->outcome.result; }
-
 bool anyEventPolarised(const TraceResult& result) {
     for (const PhotonPath& path : result.paths) {
         for (const Event& event : path.events) {

@@ -42,7 +42,6 @@ constexpr const char* kSunlitScene = R"({
 // A document value computed twice in double precision (the app's draft and the closed form here).
 constexpr double kRounding = 1e-12;
 
-const Source& firstSource(AppHarness& harness) { return harness.state().scene.document().sources().front(); }
 const Medium& mediumNamed(AppHarness& harness, const std::string& name) {
     for (const Medium& medium : harness.state().scene.document().media()) {
         if (medium.name == name) return medium;
@@ -50,16 +49,6 @@ const Medium& mediumNamed(AppHarness& harness, const std::string& name) {
     ADD_FAILURE() << "no medium " << name;
     return harness.state().scene.document().media().front();
 }
-
-void fire(AppHarness& harness, std::uint64_t photons = 200, std::uint64_t paths = 10) {
-    harness.state().traces.fire.photons = photons;
-    harness.state().traces.fire.paths = paths;
-    const std::uint64_t shown = harness.state().traces.shownId;
-    harness.press(kKeySpace);
-    ASSERT_TRUE(harness.waitForNewTrace(shown));
-}
-
-const TraceResult& shownTrace(AppHarness& harness) { return harness.state().traces.trace->outcome.result; }
 
 std::string status(AppHarness& harness) { return harness.state().ui.status.text(); }
 

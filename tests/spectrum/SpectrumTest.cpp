@@ -1,3 +1,4 @@
+#include "spectrum/KolmogorovSmirnov.hpp"
 #include "spectrum/Spectrum.hpp"
 
 #include <gtest/gtest.h>
@@ -45,17 +46,7 @@ std::vector<double> draw(const Spectrum& spectrum, int count, std::uint64_t seed
     return samples;
 }
 
-// The Kolmogorov-Smirnov statistic of the samples against the continuous cdf.
-double ksStatistic(std::vector<double> samples, const std::function<double(double)>& cdf) {
-    std::sort(samples.begin(), samples.end());
-    const double n = static_cast<double>(samples.size());
-    double d = 0.0;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        const double f = cdf(samples[i]);
-        d = std::max({d, f - static_cast<double>(i) / n, static_cast<double>(i + 1) / n - f});
-    }
-    return d;
-}
+using test::ksStatistic;
 
 double ksCritical(int count) { return kKolmogorov99 / std::sqrt(static_cast<double>(count)); }
 

@@ -3,6 +3,7 @@
 // wavelength and every flight with the absorption at it; the defaults trace exactly as before; the spectral
 // angular tally splits the angular one by band.
 #include "TransportFixtures.hpp"
+#include "spectrum/KolmogorovSmirnov.hpp"
 
 #include "run/TraceRun.hpp"
 #include "tally/AngularTally.hpp"
@@ -28,17 +29,8 @@ using testing::sceneFromJson;
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
-// The Kolmogorov-Smirnov distance between `samples` and the distribution `cdf`.
-double ksDistance(std::vector<double> samples, const std::function<double(double)>& cdf) {
-    std::sort(samples.begin(), samples.end());
-    const double n = static_cast<double>(samples.size());
-    double distance = 0.0;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        const double f = cdf(samples[i]);
-        distance = std::max({distance, f - static_cast<double>(i) / n, static_cast<double>(i + 1) / n - f});
-    }
-    return distance;
-}
+using test::ksStatistic;
+
 // Exceeded by a correct sampler with probability 0.001 (the asymptotic Kolmogorov distribution); the seeds
 // are fixed, so each test's statistic is the same on every run.
 double ksCritical(std::size_t n) { return 1.949 / std::sqrt(static_cast<double>(n)); }
@@ -65,8 +57,8 @@ TEST(SpectralTransport, TheDivergenceConeIsUniform) {
             u.push_back(2.0 * std::pow(std::sin(0.5 * theta), 2) / oneMinusCosAlpha);
             phi.push_back(std::atan2(d.dot(e2), d.dot(e1)));
         }
-        EXPECT_LT(ksDistance(u, [](double x) { return std::clamp(x, 0.0, 1.0); }), ksCritical(u.size()));
-        EXPECT_LT(ksDistance(phi, [](double x) { return (x + std::numbers::pi) / (2.0 * std::numbers::pi); }),
+        EXPECT_LT(ksStatistic(u, [](double x) { return std::clamp(x, 0.0, 1.0); }), ksCritical(u.size()));
+        EXPECT_LT(ksStatistic(phi, [](double x) { return (x + std::numbers::pi) / (2.0 * std::numbers::pi); }),
                   ksCritical(phi.size()));
         EXPECT_GT(*std::max_element(u.begin(), u.end()), 0.999);  // reaches the rim
     }
@@ -155,7 +147,7 @@ TEST(SpectralTransport, PhotonWavelengthsFollowTheSpectrum) {
     std::vector<double> wavelengths;
     for (const PhotonPath& path : result.paths) wavelengths.push_back(path.wavelengthNm);
     const Spectrum& spectrum = *scene.sources[0].spectrum;
-    EXPECT_LT(ksDistance(wavelengths, [&](double x) { return spectrum.cdf(x); }), ksCritical(wavelengths.size()));
+    EXPECT_LT(ksStatistic(wavelengths, [&](double x) { return spectrum.cdf(x); }), ksCritical(wavelengths.size()));
 }
 
 // Fates and angular tallies of a run of `scene`.
