@@ -59,9 +59,12 @@ TEST(WaterDensityAtOneBar, HasItsMaximumNearFourDegrees) {
 }
 
 TEST(BuiltinWater, MatchesTheIapwsTableAtZeroAndTwentyFiveDegrees) {
-    // Release Table 3: 273.15 K, 0.1 MPa, 226.5 nm: n = 1.394527
-    EXPECT_NEAR(SpectralFunction::builtin(Material::Water, OpticalQuantity::N, 0.0).at(226.5), 1.394527,
-                kBuiltinAgainstIapwsTable);
+    // Release Table 3 at 273.15 K and 0.1 MPa: n = 1.394527 at 226.5 nm, 1.334344 at 589 nm, 1.326135 at
+    // 1013.98 nm (its three wavelengths; the values as reproduced in public test suites of the release)
+    const SpectralFunction atZero = SpectralFunction::builtin(Material::Water, OpticalQuantity::N, 0.0);
+    EXPECT_NEAR(atZero.at(226.5), 1.394527, kBuiltinAgainstIapwsTable);
+    EXPECT_NEAR(atZero.at(589.0), 1.334344, kBuiltinAgainstIapwsTable);
+    EXPECT_NEAR(atZero.at(1013.98), 1.326135, kBuiltinAgainstIapwsTable);
     // The verification point at 298.15 K is liquid water at atmospheric pressure
     EXPECT_NEAR(SpectralFunction::builtin(Material::Water, OpticalQuantity::N, 25.0).at(226.5), 1.39277824,
                 kBuiltinAgainstIapwsTable);
