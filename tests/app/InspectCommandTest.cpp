@@ -193,7 +193,9 @@ TEST(InspectCommand, DispersiveMediaAndSpectraAreShown) {
     const nlohmann::json* water = nullptr;
     for (const auto& medium : json["media"]) {
         if (medium["name"] == "water") water = &medium;
-        if (medium["name"] == "air") EXPECT_TRUE(medium["dispersion"].is_null());
+        if (medium["name"] == "air") {
+            EXPECT_TRUE(medium["dispersion"].is_null());
+        }
     }
     ASSERT_NE(water, nullptr);
     const nlohmann::json& values = (*water)["dispersion"]["values"];
