@@ -145,7 +145,14 @@ Rgb displayColourOfWavelength(double wavelengthNm) {
         const double grey = srgbEncode(kOutsideTableGrey);
         return {grey, grey, grey};
     }
-    return displaySrgbFromXyz(cieColourMatching(wavelengthNm));
+    // A single line lies on the spectrum locus, outside the gamut: its negative components are dropped rather
+    // than filled with white, which would turn every red beyond 615 nm pink (docs/spectra.md, "Path colours").
+    Rgb rgb = linearSrgbFromXyz(cieColourMatching(wavelengthNm));
+    for (double& component : rgb) component = std::max(component, 0.0);
+    const double highest = std::max({rgb[0], rgb[1], rgb[2]});
+    if (!(highest > 0.0)) return {0.0, 0.0, 0.0};
+    for (double& component : rgb) component = srgbEncode(component / highest);
+    return rgb;
 }
 
 }  // namespace dropscope

@@ -34,8 +34,10 @@ double srgbEncode(double linear);
 // the gamut by adding white (desaturating) until no component is negative, then scaled so the largest
 // linear component is 1. Black stays black.
 Rgb displaySrgbFromXyz(const Xyz& xyz);
-// displaySrgbFromXyz(cieColourMatching(lambda)): the colour a path of that wavelength is drawn with.
-// Outside the table: a dim grey, so infrared and ultraviolet paths stay visible.
+// The colour a path of that wavelength is drawn with: cieColourMatching(lambda) in linear sRGB with its
+// negative components set to 0 (a spectral colour's nearest hue in the gamut; adding white, as
+// displaySrgbFromXyz does, turns deep reds pink), scaled so the largest is 1, encoded. Outside the table: a
+// dim grey, so infrared and ultraviolet paths stay visible.
 Rgb displayColourOfWavelength(double wavelengthNm);
 
 }  // namespace dropscope

@@ -149,26 +149,27 @@ TEST(Colour, BlackStaysBlack) {
 // Spectral colours lie outside the sRGB gamut; adding white brings them in. Values by hand from the row
 // and the matrix; the hue expected of each named in words.
 TEST(Colour, SpectralColoursHaveTheirHues) {
-    // 610 nm: orange-red, just on the yellow side of sRGB's red primary, whose dominant wavelength is about
-    // 611 nm: linear (2.4759, -0.0281, -0.0465) + 0.0465 white -> encoded (1, 0.081, 0).
-    const Rgb at610 = displayColourOfWavelength(610);
-    EXPECT_NEAR(at610[0], 1.0, kRounding);
-    EXPECT_NEAR(at610[1], 0.0806, kHandComputed);
-    EXPECT_EQ(at610[2], 0.0);
-    // 600 nm orange, 580 nm amber: more green towards yellow.
-    EXPECT_NEAR(displayColourOfWavelength(600)[1], 0.3278, kHandComputed);
-    EXPECT_NEAR(displayColourOfWavelength(580)[1], 0.7319, kHandComputed);
-    // 470 nm: blue with some green (azure): linear (-0.1487, 0.0348, 1.3533) -> encoded (0, 0.384, 1).
+    // A line's negative linear components are dropped (the hue of the gamut's edge nearest it), then the largest
+    // is scaled to 1 and encoded. 610 nm: linear (2.4759, -0.0281, -0.0465): sRGB's red primary, whose dominant
+    // wavelength is about 611 nm, so (1, 0, 0); 650 nm the same (no pink: docs/spectra.md, "Path colours").
+    const auto expectColour = [](double nm, const Rgb& expected) {
+        const Rgb shown = displayColourOfWavelength(nm);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(shown[k], expected[k], kRounding) << nm << " nm, component " << k;
+    };
+    expectColour(610, {1.0, 0.0, 0.0});
+    expectColour(650, {1.0, 0.0, 0.0});
+    // 600 nm orange: row (1.0622, 0.631, 0.0008) -> linear (2.4718, 0.1545, -0.0687) -> G 0.0625 of R,
+    // encoded 0.277; 580 nm amber: (0.9163, 0.87, 0.00165) -> (1.6312, 0.7442, -0.1247) -> 0.4562, encoded 0.706.
+    EXPECT_NEAR(displayColourOfWavelength(600)[1], 0.277, kHandComputed);
+    EXPECT_EQ(displayColourOfWavelength(600)[2], 0.0);
+    EXPECT_NEAR(displayColourOfWavelength(580)[1], 0.706, kHandComputed);
+    // 470 nm: blue with a little green: linear (-0.1487, 0.0348, 1.3533) -> G 0.0257 of B, encoded (0, 0.175, 1).
     const Rgb at470 = displayColourOfWavelength(470);
     EXPECT_EQ(at470[0], 0.0);
-    EXPECT_NEAR(at470[1], 0.3844, kHandComputed);
+    EXPECT_NEAR(at470[1], 0.175, kHandComputed);
     EXPECT_NEAR(at470[2], 1.0, kRounding);
-    // 530 nm: green, its red the most negative, so the white added shows as blue (spring green):
-    // linear (-0.8099, 1.4584, -0.1221) -> encoded (0, 1, 0.587).
-    const Rgb at530 = displayColourOfWavelength(530);
-    EXPECT_EQ(at530[0], 0.0);
-    EXPECT_NEAR(at530[1], 1.0, kRounding);
-    EXPECT_NEAR(at530[2], 0.5867, kHandComputed);
+    // 530 nm: linear (-0.8099, 1.4584, -0.1221): pure green.
+    expectColour(530, {0.0, 1.0, 0.0});
     // Every displayed colour is in [0, 1] with its largest component 1.
     for (double nm = 360; nm <= 830; nm += 0.5) {
         const Rgb c = displayColourOfWavelength(nm);
