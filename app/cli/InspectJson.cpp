@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 
 #include <ostream>
-#include <stdexcept>
 
 namespace dropscope {
 
@@ -28,15 +27,10 @@ Json mediaJson(const Scene& scene) {
         Json dispersion = nullptr;
         if (medium.dispersive()) {
             Json values = Json::array();
-            for (const double wavelength : inspectWavelengthsNm(scene)) {
-                Json value = {{"wavelength_nm", wavelength}, {"n", nullptr}, {"absorption_per_unit", nullptr}};
-                try {
-                    const MediumOptics optics = mediumOpticsAt(medium, wavelength, scene.unitInMetres);
-                    value["n"] = optics.n;
-                    value["absorption_per_unit"] = optics.absorptionPerUnit;
-                } catch (const std::logic_error&) {  // outside the model's range: null
-                }
-                values.push_back(value);
+            for (const auto& [wavelength, optics] : dispersionSamples(scene, medium)) {
+                values.push_back({{"wavelength_nm", wavelength},
+                                  {"n", optics ? Json(optics->n) : Json(nullptr)},
+                                  {"absorption_per_unit", optics ? Json(optics->absorptionPerUnit) : Json(nullptr)}});
             }
             dispersion = {{"n", spectralModelText(medium.nModel)},
                           {"kappa", spectralModelText(medium.kappaModel)},

@@ -18,6 +18,13 @@ void writeInspectTables(const Scene& scene, const SceneSummary& summary, std::os
 std::vector<double> inspectWavelengthsNm(const Scene& scene);
 inline constexpr double kInspectWavelengthsNm[] = {400.0, 550.0, 700.0};
 
+// A medium at each of inspectWavelengthsNm: its n and absorption, or nothing outside a model's range.
+struct DispersionSample {
+    double wavelengthNm;
+    std::optional<MediumOptics> optics;
+};
+std::vector<DispersionSample> dispersionSamples(const Scene& scene, const Medium& medium);
+
 // "sellmeier", "builtin water (20 C)", "table (4 points)": how a medium's quantity varies; "-" for a number.
 std::string spectralModelText(const std::optional<SpectralFunction>& model);
 // "scene line", "lines 486.1-656.3 nm (3)", "sun 380-780 nm", plus ", divergence 0.266 deg".

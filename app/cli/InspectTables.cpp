@@ -59,16 +59,9 @@ void writeMedia(const Scene& scene, std::ostream& out) {
                           {"absorption [1/" + scene.unit + "]", Align::Right}});
     for (const Medium& medium : scene.media) {
         if (!medium.dispersive()) continue;
-        for (const double wavelength : inspectWavelengthsNm(scene)) {
-            std::string n = "-";
-            std::string absorption = "-";
-            try {
-                const MediumOptics optics = mediumOpticsAt(medium, wavelength, scene.unitInMetres);
-                n = formatNumber(optics.n);
-                absorption = formatNumber(optics.absorptionPerUnit);
-            } catch (const std::logic_error&) {  // outside the model's range: shown as "-"
-            }
-            dispersion.addRow({medium.name, formatNumber(wavelength), n, absorption});
+        for (const auto& [wavelength, optics] : dispersionSamples(scene, medium)) {
+            dispersion.addRow({medium.name, formatNumber(wavelength), optics ? formatNumber(optics->n) : "-",
+                               optics ? formatNumber(optics->absorptionPerUnit) : "-"});
         }
     }
     out << "\ndispersive media\n";
@@ -199,6 +192,19 @@ std::vector<double> inspectWavelengthsNm(const Scene& scene) {
     std::sort(wavelengths.begin(), wavelengths.end());
     wavelengths.erase(std::unique(wavelengths.begin(), wavelengths.end()), wavelengths.end());
     return wavelengths;
+}
+
+std::vector<DispersionSample> dispersionSamples(const Scene& scene, const Medium& medium) {
+    std::vector<DispersionSample> samples;
+    for (const double wavelength : inspectWavelengthsNm(scene)) {
+        DispersionSample sample{wavelength, std::nullopt};
+        try {
+            sample.optics = mediumOpticsAt(medium, wavelength, scene.unitInMetres);
+        } catch (const std::logic_error&) {  // outside a model's range: no values
+        }
+        samples.push_back(sample);
+    }
+    return samples;
 }
 
 std::string spectralModelText(const std::optional<SpectralFunction>& model) {

@@ -10,8 +10,7 @@ namespace dropscope {
 namespace {
 
 // Reads one of n, kappa, sigma: its number, or its model and the model's value at the scene wavelength.
-template <class Number>
-void readQuantity(const JsonReader& json, OpticalQuantity quantity, double wavelengthNm, Number& number,
+void readQuantity(const JsonReader& json, OpticalQuantity quantity, double wavelengthNm, double& number,
                   std::optional<SpectralFunction>& model) {
     auto value = readSpectralValue(json, quantity);
     if (auto* constant = std::get_if<double>(&value)) {
@@ -40,7 +39,7 @@ Medium readMedium(const std::string& name, const JsonReader& json, double wavele
         medium.sigma = 0.0;
         readQuantity(*sigma, OpticalQuantity::Sigma, wavelengthNm, *medium.sigma, medium.sigmaModel);
     }
-    evaluateMediumAt(medium, wavelengthNm, unitInMetres);
+    medium.absorptionPerUnit = absorptionPerUnitOf(medium, wavelengthNm, unitInMetres);
     return medium;
 }
 

@@ -1,7 +1,8 @@
 #include "scene/Medium.hpp"
 
+#include "spectrum/Decimal.hpp"
+
 #include <cmath>
-#include <iomanip>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -12,21 +13,33 @@ double absorptionFromExtinction(double kappa, double wavelengthInSceneUnits) {
     return 4.0 * std::numbers::pi * kappa / wavelengthInSceneUnits;  // seed eq. 3.13
 }
 
-std::string formatWavelength(double wavelengthNm) {
-    std::ostringstream text;
-    text << std::setprecision(10) << wavelengthNm << " nm";
-    return text.str();
+std::string formatWavelength(double wavelengthNm) { return shortestDecimal(wavelengthNm) + " nm"; }
+
+namespace {
+
+// sigma, or 4 pi kappa / lambda at `wavelengthNm` (seed eq. 3.13); 0 for a clear medium.
+double absorptionOf(const std::optional<double>& sigma, const std::optional<double>& kappa, double wavelengthNm,
+                    double unitInMetres) {
+    if (sigma) return *sigma;
+    if (kappa) return absorptionFromExtinction(*kappa, wavelengthInUnits(wavelengthNm, unitInMetres));
+    return 0.0;
 }
+
+// A model's value, or the number when there is none.
+std::optional<double> valueAt(const std::optional<SpectralFunction>& model, const std::optional<double>& number,
+                              double wavelengthNm) {
+    if (model && number) return model->at(wavelengthNm);
+    return number;
+}
+
+}  // namespace
 
 double checkedSpectralValue(const SpectralFunction& model, OpticalQuantity quantity, double wavelengthNm) {
     const double value = model.at(wavelengthNm);
     const bool positive = quantity == OpticalQuantity::N;
     if (!std::isfinite(value) || (positive ? value <= 0.0 : value < 0.0)) {
         std::ostringstream message;
-        message << (quantity == OpticalQuantity::N       ? "n"
-                    : quantity == OpticalQuantity::Kappa ? "kappa"
-                                                         : "sigma")
-                << " is " << value << " at " << formatWavelength(wavelengthNm)
+        message << opticalQuantityKey(quantity) << " is " << value << " at " << formatWavelength(wavelengthNm)
                 << (positive ? " (must be > 0)" : " (must be >= 0)");
         throw std::domain_error(message.str());
     }
@@ -36,13 +49,14 @@ double checkedSpectralValue(const SpectralFunction& model, OpticalQuantity quant
 MediumOptics mediumOpticsAt(const Medium& medium, double wavelengthNm, double unitInMetres) {
     MediumOptics optics;
     optics.n = medium.nModel ? medium.nModel->at(wavelengthNm) : medium.n;
-    if (medium.sigma) {
-        optics.absorptionPerUnit = medium.sigmaModel ? medium.sigmaModel->at(wavelengthNm) : *medium.sigma;
-    } else if (medium.kappa) {
-        const double kappa = medium.kappaModel ? medium.kappaModel->at(wavelengthNm) : *medium.kappa;
-        optics.absorptionPerUnit = absorptionFromExtinction(kappa, wavelengthInUnits(wavelengthNm, unitInMetres));
-    }
+    optics.absorptionPerUnit =
+        absorptionOf(valueAt(medium.sigmaModel, medium.sigma, wavelengthNm),
+                     valueAt(medium.kappaModel, medium.kappa, wavelengthNm), wavelengthNm, unitInMetres);
     return optics;
+}
+
+double absorptionPerUnitOf(const Medium& medium, double wavelengthNm, double unitInMetres) {
+    return absorptionOf(medium.sigma, medium.kappa, wavelengthNm, unitInMetres);
 }
 
 void evaluateMediumAt(Medium& medium, double wavelengthNm, double unitInMetres) {
@@ -51,13 +65,7 @@ void evaluateMediumAt(Medium& medium, double wavelengthNm, double unitInMetres) 
         medium.kappa = checkedSpectralValue(*medium.kappaModel, OpticalQuantity::Kappa, wavelengthNm);
     if (medium.sigmaModel)
         medium.sigma = checkedSpectralValue(*medium.sigmaModel, OpticalQuantity::Sigma, wavelengthNm);
-    medium.absorptionPerUnit = 0.0;
-    if (medium.sigma) {
-        medium.absorptionPerUnit = *medium.sigma;
-    } else if (medium.kappa) {
-        medium.absorptionPerUnit =
-            absorptionFromExtinction(*medium.kappa, wavelengthInUnits(wavelengthNm, unitInMetres));
-    }
+    medium.absorptionPerUnit = absorptionPerUnitOf(medium, wavelengthNm, unitInMetres);
 }
 
 }  // namespace dropscope

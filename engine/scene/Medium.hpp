@@ -40,6 +40,10 @@ struct MediumOptics {
 // always gives 4*pi*kappa/lambda at this wavelength). Throws what SpectralFunction::at throws.
 MediumOptics mediumOpticsAt(const Medium& medium, double wavelengthNm, double unitInMetres);
 
+// The absorption per scene unit of the medium's numbers: sigma, or 4*pi*kappa/lambda at `wavelengthNm`; 0 for a
+// clear medium.
+double absorptionPerUnitOf(const Medium& medium, double wavelengthNm, double unitInMetres);
+
 // Sets n, kappa, sigma and absorptionPerUnit to their values at `wavelengthNm` from the models, and
 // absorptionPerUnit from kappa or sigma. Throws what checkedSpectralValue throws.
 void evaluateMediumAt(Medium& medium, double wavelengthNm, double unitInMetres);

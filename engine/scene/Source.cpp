@@ -93,15 +93,13 @@ Spectrum sourceSpectrum(const Source& source, double sceneWavelengthNm) {
 }
 
 std::pair<double, double> wavelengthRangeNm(const std::vector<Source>& sources, double sceneWavelengthNm) {
-    std::pair<double, double> range{sceneWavelengthNm, sceneWavelengthNm};
-    bool first = true;
+    const std::pair sceneLine{sceneWavelengthNm, sceneWavelengthNm};
+    std::optional<std::pair<double, double>> range;
     for (const Source& source : sources) {
-        const auto [lo, hi] =
-            source.spectrum ? source.spectrum->rangeNm() : std::pair{sceneWavelengthNm, sceneWavelengthNm};
-        range = first ? std::pair{lo, hi} : std::pair{std::min(range.first, lo), std::max(range.second, hi)};
-        first = false;
+        const auto [lo, hi] = source.spectrum ? source.spectrum->rangeNm() : sceneLine;
+        range = range ? std::pair{std::min(range->first, lo), std::max(range->second, hi)} : std::pair{lo, hi};
     }
-    return range;
+    return range.value_or(sceneLine);
 }
 
 void checkDivergence(const Source& source) {

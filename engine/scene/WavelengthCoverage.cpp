@@ -4,15 +4,6 @@
 
 namespace dropscope {
 
-const char* opticalQuantityKey(OpticalQuantity quantity) {
-    switch (quantity) {
-    case OpticalQuantity::N: return "n";
-    case OpticalQuantity::Kappa: return "kappa";
-    case OpticalQuantity::Sigma: return "sigma";
-    }
-    return "?";
-}
-
 namespace {
 
 // Why `model` fails somewhere on `spectrum`, or an empty string.

@@ -29,7 +29,4 @@ std::optional<WavelengthCoverageProblem> findWavelengthCoverageProblem(const std
 // (1 nm over 360-830 nm needs ~470), coarse enough to cost nothing at load.
 inline constexpr int kCoverageSamplesPerSpectrum = 2048;
 
-// "n", "kappa", "sigma".
-const char* opticalQuantityKey(OpticalQuantity quantity);
-
 }  // namespace dropscope

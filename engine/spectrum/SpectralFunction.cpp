@@ -1,10 +1,10 @@
 #include "spectrum/SpectralFunction.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
+#include "spectrum/Decimal.hpp"
 #include "spectrum/EmbeddedData.hpp"
 #include "spectrum/Water.hpp"
 
@@ -12,17 +12,13 @@ namespace dropscope {
 
 namespace {
 
-// The shortest decimal that reads back as `value` ("700", "587.56", "1e-07").
-std::string number(double value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
+std::string range(const std::pair<double, double>& nm) {
+    return shortestDecimal(nm.first) + "-" + shortestDecimal(nm.second) + " nm";
 }
 
-std::string range(const std::pair<double, double>& nm) { return number(nm.first) + "-" + number(nm.second) + " nm"; }
-
 void requireFinite(double value, const std::string& what) {
-    if (!std::isfinite(value)) throw std::invalid_argument(what + " must be a finite number, not " + number(value));
+    if (!std::isfinite(value))
+        throw std::invalid_argument(what + " must be a finite number, not " + shortestDecimal(value));
 }
 
 // Published Sellmeier coefficients, docs/spectra.md "Built-in materials": B, C in um^2, validity in nm.
@@ -48,13 +44,13 @@ double sellmeierIndex(const double* b, const double* cUm2, std::size_t terms, do
     for (std::size_t i = 0; i < terms; ++i) {
         const double denominator = lambda2 - cUm2[i];
         if (denominator == 0.0) {
-            throw std::domain_error("the Sellmeier model has a pole at " + number(wavelengthNm) + " nm");
+            throw std::domain_error("the Sellmeier model has a pole at " + shortestDecimal(wavelengthNm) + " nm");
         }
         n2 += b[i] * lambda2 / denominator;
     }
     if (!(n2 > 0.0)) {
-        throw std::domain_error("the Sellmeier model gives n^2 = " + number(n2) + " <= 0 at " + number(wavelengthNm) +
-                                " nm");
+        throw std::domain_error("the Sellmeier model gives n^2 = " + shortestDecimal(n2) + " <= 0 at " +
+                                shortestDecimal(wavelengthNm) + " nm");
     }
     return std::sqrt(n2);
 }
@@ -107,6 +103,15 @@ std::string materialName(Material material) {
     throw std::invalid_argument("unknown material");
 }
 
+const char* opticalQuantityKey(OpticalQuantity quantity) {
+    switch (quantity) {
+    case OpticalQuantity::N: return "n";
+    case OpticalQuantity::Kappa: return "kappa";
+    case OpticalQuantity::Sigma: return "sigma";
+    }
+    return "?";
+}
+
 std::optional<Material> materialNamed(const std::string& name) {
     for (const Material material : {Material::Water, Material::Bk7, Material::FusedSilica}) {
         if (materialName(material) == name) return material;
@@ -129,11 +134,12 @@ SpectralFunction SpectralFunction::table(std::vector<std::pair<double, double>> 
         requireFinite(pointsNm[i].first, "a table wavelength");
         requireFinite(pointsNm[i].second, "a table value");
         if (pointsNm[i].first <= 0.0) {
-            throw std::invalid_argument("table wavelengths must be > 0 nm, not " + number(pointsNm[i].first));
+            throw std::invalid_argument("table wavelengths must be > 0 nm, not " + shortestDecimal(pointsNm[i].first));
         }
         if (i > 0 && pointsNm[i].first <= pointsNm[i - 1].first) {
-            throw std::invalid_argument("table wavelengths must be strictly ascending (" + number(pointsNm[i].first) +
-                                        " nm after " + number(pointsNm[i - 1].first) + " nm)");
+            throw std::invalid_argument("table wavelengths must be strictly ascending (" +
+                                        shortestDecimal(pointsNm[i].first) + " nm after " +
+                                        shortestDecimal(pointsNm[i - 1].first) + " nm)");
         }
     }
     SpectralFunction function;
@@ -176,8 +182,8 @@ SpectralFunction SpectralFunction::builtin(Material material, OpticalQuantity qu
     const auto [lowC, highC] = kWaterTemperatureRangeC;
     if (material == Material::Water && quantity == OpticalQuantity::N &&
         !(temperatureC >= lowC && temperatureC <= highC)) {
-        throw std::invalid_argument("the built-in water index is offered from " + number(lowC) + " to " +
-                                    number(highC) + " degrees C, not " + number(temperatureC));
+        throw std::invalid_argument("the built-in water index is offered from " + shortestDecimal(lowC) + " to " +
+                                    shortestDecimal(highC) + " degrees C, not " + shortestDecimal(temperatureC));
     }
     SpectralFunction function;
     function.kind_ = Kind::Builtin;
@@ -204,13 +210,13 @@ std::optional<std::pair<double, double>> SpectralFunction::domainNm() const {
 double SpectralFunction::at(double wavelengthNm) const {
     const auto domain = domainNm();
     if (!std::isfinite(wavelengthNm) || wavelengthNm <= 0.0) {
-        throw std::out_of_range(number(wavelengthNm) + " nm is not a wavelength (it must be > 0 nm)");
+        throw std::out_of_range(shortestDecimal(wavelengthNm) + " nm is not a wavelength (it must be > 0 nm)");
     }
     if (domain && (wavelengthNm < domain->first || wavelengthNm > domain->second)) {
         const std::string what = kind_ == Kind::Table ? std::string("the table")
                                                       : "the built-in " + materialName(material_) +
                                                             (quantity_ == OpticalQuantity::N ? " n" : " kappa");
-        throw std::out_of_range(number(wavelengthNm) + " nm is outside " + what + " (" + range(*domain) + ")");
+        throw std::out_of_range(shortestDecimal(wavelengthNm) + " nm is outside " + what + " (" + range(*domain) + ")");
     }
     switch (kind_) {
     case Kind::Constant: return constant_;

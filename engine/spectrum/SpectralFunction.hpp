@@ -18,6 +18,9 @@ std::optional<Material> materialNamed(const std::string& name);
 // (dimensionless), or the absorption coefficient sigma (per scene unit).
 enum class OpticalQuantity { N, Kappa, Sigma };
 
+// "n", "kappa", "sigma": the medium's keys in a scene file.
+const char* opticalQuantityKey(OpticalQuantity quantity);
+
 // A real function of the vacuum wavelength (in nm): a medium's n, kappa or sigma as the scene gives it
 // (docs/scene-format.md, "Media"). A value type; cheap to copy except for tables.
 //   constant     the number itself, at every wavelength;

@@ -1,8 +1,9 @@
 #include "spectrum/Spectrum.hpp"
 
+#include "spectrum/Decimal.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -17,16 +18,9 @@ constexpr std::size_t kFirstBlackbodySegments = 256;
 // for a uniform grid over [lo, hi] (a body far too cold for the range, e.g. 0.1 K over the visible; 1 K still works).
 constexpr std::size_t kMaxBlackbodySegments = std::size_t{1} << 20;
 
-std::string number(double value) {
-    std::ostringstream text;
-    text.precision(10);
-    text << value;
-    return text.str();
-}
-
 void requireWavelength(double nm, const std::string& what) {
     if (!std::isfinite(nm) || nm <= 0.0) {
-        throw std::invalid_argument(what + " must be finite and > 0 nm (got " + number(nm) + ")");
+        throw std::invalid_argument(what + " must be finite and > 0 nm (got " + shortestDecimal(nm) + ")");
     }
 }
 
@@ -34,7 +28,8 @@ void requireRange(double loNm, double hiNm, const std::string& what) {
     requireWavelength(loNm, what + " lo");
     requireWavelength(hiNm, what + " hi");
     if (!(loNm < hiNm)) {
-        throw std::invalid_argument(what + " needs lo < hi (" + number(loNm) + " >= " + number(hiNm) + " nm)");
+        throw std::invalid_argument(what + " needs lo < hi (" + shortestDecimal(loNm) + " >= " + shortestDecimal(hiNm) +
+                                    " nm)");
     }
 }
 
@@ -96,8 +91,8 @@ Spectrum Spectrum::lines(std::vector<std::pair<double, double>> linesNm) {
     for (const auto& [nm, weight] : linesNm) {
         requireWavelength(nm, "a line's wavelength");
         if (!std::isfinite(weight) || weight <= 0.0) {
-            throw std::invalid_argument("a line's weight must be finite and > 0 (got " + number(weight) + " at " +
-                                        number(nm) + " nm)");
+            throw std::invalid_argument("a line's weight must be finite and > 0 (got " + shortestDecimal(weight) +
+                                        " at " + shortestDecimal(nm) + " nm)");
         }
     }
     Spectrum spectrum(Kind::Lines);
@@ -139,11 +134,12 @@ Spectrum Spectrum::table(std::vector<std::pair<double, double>> pointsNm) {
         requireWavelength(nm, "a table's wavelength");
         if (i > 0 && !(pointsNm[i - 1].first < nm)) {
             throw std::invalid_argument("a table's wavelengths must be strictly ascending (" +
-                                        number(pointsNm[i - 1].first) + " then " + number(nm) + " nm)");
+                                        shortestDecimal(pointsNm[i - 1].first) + " then " + shortestDecimal(nm) +
+                                        " nm)");
         }
         if (!std::isfinite(weight) || weight < 0.0) {
-            throw std::invalid_argument("a table's weight must be finite and >= 0 (got " + number(weight) + " at " +
-                                        number(nm) + " nm)");
+            throw std::invalid_argument("a table's weight must be finite and >= 0 (got " + shortestDecimal(weight) +
+                                        " at " + shortestDecimal(nm) + " nm)");
         }
         anyPositive = anyPositive || weight > 0.0;
     }
@@ -163,7 +159,8 @@ Spectrum Spectrum::table(std::vector<std::pair<double, double>> pointsNm) {
 
 Spectrum Spectrum::blackbody(double kelvin, double loNm, double hiNm) {
     if (!std::isfinite(kelvin) || kelvin <= 0.0) {
-        throw std::invalid_argument("a blackbody's temperature must be finite and > 0 K (got " + number(kelvin) + ")");
+        throw std::invalid_argument("a blackbody's temperature must be finite and > 0 K (got " +
+                                    shortestDecimal(kelvin) + ")");
     }
     requireRange(loNm, hiNm, "a blackbody spectrum");
     // Doubling the segments halves h and quarters the piecewise-linear error (~ h^2): once the cdf at the
@@ -171,8 +168,9 @@ Spectrum Spectrum::blackbody(double kelvin, double loNm, double hiNm) {
     PiecewiseLinear coarse = tabulatePlanck(kelvin, loNm, hiNm, kFirstBlackbodySegments).second;
     for (std::size_t segments = 2 * kFirstBlackbodySegments;; segments *= 2) {
         if (segments > kMaxBlackbodySegments) {
-            throw std::invalid_argument("a blackbody at " + number(kelvin) + " K emits in too narrow a band of [" +
-                                        number(loNm) + ", " + number(hiNm) + "] nm to tabulate");
+            throw std::invalid_argument("a blackbody at " + shortestDecimal(kelvin) +
+                                        " K emits in too narrow a band of [" + shortestDecimal(loNm) + ", " +
+                                        shortestDecimal(hiNm) + "] nm to tabulate");
         }
         auto [grid, fine] = tabulatePlanck(kelvin, loNm, hiNm, segments);
         // Compare at every fine node: the shared ones, and the coarse segments' midpoints, where the coarse

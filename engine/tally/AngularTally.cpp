@@ -93,20 +93,22 @@ AngularTally::Columns AngularTally::columns() const {
     return columns;
 }
 
+void AngularTally::appendColumns(ResultTable& table, Columns c, bool stokes) {
+    table.columns.push_back({"theta_lo_deg", std::move(c.lower)});
+    table.columns.push_back({"theta_hi_deg", std::move(c.upper)});
+    table.columns.push_back({"fraction", std::move(c.fraction)});
+    table.columns.push_back({"fraction_per_sr", std::move(c.perSteradian)});
+    if (!stokes) return;
+    table.columns.push_back({"stokes_q", std::move(c.stokesQ)});
+    table.columns.push_back({"stokes_u", std::move(c.stokesU)});
+    table.columns.push_back({"stokes_v", std::move(c.stokesV)});
+    table.columns.push_back({"dolp", std::move(c.dolp)});
+}
+
 void AngularTally::report(ResultReport& report) const {
     report.set({"bins"}, static_cast<std::uint64_t>(escapes_.size()));
-    Columns c = columns();
-    ResultTable table{"angular",
-                      {{"theta_lo_deg", std::move(c.lower)},
-                       {"theta_hi_deg", std::move(c.upper)},
-                       {"fraction", std::move(c.fraction)},
-                       {"fraction_per_sr", std::move(c.perSteradian)}}};
-    if (stokes()) {
-        table.columns.push_back({"stokes_q", std::move(c.stokesQ)});
-        table.columns.push_back({"stokes_u", std::move(c.stokesU)});
-        table.columns.push_back({"stokes_v", std::move(c.stokesV)});
-        table.columns.push_back({"dolp", std::move(c.dolp)});
-    }
+    ResultTable table{"angular", {}};
+    appendColumns(table, columns(), stokes());
     report.addTable(std::move(table));
 }
 

@@ -41,6 +41,10 @@ public:
         std::vector<double> stokesQ, stokesU, stokesV, dolp;
     };
     Columns columns() const;
+    // Appends the table's columns (theta_lo_deg, theta_hi_deg, fraction, fraction_per_sr, and with Stokes
+    // columns stokes_q, stokes_u, stokes_v, dolp) to `table`: angular.csv's, and angular_spectral.csv's after
+    // its wavelength columns.
+    static void appendColumns(ResultTable& table, Columns columns, bool stokes);
 
     friend bool operator==(const AngularTally& a, const AngularTally& b) {
         return a.photons_ == b.photons_ && a.escapes_ == b.escapes_ && a.stokesQ_ == b.stokesQ_ &&

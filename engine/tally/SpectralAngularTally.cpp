@@ -75,19 +75,8 @@ void SpectralAngularTally::report(ResultReport& report) const {
         append(all.stokesV, c.stokesV);
         append(all.dolp, c.dolp);
     }
-    ResultTable table{"angular_spectral",
-                      {{"wavelength_lo_nm", std::move(lo)},
-                       {"wavelength_hi_nm", std::move(hi)},
-                       {"theta_lo_deg", std::move(all.lower)},
-                       {"theta_hi_deg", std::move(all.upper)},
-                       {"fraction", std::move(all.fraction)},
-                       {"fraction_per_sr", std::move(all.perSteradian)}}};
-    if (bands_.front().stokes()) {
-        table.columns.push_back({"stokes_q", std::move(all.stokesQ)});
-        table.columns.push_back({"stokes_u", std::move(all.stokesU)});
-        table.columns.push_back({"stokes_v", std::move(all.stokesV)});
-        table.columns.push_back({"dolp", std::move(all.dolp)});
-    }
+    ResultTable table{"angular_spectral", {{"wavelength_lo_nm", std::move(lo)}, {"wavelength_hi_nm", std::move(hi)}}};
+    AngularTally::appendColumns(table, std::move(all), bands_.front().stokes());
     report.addTable(std::move(table));
 }
 

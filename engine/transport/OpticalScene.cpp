@@ -33,10 +33,6 @@ OpticalScene::OpticalScene(const Scene& scene)
 }
 
 void OpticalScene::opticsAt(double wavelengthNm, std::vector<MediumOptics>& optics) const {
-    if (wavelengthNm == wavelengthNm_) {
-        optics = sceneOptics_;
-        return;
-    }
     optics.resize(media_.size());
     for (std::size_t id = 0; id < media_.size(); ++id)
         optics[id] = mediumOpticsAt(media_[id], wavelengthNm, unitInMetres_);

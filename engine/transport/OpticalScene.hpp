@@ -25,7 +25,7 @@ public:
     double unitInMetres() const { return unitInMetres_; }
     // Every medium's n and absorption at the scene wavelength, by medium id.
     const std::vector<MediumOptics>& sceneOptics() const { return sceneOptics_; }
-    // The same at `wavelengthNm` into `optics` (the scene's own when it is the scene wavelength, bit for bit).
+    // The same at `wavelengthNm` into `optics` (at the scene wavelength, the same values as sceneOptics()).
     void opticsAt(double wavelengthNm, std::vector<MediumOptics>& optics) const;
 
     // The region a point lies in (a point on a surface band belongs to the region around that shape).

@@ -27,7 +27,9 @@ std::vector<ScoredPhoton> photons(std::size_t count) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<ScoredPhoton> all;
     for (std::size_t i = 0; i < count; ++i) {
-        ScoredPhoton photon{{{Point::Zero(), Direction(0, 0, 1)}}, {Event{}}};
+        ScoredPhoton photon{{{Point::Zero(), Direction(0, 0, 1)}}, {}};
+        photon.events.emplace_back();  // the emission (Event's default type); no copy from an initializer list,
+                                       // which GCC 12 at -O1 warns may read the empty optional's storage
         const int interfaces = static_cast<int>(4 * unit(random));
         for (int k = 0; k < interfaces; ++k) {
             Event event;
