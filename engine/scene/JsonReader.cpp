@@ -134,6 +134,11 @@ std::int64_t JsonReader::integer() const {
     return value_.get<std::int64_t>();
 }
 
+bool JsonReader::boolean() const {
+    if (!value_.is_boolean()) fail("expected true or false, got " + describeType(value_));
+    return value_.get<bool>();
+}
+
 std::string JsonReader::string() const {
     if (!value_.is_string()) fail("expected a string, got " + describeType(value_));
     return value_.get<std::string>();

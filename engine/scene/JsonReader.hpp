@@ -58,6 +58,7 @@ public:
     double nonNegative() const;
     std::int64_t integer() const;
     std::string string() const;
+    bool boolean() const;  // true or false
 
     // [x, y, z] of finite numbers; positiveVector3 also requires each component > 0.
     Eigen::Vector3d vector3() const;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "geometry/Shape.hpp"
+#include "scene/Detector.hpp"
 #include "scene/Medium.hpp"
 #include "scene/SceneView.hpp"
 #include "scene/Source.hpp"
@@ -27,6 +28,7 @@ struct Scene {
     std::vector<std::string> shapeNames;  // parallel to shapes; empty when unnamed (always for generated)
     std::size_t explicitShapeCount = 0;   // shapes[0, explicitShapeCount) come from "shapes"
     std::vector<Source> sources;
+    std::vector<Detector> detectors;  // scene key "detectors" (docs/detectors.md)
     OctreeSettings octree;          // scene key "octree"
     std::optional<SceneView> view;  // scene key "view": the renderer's starting camera
 

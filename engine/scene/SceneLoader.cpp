@@ -7,6 +7,7 @@
 #include "scene/MediaReader.hpp"
 #include "scene/SceneOverlaps.hpp"
 #include "scene/ShapeReader.hpp"
+#include "scene/DetectorReader.hpp"
 #include "scene/SourceReader.hpp"
 #include "scene/WavelengthCoverage.hpp"
 
@@ -148,7 +149,7 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     scene.origin = origin;
     readFormatVersion(root, scene);
     root.expectKeys({"dropscope", "unit", "wavelength_nm", "ambient", "media", "shapes", "sources", "octree",
-                     "generators", "view"});
+                     "generators", "view", "detectors"});
     readUnit(root, scene);
     if (const auto wavelength = root.optionalMember("wavelength_nm")) scene.wavelengthNm = wavelength->positive();
     if (const auto media = root.optionalMember("media")) {
@@ -162,6 +163,7 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     checkMediaCoverSpectra(root, scene);
     if (const auto octree = root.optionalMember("octree")) readOctreeSettings(*octree, scene);
     if (const auto view = root.optionalMember("view")) readView(*view, scene);
+    if (const auto detectors = root.optionalMember("detectors")) scene.detectors = readDetectors(*detectors);
     // Only the explicit shapes need the pairwise check; generated droplets avoid everything by construction.
     checkShapesDisjoint(scene);
     scene.explicitShapeCount = scene.shapes.size();

@@ -153,6 +153,28 @@ Json sourceJson(const Source& source) {
     return json;
 }
 
+Json detectorJson(const Detector& detector) {
+    Json json = {{"type", std::string(detectorTypeName(detector.type))}, {"name", detector.name}};
+    const auto pixels = [&] { return Json::array({detector.pixels.nx, detector.pixels.ny}); };
+    if (detector.type == DetectorType::Plane) {
+        json["center"] = vector3(detector.center);
+        json["normal"] = vector3(detector.normal.vector());
+        json["up"] = vector3(detector.up);
+        json["size"] = Json::array({detector.size[0], detector.size[1]});
+        json["pixels"] = pixels();
+        if (detector.side != DetectorSide::Both) json["side"] = std::string(detectorSideName(detector.side));
+        if (detector.absorbing) json["absorbing"] = true;
+    } else if (detector.type == DetectorType::FarField) {
+        json["look"] = vector3(detector.look.vector());
+        json["up"] = vector3(detector.up);
+        json["projection"] = std::string(projectionName(detector.projection));
+        json["fov_deg"] = detector.fovDeg;
+        json["pixels"] = pixels();
+    }
+    if (detector.record > 0) json["record"] = detector.record;
+    return json;
+}
+
 Json viewJson(const SceneView& view) {
     return {{"eye", vector3(view.eye)},
             {"target", vector3(view.target)},
@@ -181,6 +203,17 @@ void checkWritable(const Scene& scene) {
         const std::string& name = id < scene.shapeNames.size() ? scene.shapeNames[id] : std::string();
         if (!name.empty() && !names.insert(name).second) {
             refuse("shape name " + jsonpath::quoted(name) + " is repeated");
+        }
+    }
+    names.clear();
+    for (const Detector& detector : scene.detectors) {
+        try {
+            checkDetector(detector);
+        } catch (const std::invalid_argument& error) {
+            refuse("detector " + jsonpath::quoted(detector.name) + ": " + error.what());
+        }
+        if (!names.insert(detector.name).second) {
+            refuse("detector name " + jsonpath::quoted(detector.name) + " is repeated");
         }
     }
 }
@@ -261,6 +294,11 @@ void writeScene(const Scene& scene, std::ostream& out) {
         {"octree", {{"max_depth", scene.octree.maxDepth}, {"max_shapes_per_leaf", scene.octree.maxShapesPerLeaf}}},
     };
     if (scene.view) members.push_back({"view", viewJson(*scene.view)});
+    if (!scene.detectors.empty()) {
+        Json detectors = Json::array();
+        for (const Detector& detector : scene.detectors) detectors.push_back(detectorJson(detector));
+        members.push_back({"detectors", std::move(detectors), true});
+    }
 
     out << "{\n";
     const char* separator = "";

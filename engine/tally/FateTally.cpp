@@ -23,6 +23,7 @@ void FateTally::score(const Event& event, const TallyContext& photon) {
         ++lost_;
         ++lostReasons_[static_cast<std::size_t>(event.lostReason)];
         break;
+    case EventType::Detect: ++detected_; break;
     case EventType::Truncated: break;  // ray trees only
     }
 }
@@ -33,6 +34,7 @@ void FateTally::merge(const Tally& other) {
     escaped_ += more.escaped_;
     absorbed_ += more.absorbed_;
     lost_ += more.lost_;
+    detected_ += more.detected_;
     unscattered_ += more.unscattered_;
     for (std::size_t i = 0; i < lostReasons_.size(); ++i) lostReasons_[i] += more.lostReasons_[i];
     events_ += more.events_;
@@ -47,6 +49,7 @@ void FateTally::report(ResultReport& report) const {
     report.set({"fractions", "absorbed"}, share(absorbed_));
     report.set({"fractions", "lost"}, share(lost_));
     report.set({"fractions", "unscattered"}, share(unscattered_));
+    report.set({"fractions", "detected"}, share(detected_));
     report.set({"events", "reflect"}, events_.reflect);
     report.set({"events", "refract"}, events_.refract);
     report.set({"events", "tir"}, events_.tir);
@@ -55,6 +58,7 @@ void FateTally::report(ResultReport& report) const {
     report.set({"counts", "absorbed"}, absorbed_);
     report.set({"counts", "lost"}, lost_);
     report.set({"counts", "unscattered"}, unscattered_);
+    report.set({"counts", "detected"}, detected_);
     for (std::size_t reason = 0; reason < kLostReasonCount; ++reason) {
         report.set({"lost_reasons", std::string(lostReasonName(static_cast<LostReason>(reason)))},
                    lostReasons_[reason]);

@@ -44,7 +44,21 @@ void ResultReport::addTable(ResultTable table) {
                                         std::to_string(column.size()) + " rows, not " + std::to_string(table.rows()));
         }
     }
+    if (!table.grid.empty() && (table.grid.size() != 2 || table.grid[0] * table.grid[1] != table.rows())) {
+        throw std::invalid_argument("result table " + table.name + ": its grid does not match its rows");
+    }
     tables_.push_back(std::move(table));
+}
+
+void ResultReport::addImage(ResultImage image) {
+    for (const ResultImage& other : images_) {
+        if (other.name == image.name) throw std::invalid_argument("two result images named " + image.name);
+    }
+    if (image.width < 1 || image.height < 1 ||
+        image.rgb.size() != 3 * static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height)) {
+        throw std::invalid_argument("result image " + image.name + ": its size does not match its pixels");
+    }
+    images_.push_back(std::move(image));
 }
 
 const SummaryValue* ResultReport::find(const std::vector<std::string>& path) const {

@@ -11,6 +11,7 @@ std::string_view eventTypeName(EventType type) {
     case EventType::Absorb: return "absorb";
     case EventType::Escape: return "escape";
     case EventType::Lost: return "lost";
+    case EventType::Detect: return "detect";
     case EventType::Truncated: return "truncated";
     }
     return "?";

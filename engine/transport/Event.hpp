@@ -13,9 +13,9 @@
 
 namespace dropscope {
 
-// What happened to a photon (or a ray-tree branch). `Truncated` only occurs in the ray tree: a branch
-// whose weight fell below the minimum or whose depth reached the maximum.
-enum class EventType { Emit, Reflect, Refract, Tir, Absorb, Escape, Lost, Truncated };
+// What happened to a photon (or a ray-tree branch). `Detect`: it ended on an absorbing detector. `Truncated`
+// only occurs in the ray tree: a branch whose weight fell below the minimum or whose depth reached the maximum.
+enum class EventType { Emit, Reflect, Refract, Tir, Absorb, Escape, Lost, Detect, Truncated };
 
 // Why a photon was lost: every photon ends escaped, absorbed or lost, and a lost one says why.
 enum class LostReason {
@@ -44,6 +44,7 @@ struct Event {
     double reflectance = std::numeric_limits<double>::quiet_NaN();
     double weight = 1.0;
     LostReason lostReason = LostReason::EventCap;  // meaningful only for EventType::Lost
+    std::size_t detector = 0;                      // for EventType::Detect: its index in the scene's detectors
     std::optional<Polarisation> polarisation = std::nullopt;
 };
 

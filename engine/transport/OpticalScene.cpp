@@ -30,6 +30,22 @@ OpticalScene::OpticalScene(const Scene& scene)
     }
     // The numbers the scene already holds: the light of the scene wavelength is traced exactly as before.
     for (const Medium& medium : media_) sceneOptics_.push_back({medium.n, medium.absorptionPerUnit});
+    for (std::size_t i = 0; i < scene.detectors.size(); ++i) {
+        const Detector& detector = scene.detectors[i];
+        if (detector.type == DetectorType::Plane && detector.absorbing) {
+            absorbingPlanes_.push_back({i, detector, planeFrame(detector)});
+        }
+    }
+}
+
+std::optional<OpticalScene::PlaneHit> OpticalScene::firstAbsorbingPlane(const Point& p, const Direction& d,
+                                                                        double length) const {
+    std::optional<PlaneHit> first;
+    for (const AbsorbingPlane& absorber : absorbingPlanes_) {
+        const auto crossing = crossPlane(absorber.plane, absorber.frame, p, d, first ? first->distance : length);
+        if (crossing && (!first || crossing->distance < first->distance)) first = PlaneHit{&absorber, crossing->distance};
+    }
+    return first;
 }
 
 void OpticalScene::opticsAt(double wavelengthNm, std::vector<MediumOptics>& optics) const {

@@ -1,9 +1,11 @@
 #pragma once
 
+#include "scene/Detector.hpp"
 #include "scene/Medium.hpp"
 #include "scene/Scene.hpp"
 #include "tree/Octree.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace dropscope {
@@ -43,6 +45,20 @@ public:
     }
     const Medium& mediumOf(ShapeId region) const { return media_[mediumIdOf(region)]; }
 
+    // The scene's absorbing plane detectors, which end the photons they count (docs/detectors.md).
+    struct AbsorbingPlane {
+        std::size_t detector;  // index in the scene's detectors
+        Detector plane;
+        PlaneFrame frame;
+    };
+    const std::vector<AbsorbingPlane>& absorbingPlanes() const { return absorbingPlanes_; }
+    // The nearest absorbing plane a flight from p along d crosses within (0, length], if any.
+    struct PlaneHit {
+        const AbsorbingPlane* plane;
+        double distance;
+    };
+    std::optional<PlaneHit> firstAbsorbingPlane(const Point& p, const Direction& d, double length) const;
+
 private:
     ShapeId smallestContainer(const Shape& inner, ShapeId innerId) const;
 
@@ -53,6 +69,7 @@ private:
     MediumId ambient_;
     Octree octree_;
     std::vector<ShapeId> parents_;
+    std::vector<AbsorbingPlane> absorbingPlanes_;
 };
 
 }  // namespace dropscope

@@ -15,6 +15,8 @@ struct PhotonState {
     bool metSurface = false;             // it has reached a surface (tangent passes included)
     std::uint64_t interfaceEvents = 0;   // surfaces reached so far (reflect, refract, tir, tangent)
     double wavelengthNm = 0.0;           // its vacuum wavelength
+    ShapeId region = RayHit::kNone;      // the region it is in (RayHit::kNone: the ambient medium)
+    double pathLength = 0.0;             // how far it has flown since its emission
 };
 
 // One straight stretch of a photon's path: from `origin` along `direction` for `length` (infinite for

@@ -12,6 +12,7 @@ std::string_view photonFateName(PhotonFate fate) {
     case PhotonFate::Escaped: return "escaped";
     case PhotonFate::Absorbed: return "absorbed";
     case PhotonFate::Lost: return "lost";
+    case PhotonFate::Detected: return "detected";
     }
     return "?";
 }
@@ -34,6 +35,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     Point position = emitted.origin;
     Direction direction = emitted.direction;
     ShapeId region = scene.regionAt(position, direction);
+    state.region = region;
     std::optional<Polarisation> light;
     if (settings.polarisation == PolarisationModel::Stokes)
         light = polarisation ? *polarisation : unpolarisedLight(direction);
@@ -49,7 +51,9 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     // Moves the photon `length` ahead (an infinite length leaves it where it is: the escape ray).
     const auto fly = [&](double length) {
         if (flights) observer->flight({position, direction, length, scene.mediumIdOf(region)}, state);
-        if (std::isfinite(length)) position += length * direction.vector();
+        if (!std::isfinite(length)) return;
+        position += length * direction.vector();
+        state.pathLength += length;
     };
     const auto lose = [&](LostReason reason) {
         outcome.fate = PhotonFate::Lost;
@@ -74,6 +78,22 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         observe(here(EventType::Absorb));
         return true;
     };
+    // The absorbing plane detector a flight of `reach` ahead would end on, if any.
+    const bool absorbingPlanes = !scene.absorbingPlanes().empty();
+    const auto detectorAhead = [&](double reach) -> std::optional<OpticalScene::PlaneHit> {
+        if (!absorbingPlanes) return std::nullopt;
+        return scene.firstAbsorbingPlane(position, direction, reach);
+    };
+    const auto detect = [&](const OpticalScene::PlaneHit& detector) {
+        fly(detector.distance);
+        outcome.fate = PhotonFate::Detected;
+        if (observer) {
+            Event event = here(EventType::Detect);
+            event.detector = detector.plane->detector;
+            observe(event);
+        }
+        return outcome;
+    };
     observe(here(EventType::Emit));
 
     // From a distant source, cross the empty ambient up to the scene first, so that hit points are
@@ -81,14 +101,21 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     if (region == OpticalScene::kAmbient) {
         const double approach = scene.approachDistance(position, direction);
         if (approach > 0.0) {
-            if (absorbedWithin(approach)) return outcome;
+            const auto detector = detectorAhead(approach);
+            if (absorbedWithin(detector ? detector->distance : approach)) return outcome;
+            if (detector) return detect(*detector);
             fly(approach);
         }
     }
 
     for (;;) {
         const RayHit hit = scene.octree().firstHit(position, direction);
-        if (absorbedWithin(hit ? hit.distance : std::numeric_limits<double>::infinity())) return outcome;
+        double reach = hit ? hit.distance : std::numeric_limits<double>::infinity();
+        // A photon inside a shape with no surface ahead is lost below, never detected beyond it.
+        const auto detector = hit || region == OpticalScene::kAmbient ? detectorAhead(reach) : std::nullopt;
+        if (detector) reach = detector->distance;
+        if (absorbedWithin(reach)) return outcome;
+        if (detector) return detect(*detector);
         if (!hit) {
             if (region != OpticalScene::kAmbient) return lose(LostReason::NoExit);
             fly(std::numeric_limits<double>::infinity());
@@ -124,7 +151,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         }
         if (type == EventType::Refract) {
             direction = crossing.transmitted;
-            region = crossing.regionBeyond;
+            region = state.region = crossing.regionBeyond;
             if (light) light = withUnitPower(polarised->transmitted());
         } else {
             direction = crossing.reflected;

@@ -22,9 +22,9 @@ struct TransportSettings {
     PolarisationModel polarisation = PolarisationModel::Stokes;
 };
 
-enum class PhotonFate { Escaped, Absorbed, Lost };
+enum class PhotonFate { Escaped, Absorbed, Lost, Detected };
 
-// "escaped", "absorbed", "lost": as paths.jsonl and the app write it.
+// "escaped", "absorbed", "lost", "detected": as paths.jsonl and the app write it.
 std::string_view photonFateName(PhotonFate fate);
 
 struct PhotonOutcome {
@@ -43,7 +43,8 @@ struct PhotonOutcome {
 // wavelength is `wavelengthNm` (the scene's when absent): every interface uses the media's n and every
 // flight their absorption at it. Observers measure scattering angles from `axis` (PhotonState::axis: the
 // axis of a divergent beam; the emitted direction when absent). An `observer` is told every event, starting
-// with the emission, and (if it wants them) every flight between them.
+// with the emission, and (if it wants them) every flight between them. A photon that crosses an absorbing
+// plane detector (on a side it counts) ends there: a Detect event, fate Detected.
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
                           const TransportSettings& settings, PhotonObserver* observer = nullptr,
                           const std::optional<Polarisation>& polarisation = std::nullopt,
