@@ -9,6 +9,7 @@
 #include "run/TraceRun.hpp"
 #include "scene/SceneLoader.hpp"
 #include "tally/FateTally.hpp"
+#include "tally/OrderTally.hpp"
 #include "tally/StandardTallies.hpp"
 
 #include <CLI/CLI.hpp>
@@ -149,9 +150,13 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
                      "Equal wavelength bins over the sources' spectra in angular_spectral.csv")
         ->capture_default_str()
         ->transform(wholeNumberIn(1, kMaxWavelengthBins));
+    command->add_flag("--orders", options.orders,
+                      "Ray orders: angular_orders.csv (p0 .. p5_plus of photons that met one shape, and multiple) and "
+                      "single/multiple scattering shares in summary.json");
     command
         ->add_option("--out", options.outDir,
-                     "Output folder (created): summary.json, angular.csv, angular_spectral.csv, paths.jsonl")
+                     "Output folder (created): summary.json, angular.csv, angular_spectral.csv, detector files, "
+                     "paths.jsonl")
         ->required();
     return command;
 }
@@ -177,7 +182,11 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
     } catch (const std::invalid_argument& error) {
         throw BadInputError("--wavelength-bins " + std::to_string(options.wavelengthBins) + ": " + error.what());
     }
-    const TallySet tallies = standardTallies(options.bins, settings.transport.polarisation, wavelengths);
+    TallySet tallies = standardTallies(options.bins, settings.transport.polarisation, wavelengths);
+    if (options.orders) tallies.add(std::make_unique<OrderTally>(options.bins));
+    addDetectorTallies(tallies, scene, settings.transport.polarisation);
+    // The detectors' files are named after them: checked now that they are known.
+    checkOutputPath(directory, traceFileNames(tallies));
     const OpticalScene opticalScene(scene);
     createOutputDirectory(directory);
 

@@ -67,6 +67,7 @@ Colour eventColour(EventType type) {
     case EventType::Absorb: return {0.90f, 0.15f, 0.15f, 1.0f};     // red
     case EventType::Escape: return {0.35f, 0.90f, 0.35f, 1.0f};     // green
     case EventType::Lost: return {1.00f, 0.20f, 0.75f, 1.0f};       // pink
+    case EventType::Detect: return {1.00f, 0.85f, 0.10f, 1.0f};     // yellow
     case EventType::Truncated: return {0.55f, 0.55f, 0.55f, 1.0f};  // grey
     }
     return {1.0f, 1.0f, 1.0f, 1.0f};

@@ -27,6 +27,7 @@ Json eventJson(const Event& event, const std::vector<Medium>& media) {
                  {"R", finiteOrNull(event.reflectance)},
                  {"weight", finiteOrNull(event.weight)}};
     if (event.type == EventType::Lost) json["reason"] = lostReasonName(event.lostReason);
+    if (event.type == EventType::Detect) json["detector"] = event.detector;
     if (event.polarisation) {
         const StokesVector& s = event.polarisation->stokes;
         json["stokes"] = Json::array({finiteOrNull(s[0]), finiteOrNull(s[1]), finiteOrNull(s[2]), finiteOrNull(s[3])});

@@ -1,6 +1,7 @@
 #include "results/TraceFiles.hpp"
 
 #include "results/AtomicFile.hpp"
+#include "results/ImagePng.hpp"
 #include "results/PathsJsonl.hpp"
 #include "results/SummaryJson.hpp"
 #include "results/TableCsv.hpp"
@@ -47,10 +48,30 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
 
 void writeTraceSummary(const ResultReport& report, std::ostream& out) {
     // docs/cli.md's order: scripts that diff summaries across versions see the same file.
-    static const std::vector<std::string_view> kKeyOrder{
-        "photons", "seed",         "threads", "seconds",       "fractions",       "events",     "photons_requested",
-        "partial", "scene",        "bins",    "fresnel",       "polarisation",    "max_events", "paths",
-        "counts",  "lost_reasons", "sources", "wavelength_nm", "wavelength_bins", "spectra"};
+    static const std::vector<std::string_view> kKeyOrder{"photons",
+                                                         "seed",
+                                                         "threads",
+                                                         "seconds",
+                                                         "fractions",
+                                                         "events",
+                                                         "photons_requested",
+                                                         "partial",
+                                                         "scene",
+                                                         "bins",
+                                                         "fresnel",
+                                                         "polarisation",
+                                                         "max_events",
+                                                         "paths",
+                                                         "counts",
+                                                         "lost_reasons",
+                                                         "sources",
+                                                         "wavelength_nm",
+                                                         "wavelength_bins",
+                                                         "spectra",
+                                                         "single_scattering",
+                                                         "multiple_scattering",
+                                                         "budget",
+                                                         "detectors"};
     writeSummaryJson(report, kKeyOrder, out);
 }
 
@@ -59,6 +80,7 @@ std::vector<std::string> traceFileNames(const TallySet& tallies) {
     tallies.emptyCopy().report(report);
     std::vector<std::string> names{"summary.json"};
     for (const ResultTable& table : report.tables()) names.push_back(table.name + ".csv");
+    for (const ResultImage& image : report.images()) names.push_back(image.name + ".png");
     names.push_back("paths.jsonl");
     return names;
 }
@@ -69,6 +91,9 @@ void writeTraceFiles(const std::filesystem::path& directory, const TraceResult& 
     std::vector<FileToWrite> files;
     for (const ResultTable& table : report.tables()) {
         files.push_back({directory / (table.name + ".csv"), [&](std::ostream& out) { writeTableCsv(table, out); }});
+    }
+    for (const ResultImage& image : report.images()) {
+        files.push_back({directory / (image.name + ".png"), [&](std::ostream& out) { writeImagePng(image, out); }});
     }
     files.push_back({directory / "paths.jsonl", [&](std::ostream& out) { writePathsJsonl(result.paths, media, out); }});
     // Renamed last: a summary.json is only ever beside the files of its own run.

@@ -64,9 +64,9 @@ double perspectiveCornerSolidAngle(double x, double y) { return std::atan(x * y 
 
 // 8-point Gauss-Legendre nodes and weights on [-1, 1] (Abramowitz and Stegun, table 25.4).
 constexpr std::array<double, 4> kGaussNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                           0.9602898564975363};
+                                            0.9602898564975363};
 constexpr std::array<double, 4> kGaussWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                             0.1012285362903763};
+                                              0.1012285362903763};
 // A pixel the domain's edge cuts is integrated by the midpoint rule on this many points a side.
 constexpr int kCutPixelSamples = 64;
 

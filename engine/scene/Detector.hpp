@@ -17,8 +17,8 @@ enum class DetectorType { Plane, FarField, ShapeAbsorption };
 enum class DetectorSide { Both, Front, Back };
 enum class FarFieldProjection { Equidistant, EqualArea, Perspective };
 
-std::string_view detectorTypeName(DetectorType type);             // "plane", "far_field", "shape_absorption"
-std::string_view detectorSideName(DetectorSide side);             // "both", "front", "back"
+std::string_view detectorTypeName(DetectorType type);            // "plane", "far_field", "shape_absorption"
+std::string_view detectorSideName(DetectorSide side);            // "both", "front", "back"
 std::string_view projectionName(FarFieldProjection projection);  // "equidistant", "equal_area", "perspective"
 
 // An image's pixel grid: nx columns (ix, along u) by ny rows (iy, along v, row 0 at the lowest v); pixel
@@ -83,7 +83,7 @@ PlaneFrame planeFrame(const Detector& plane);
 
 // Where a path segment from `origin` along unit `direction` crosses a plane detector.
 struct PlaneCrossing {
-    double distance = 0.0;  // along the direction
+    double distance = 0.0;    // along the direction
     double u = 0.0, v = 0.0;  // in the detector's frame, relative to its centre
     std::size_t pixel = 0;
 };

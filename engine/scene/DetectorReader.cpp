@@ -55,7 +55,8 @@ Detector readDetector(const JsonReader& json) {
         json.expectKeys({"type", "name", "record"});
         detector.type = DetectorType::ShapeAbsorption;
     } else {
-        typeJson.fail("unknown detector type " + jsonpath::quoted(type) + " (known: plane, far_field, shape_absorption)");
+        typeJson.fail("unknown detector type " + jsonpath::quoted(type) +
+                      " (known: plane, far_field, shape_absorption)");
     }
     const JsonReader name = json.member("name");
     detector.name = name.string();

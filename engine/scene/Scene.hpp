@@ -29,8 +29,8 @@ struct Scene {
     std::size_t explicitShapeCount = 0;   // shapes[0, explicitShapeCount) come from "shapes"
     std::vector<Source> sources;
     std::vector<Detector> detectors;  // scene key "detectors" (docs/detectors.md)
-    OctreeSettings octree;          // scene key "octree"
-    std::optional<SceneView> view;  // scene key "view": the renderer's starting camera
+    OctreeSettings octree;            // scene key "octree"
+    std::optional<SceneView> view;    // scene key "view": the renderer's starting camera
 
     const Medium& mediumOf(const Shape& shape) const { return media.at(shape.mediumId()); }
     std::optional<MediumId> findMedium(const std::string& name) const;

@@ -1,5 +1,6 @@
 #include "scene/SceneLoader.hpp"
 
+#include "scene/DetectorReader.hpp"
 #include "scene/GeneratorReader.hpp"
 #include "scene/JsonDocument.hpp"
 #include "scene/JsonPath.hpp"
@@ -7,7 +8,6 @@
 #include "scene/MediaReader.hpp"
 #include "scene/SceneOverlaps.hpp"
 #include "scene/ShapeReader.hpp"
-#include "scene/DetectorReader.hpp"
 #include "scene/SourceReader.hpp"
 #include "scene/WavelengthCoverage.hpp"
 

@@ -139,6 +139,12 @@ Rgb displaySrgbFromXyz(const Xyz& xyz) {
     return rgb;
 }
 
+Rgb exposedSrgb(const Xyz& xyz, double exposure) {
+    Rgb rgb = linearSrgbFromXyz({exposure * xyz.x, exposure * xyz.y, exposure * xyz.z});
+    for (double& c : rgb) c = srgbEncode(std::clamp(c, 0.0, 1.0));
+    return rgb;
+}
+
 Rgb displayColourOfWavelength(double wavelengthNm) {
     const auto [lo, hi] = cieTableRangeNm();
     if (!(wavelengthNm >= lo && wavelengthNm <= hi)) {

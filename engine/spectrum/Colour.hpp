@@ -34,6 +34,11 @@ double srgbEncode(double linear);
 // the gamut by adding white (desaturating) until no component is negative, then scaled so the largest
 // linear component is 1. Black stays black.
 Rgb displaySrgbFromXyz(const Xyz& xyz);
+// An image pixel's colour: the linear sRGB of `exposure` * xyz with each component clipped to [0, 1] (negative
+// ones, outside the gamut, to 0; overexposed ones to 1), encoded. docs/detectors.md says how far-field images
+// choose their exposure.
+Rgb exposedSrgb(const Xyz& xyz, double exposure);
+
 // The colour a path of that wavelength is drawn with: cieColourMatching(lambda) in linear sRGB with its
 // negative components set to 0 (a spectral colour's nearest hue in the gamut; adding white, as
 // displaySrgbFromXyz does, turns deep reds pink), scaled so the largest is 1, encoded. Outside the table: a

@@ -8,8 +8,8 @@
 namespace dropscope {
 
 // How the photons of a run ended (escaped, absorbed, lost and why, detected by an absorbing detector;
-// unscattered: escaped without meeting any surface) and their interface and absorption events: summary.json's fractions, counts,
-// lost_reasons and events (docs/cli.md).
+// unscattered: escaped without meeting any surface) and their interface and absorption events: summary.json's
+// fractions, counts, lost_reasons and events (docs/cli.md).
 class FateTally final : public Tally {
 public:
     std::string_view name() const override { return "fates"; }
@@ -30,8 +30,8 @@ public:
 
     friend bool operator==(const FateTally& a, const FateTally& b) {
         return a.photons_ == b.photons_ && a.escaped_ == b.escaped_ && a.absorbed_ == b.absorbed_ &&
-               a.lost_ == b.lost_ && a.detected_ == b.detected_ && a.unscattered_ == b.unscattered_ && a.lostReasons_ == b.lostReasons_ &&
-               a.events_ == b.events_;
+               a.lost_ == b.lost_ && a.detected_ == b.detected_ && a.unscattered_ == b.unscattered_ &&
+               a.lostReasons_ == b.lostReasons_ && a.events_ == b.events_;
     }
 
 private:

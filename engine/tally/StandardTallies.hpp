@@ -1,5 +1,6 @@
 #pragma once
 
+#include "scene/Scene.hpp"
 #include "tally/SpectralAngularTally.hpp"
 #include "tally/TallySet.hpp"
 #include "transport/SurfaceCrossing.hpp"
@@ -14,5 +15,9 @@ namespace dropscope {
 // `wavelengths`, also a SpectralAngularTally of the same angular bins.
 TallySet standardTallies(int angularBins, PolarisationModel polarisation,
                          std::optional<WavelengthBins> wavelengths = std::nullopt);
+
+// Adds what the scene's detectors count, one tally per detector in scene order (PlaneDetectorTally,
+// FarFieldTally, ShapeAbsorptionTally, with Stokes columns when `polarisation` is Stokes), and the BudgetTally.
+void addDetectorTallies(TallySet& tallies, const Scene& scene, PolarisationModel polarisation);
 
 }  // namespace dropscope

@@ -43,7 +43,8 @@ std::optional<OpticalScene::PlaneHit> OpticalScene::firstAbsorbingPlane(const Po
     std::optional<PlaneHit> first;
     for (const AbsorbingPlane& absorber : absorbingPlanes_) {
         const auto crossing = crossPlane(absorber.plane, absorber.frame, p, d, first ? first->distance : length);
-        if (crossing && (!first || crossing->distance < first->distance)) first = PlaneHit{&absorber, crossing->distance};
+        if (crossing && (!first || crossing->distance < first->distance))
+            first = PlaneHit{&absorber, crossing->distance};
     }
     return first;
 }

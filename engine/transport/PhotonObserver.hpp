@@ -26,6 +26,7 @@ struct Flight {
     Direction direction;
     double length = 0.0;
     MediumId medium = 0;
+    const Polarisation* polarisation = nullptr;  // the light's along it, when polarisation is traced
 };
 
 // Told everything that happens to one photon, in order: every event (emit first; escape, absorb or

@@ -50,7 +50,9 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     };
     // Moves the photon `length` ahead (an infinite length leaves it where it is: the escape ray).
     const auto fly = [&](double length) {
-        if (flights) observer->flight({position, direction, length, scene.mediumIdOf(region)}, state);
+        if (flights) {
+            observer->flight({position, direction, length, scene.mediumIdOf(region), light ? &*light : nullptr}, state);
+        }
         if (!std::isfinite(length)) return;
         position += length * direction.vector();
         state.pathLength += length;

@@ -1,0 +1,99 @@
+#include "tally/OrderTally.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace dropscope {
+
+OrderTally::OrderTally(int bins) {
+    if (bins < 1) throw std::invalid_argument("the number of angular bins must be at least 1");
+    const auto count = static_cast<std::size_t>(bins);
+    for (auto& column : orders_) column.assign(count, 0);
+    multiple_.assign(count, 0);
+}
+
+void OrderTally::score(const Event& event, const TallyContext& photon) {
+    switch (event.type) {
+    case EventType::Emit:
+        ++photons_;
+        firstShape_ = RayHit::kNone;
+        severalShapes_ = false;
+        eventsAtShape_ = 0;
+        return;
+    case EventType::Reflect:
+    case EventType::Refract:
+    case EventType::Tir:
+        if (firstShape_ == RayHit::kNone) firstShape_ = event.shape;
+        if (event.shape != firstShape_) severalShapes_ = true;
+        ++eventsAtShape_;
+        return;
+    case EventType::Escape: break;
+    default: return;
+    }
+    if (firstShape_ == RayHit::kNone) return;  // unscattered
+    // The same bins as AngularTally: theta from the photon's axis.
+    const double cosine = std::clamp(event.direction.dot(photon.state.axis), -1.0, 1.0);
+    const auto bins = multiple_.size();
+    const auto bin =
+        std::min(static_cast<std::size_t>(std::acos(cosine) / std::numbers::pi * static_cast<double>(bins)), bins - 1);
+    if (severalShapes_) {
+        ++multiple_[bin];
+        return;
+    }
+    const std::uint64_t order = std::min<std::uint64_t>(eventsAtShape_ - 1, kOrderColumns - 1);
+    ++orders_[order][bin];
+}
+
+void OrderTally::merge(const Tally& other) {
+    const OrderTally& more = sameTally(*this, other);
+    if (more.bins() != bins()) throw std::logic_error("merging order tallies of different bins");
+    photons_ += more.photons_;
+    for (std::size_t p = 0; p < kOrderColumns; ++p) {
+        for (std::size_t b = 0; b < multiple_.size(); ++b) orders_[p][b] += more.orders_[p][b];
+    }
+    for (std::size_t b = 0; b < multiple_.size(); ++b) multiple_[b] += more.multiple_[b];
+}
+
+std::uint64_t OrderTally::singleTotal() const {
+    std::uint64_t total = 0;
+    for (const auto& column : orders_) {
+        for (std::uint64_t count : column) total += count;
+    }
+    return total;
+}
+
+std::uint64_t OrderTally::multipleTotal() const {
+    std::uint64_t total = 0;
+    for (std::uint64_t count : multiple_) total += count;
+    return total;
+}
+
+void OrderTally::report(ResultReport& report) const {
+    const auto share = [&](std::uint64_t count) {
+        return photons_ > 0 ? static_cast<double>(count) / static_cast<double>(photons_) : std::nan("");
+    };
+    report.set({"single_scattering"}, share(singleTotal()));
+    report.set({"multiple_scattering"}, share(multipleTotal()));
+    std::vector<double> lower, upper;
+    for (int bin = 0; bin < bins(); ++bin) {
+        lower.push_back(180.0 * bin / bins());
+        upper.push_back(180.0 * (bin + 1) / bins());
+    }
+    ResultTable table{"angular_orders", {}};
+    table.columns.push_back({"theta_lo_deg", std::move(lower), "deg"});
+    table.columns.push_back({"theta_hi_deg", std::move(upper), "deg"});
+    const auto shares = [&](const std::vector<std::uint64_t>& counts) {
+        std::vector<double> column;
+        for (std::uint64_t count : counts) column.push_back(share(count));
+        return column;
+    };
+    static const std::array<std::string, kOrderColumns> kNames{"p0", "p1", "p2", "p3", "p4", "p5_plus"};
+    for (std::size_t p = 0; p < kOrderColumns; ++p) table.columns.push_back({kNames[p], shares(orders_[p])});
+    table.columns.push_back({"multiple", shares(multiple_)});
+    report.addTable(std::move(table));
+}
+
+}  // namespace dropscope

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "tally/Tally.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace dropscope {
+
+// Ray orders (`dropscope trace --orders`, docs/detectors.md, "Ray orders"). An escaping photon that met exactly
+// one shape (reflected off it or entered it) has ray order p = (its interface events at that shape) - 1: p0
+// reflected outside, p1 straight through, p2 one internal reflection (the primary bow), ...; one that met two
+// shapes or more is "multiple". Table "angular_orders": theta_lo_deg, theta_hi_deg, p0, p1, p2, p3, p4, p5_plus,
+// multiple (shares of the emitted photons escaping into the bin, angles as in angular.csv); summary
+// "single_scattering" and "multiple_scattering" (the columns' totals).
+class OrderTally final : public Tally {
+public:
+    static constexpr std::size_t kOrderColumns = 6;  // p0 .. p4, p5_plus
+
+    explicit OrderTally(int bins);
+    std::string_view name() const override { return "angular_orders"; }
+    std::unique_ptr<Tally> emptyCopy() const override { return std::make_unique<OrderTally>(bins()); }
+    std::unique_ptr<Tally> clone() const override { return std::make_unique<OrderTally>(*this); }
+    void score(const Event& event, const TallyContext& photon) override;
+    void merge(const Tally& other) override;
+    void report(ResultReport& report) const override;
+
+    int bins() const { return static_cast<int>(multiple_.size()); }
+    std::uint64_t photons() const { return photons_; }
+    // Escapes of order p (p = 5: five or more) in each bin, and of photons that met several shapes.
+    const std::vector<std::uint64_t>& order(std::size_t p) const { return orders_[p]; }
+    const std::vector<std::uint64_t>& multiple() const { return multiple_; }
+    std::uint64_t singleTotal() const;
+    std::uint64_t multipleTotal() const;
+
+private:
+    std::uint64_t photons_ = 0;
+    std::array<std::vector<std::uint64_t>, kOrderColumns> orders_;
+    std::vector<std::uint64_t> multiple_;
+    // The photon being scored.
+    ShapeId firstShape_ = RayHit::kNone;
+    bool severalShapes_ = false;
+    std::uint64_t eventsAtShape_ = 0;
+};
+
+}  // namespace dropscope
