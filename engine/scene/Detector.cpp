@@ -1,5 +1,7 @@
 #include "scene/Detector.hpp"
 
+#include "spectrum/Decimal.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -11,8 +13,6 @@ namespace dropscope {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-
-std::string number(double value) { return std::to_string(value); }
 
 // The unit component of `up` perpendicular to `axis`; throws when up is (nearly) along the axis or zero.
 Eigen::Vector3d perpendicularUp(const Eigen::Vector3d& up, const Eigen::Vector3d& axis, const char* axisName) {
@@ -132,8 +132,9 @@ void checkDetector(const Detector& detector) {
     const double limit = detector.projection == FarFieldProjection::Perspective ? 180.0 : 360.0;
     const bool open = detector.projection == FarFieldProjection::Perspective;
     if (!std::isfinite(fov) || fov <= 0.0 || (open ? fov >= limit : fov > limit)) {
-        throw std::invalid_argument("fov_deg must be > 0 and " + std::string(open ? "< " : "<= ") + number(limit) +
-                                    " for the " + std::string(projectionName(detector.projection)) + " projection");
+        throw std::invalid_argument("fov_deg must be > 0 and " + std::string(open ? "< " : "<= ") +
+                                    shortestDecimal(limit) + " for the " +
+                                    std::string(projectionName(detector.projection)) + " projection");
     }
 }
 

@@ -63,7 +63,7 @@ struct Detector {
 // letters, digits, '_' and '-'; an image has at most kMaxDetectorPixels pixels; a far-field view is at most
 // 360 degrees wide (perspective: less than 180).
 inline constexpr std::size_t kMaxDetectorNameLength = 64;
-inline constexpr std::size_t kMaxDetectorPixels = 16'777'216;
+inline constexpr std::size_t kMaxDetectorPixels = 1'048'576;  // 1024 x 1024: ~100 bytes each per thread
 inline constexpr std::uint64_t kMaxDetectorRecords = 10'000'000;
 // An `up` must be further than this sine from the normal (or look) direction: closer, its projection into
 // the image plane is mostly rounding and the image would spin with the last bits of the input.

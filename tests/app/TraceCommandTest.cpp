@@ -117,9 +117,12 @@ TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
                              "photons",           "seed",    "threads", "seconds",      "fractions", "events",
                              "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
                              "max_events",        "paths",   "counts",  "lost_reasons", "sources",   "wavelength_nm",
-                             "wavelength_bins",   "spectra"}));
-    EXPECT_EQ(keysOf(s["fractions"]), (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered"}));
-    EXPECT_EQ(keysOf(s["counts"]), (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered"}));
+                             "wavelength_bins",   "spectra", "budget"}));
+    EXPECT_EQ(keysOf(s["fractions"]),
+              (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered", "detected"}));
+    EXPECT_EQ(keysOf(s["counts"]),
+              (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered", "detected"}));
+    EXPECT_EQ(keysOf(s["budget"]), (std::vector<std::string>{"photons", "escaped", "absorbed", "detected", "lost"}));
     EXPECT_EQ(keysOf(s["events"]), (std::vector<std::string>{"reflect", "refract", "tir", "absorb"}));
     EXPECT_EQ(keysOf(s["lost_reasons"]),
               (std::vector<std::string>{"event_cap", "undefined_normal", "medium_mismatch", "no_exit"}));
@@ -446,6 +449,159 @@ TEST_F(TraceCommand, OneWavelengthBinIsTheAngularTableWithItsEdges) {
     const std::vector<std::string> spectral = lines(path("out/angular_spectral.csv"));
     ASSERT_EQ(spectral.size(), angular.size());
     for (std::size_t i = 1; i < angular.size(); ++i) EXPECT_EQ(spectral[i], "532,532," + angular[i]);
+}
+
+}  // namespace
+}  // namespace dropscope
+
+namespace dropscope {
+namespace {
+
+// A water drop in a beam with one detector of each kind (and an absorbing wall far behind), as JSON.
+std::string detectorScene() {
+    return R"({"dropscope": 1, "media": {"water": {"n": 1.333, "kappa": 1e-4}, "glass": {"n": 1.5, "sigma": 0.2}},
+      "shapes": [{"type": "sphere", "name": "drop", "center": [0, 0, 0], "radius": 1, "medium": "water"},
+                 {"type": "sphere", "name": "bead, small", "center": [0, 0.2, 2.5], "radius": 0.3, "medium": "glass"}],
+      "sources": [{"type": "beam", "origin": [0, 0, -4], "direction": [0, 0, 1], "radius": 1.2}],
+      "detectors": [
+        {"type": "far_field", "name": "sky", "look": [0, 0, 1], "up": [0, 1, 0], "projection": "equidistant",
+         "fov_deg": 110, "pixels": [24, 20], "record": 5},
+        {"type": "plane", "name": "screen", "center": [0, 0, 4], "normal": [0, 0, -1], "up": [0, 1, 0],
+         "size": [6, 4], "pixels": [12, 8], "record": 4},
+        {"type": "plane", "name": "wall", "center": [0, 0, 8], "normal": [0, 0, -1], "up": [0, 1, 0],
+         "size": [40, 40], "pixels": [4, 4], "side": "front", "absorbing": true},
+        {"type": "shape_absorption", "name": "absorbed", "record": 3}]})";
+}
+
+std::vector<double> csvColumn(const std::vector<std::string>& rows, std::size_t column) {
+    std::vector<double> values;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        std::istringstream fields(rows[i]);
+        std::string cell;
+        for (std::size_t c = 0; c <= column; ++c) std::getline(fields, cell, ',');
+        values.push_back(std::stod(cell));
+    }
+    return values;
+}
+
+double sum(const std::vector<double>& values) {
+    double total = 0.0;
+    for (double v : values) total += v;
+    return total;
+}
+
+TEST_F(TraceCommand, DetectorsWriteTheirFilesAndTheBudgetAddsUp) {
+    std::ofstream(path("scene.json")) << detectorScene();
+    const CliRun run = trace(path("scene.json"), "20000", {"--orders", "--bins", "90"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    for (const char* name :
+         {"summary.json", "angular.csv", "angular_spectral.csv", "angular_orders.csv", "detector-sky.csv",
+          "detector-sky.png", "detector-sky-records.csv", "detector-screen.csv", "detector-screen-records.csv",
+          "detector-wall.csv", "detector-absorbed.csv", "detector-absorbed-records.csv", "paths.jsonl"}) {
+        EXPECT_TRUE(fs::is_regular_file(path(std::string("out/") + name))) << name;
+    }
+    EXPECT_FALSE(fs::exists(path("out/detector-wall-records.csv")));
+    EXPECT_TRUE(read(path("out/detector-sky.png")).starts_with("\x89PNG"));
+
+    const Json s = summary();
+    const auto photons = s["photons"].get<std::uint64_t>();
+    const Json& budget = s["budget"];
+    EXPECT_EQ(budget["photons"], photons);
+    const auto count = [](const Json& entry) { return entry["count"].get<std::uint64_t>(); };
+    EXPECT_EQ(count(budget["escaped"]) + count(budget["absorbed"]) + count(budget["detected"]) + count(budget["lost"]),
+              photons);
+    EXPECT_EQ(count(budget["escaped"]["far_field"]["sky"]) + count(budget["escaped"]["elsewhere"]),
+              count(budget["escaped"]));
+    EXPECT_EQ(count(budget["absorbed"]["by_medium"]["water"]) + count(budget["absorbed"]["by_medium"]["glass"]) +
+                  count(budget["absorbed"]["by_medium"]["vacuum"]),
+              count(budget["absorbed"]));
+    EXPECT_GT(count(budget["absorbed"]["by_medium"]["glass"]), 0u);
+    EXPECT_EQ(count(budget["detected"]["by_detector"]["wall"]), count(budget["detected"]));
+    EXPECT_EQ(s["counts"]["detected"], count(budget["detected"]));
+    EXPECT_GT(count(budget["detected"]), photons / 2);  // most light goes on through and ends on the wall
+    EXPECT_EQ(s["detectors"]["sky"]["hits"], count(budget["escaped"]["far_field"]["sky"]));
+    EXPECT_EQ(s["detectors"]["wall"]["hits"], count(budget["detected"]));
+
+    // Tables: headers, one row per pixel, shares adding up to the summary's.
+    const std::vector<std::string> sky = lines(path("out/detector-sky.csv"));
+    EXPECT_EQ(sky.front(),
+              "ix,iy,theta_deg,azimuth_deg,fraction,radiance,stokes_q,stokes_u,stokes_v,cie_x,cie_y,cie_z");
+    EXPECT_EQ(sky.size(), 1u + 24 * 20);
+    EXPECT_EQ(sky[1].substr(0, 4), "0,0,");
+    EXPECT_EQ(sky[25].substr(0, 4), "0,1,");  // iy outer, ix inner
+    EXPECT_NEAR(sum(csvColumn(sky, 4)), s["detectors"]["sky"]["fraction"].get<double>(), 1e-12);
+    const std::vector<std::string> screen = lines(path("out/detector-screen.csv"));
+    EXPECT_EQ(screen.front(), "ix,iy,u,v,fraction,irradiance,stokes_q,stokes_u,stokes_v");
+    EXPECT_EQ(screen.size(), 1u + 12 * 8);
+    EXPECT_NEAR(sum(csvColumn(screen, 4)), s["detectors"]["screen"]["fraction"].get<double>(), 1e-12);
+    const std::vector<std::string> absorbed = lines(path("out/detector-absorbed.csv"));
+    ASSERT_EQ(absorbed.size(), 3u);
+    EXPECT_EQ(absorbed[0], "shape,name,medium,fraction");
+    EXPECT_TRUE(absorbed[1].starts_with("0,drop,water,")) << absorbed[1];
+    EXPECT_TRUE(absorbed[2].starts_with("1,\"bead, small\",glass,")) << absorbed[2];
+    const double inShapes = std::stod(absorbed[1].substr(absorbed[1].rfind(',') + 1)) +
+                            std::stod(absorbed[2].substr(absorbed[2].rfind(',') + 1));
+    EXPECT_NEAR(inShapes + s["detectors"]["absorbed"]["ambient"].get<double>(),
+                s["fractions"]["absorbed"].get<double>(), kShareSumRounding);
+    EXPECT_EQ(lines(path("out/detector-screen-records.csv")).front(),
+              "photon,x,y,z,dx,dy,dz,weight,wavelength_nm,stokes_i,stokes_q,stokes_u,stokes_v,events,path_length");
+    EXPECT_EQ(lines(path("out/detector-screen-records.csv")).size(), 5u);
+    EXPECT_EQ(lines(path("out/detector-absorbed-records.csv")).front(),
+              "photon,x,y,z,dx,dy,dz,weight,wavelength_nm,events,path_length");
+
+    // Orders: p columns add up to single_scattering; single + multiple + unscattered = escaped.
+    const std::vector<std::string> orders = lines(path("out/angular_orders.csv"));
+    EXPECT_EQ(orders.front(), "theta_lo_deg,theta_hi_deg,p0,p1,p2,p3,p4,p5_plus,multiple");
+    EXPECT_EQ(orders.size(), 91u);
+    double single = 0.0;
+    for (std::size_t c = 2; c < 8; ++c) single += sum(csvColumn(orders, c));
+    EXPECT_NEAR(single, s["single_scattering"].get<double>(), 1e-12);
+    EXPECT_NEAR(sum(csvColumn(orders, 8)), s["multiple_scattering"].get<double>(), 1e-12);
+    EXPECT_GT(s["multiple_scattering"].get<double>(), 0.0);  // drop then bead
+    EXPECT_NEAR(s["single_scattering"].get<double>() + s["multiple_scattering"].get<double>() +
+                    s["fractions"]["unscattered"].get<double>(),
+                s["fractions"]["escaped"].get<double>(), 1e-12);
+}
+
+TEST_F(TraceCommand, DetectorFilesAreTheSameForAnyThreadCount) {
+    std::ofstream(path("scene.json")) << detectorScene();
+    ASSERT_EQ(trace(path("scene.json"), "20000", {"--orders", "--threads", "1"}, "one").status, kExitSuccess);
+    ASSERT_EQ(trace(path("scene.json"), "20000", {"--orders", "--threads", "2"}, "two").status, kExitSuccess);
+    std::size_t compared = 0;
+    for (const auto& entry : fs::directory_iterator(path("one"))) {
+        const std::string name = entry.path().filename().string();
+        if (name == "summary.json") continue;
+        EXPECT_EQ(read(entry.path().string()), read(path("two/" + name))) << name;
+        ++compared;
+    }
+    EXPECT_GE(compared, 12u);
+    Json one = summary("one");
+    Json two = summary("two");
+    for (Json* s : {&one, &two}) {
+        s->erase("threads");
+        s->erase("seconds");
+    }
+    EXPECT_EQ(one, two);
+}
+
+TEST_F(TraceCommand, BadDetectorsExitTwoNamingTheirPlace) {
+    std::ofstream(path("scene.json")) << R"({"dropscope": 1, "sources": [{"type": "ray", "origin": [0, 0, 0],
+        "direction": [0, 0, 1]}], "detectors": [{"type": "far_field", "name": "sky", "look": [0, 0, 1],
+        "up": [0, 0, 1], "fov_deg": 90, "pixels": [4, 4]}]})";
+    const CliRun run = trace(path("scene.json"), "10");
+    expectOneLineFailure(run);
+    EXPECT_EQ(run.err, path("scene.json") + ": detectors[0].up: up must not be along the look direction\n");
+    EXPECT_FALSE(fs::exists(path("out")));
+
+    // A detector's file name taken by a folder: refused before the run.
+    std::ofstream(path("ok.json")) << R"({"dropscope": 1, "sources": [{"type": "ray", "origin": [0, 0, 0],
+        "direction": [0, 0, 1]}], "detectors": [{"type": "shape_absorption", "name": "abs"}]})";
+    fs::create_directories(path("out/detector-abs.csv"));
+    const CliRun taken = trace(path("ok.json"), "10");
+    expectOneLineFailure(taken);
+    EXPECT_TRUE(taken.err.starts_with(path("out/detector-abs.csv") + ": exists and is not a regular file"))
+        << taken.err;
+    EXPECT_FALSE(fs::exists(path("out/summary.json")));
 }
 
 }  // namespace
