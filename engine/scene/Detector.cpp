@@ -211,7 +211,17 @@ std::optional<Eigen::Vector3d> FarFieldCamera::unproject(double x, double y) con
 }
 
 std::optional<Eigen::Vector3d> FarFieldCamera::viewingDirection(int ix, int iy) const {
-    return unproject(cornerX(ix) + pixelSize_ / 2.0, cornerY(iy) + pixelSize_ / 2.0);
+    const double x = cornerX(ix) + pixelSize_ / 2.0;
+    const double y = cornerY(iy) + pixelSize_ / 2.0;
+    const double rMax = maxRadius(projection_);
+    const double r = std::hypot(x, y);
+    if (r <= rMax) return unproject(x, y);
+    // A pixel the domain's edge cuts sees light through its part inside: it views the edge point in line with
+    // its centre. One wholly beyond the edge views nothing.
+    const double nearX = std::clamp(0.0, cornerX(ix), cornerX(ix + 1));
+    const double nearY = std::clamp(0.0, cornerY(iy), cornerY(iy + 1));
+    if (std::hypot(nearX, nearY) >= rMax) return std::nullopt;
+    return unproject(x * rMax / r, y * rMax / r);
 }
 
 double FarFieldCamera::pixelSolidAngle(int ix, int iy) const {

@@ -102,7 +102,8 @@ public:
     explicit FarFieldCamera(const Detector& camera);
     // The pixel that views `viewing` (a unit direction from the observer), if it is in the image.
     std::optional<std::size_t> pixelOf(const Eigen::Vector3d& viewing) const;
-    // The viewing direction through pixel (ix, iy)'s centre; none for a pixel outside the projection's domain.
+    // The viewing direction through pixel (ix, iy)'s centre; for a pixel the projection's domain edge cuts with
+    // its centre beyond it, the edge point in line with the centre; none for a pixel wholly beyond the edge.
     std::optional<Eigen::Vector3d> viewingDirection(int ix, int iy) const;
     // Pixel (ix, iy)'s solid angle in steradians (0 outside the projection's domain).
     double pixelSolidAngle(int ix, int iy) const;

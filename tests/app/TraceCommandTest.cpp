@@ -459,7 +459,7 @@ namespace {
 
 // A water drop in a beam with one detector of each kind (and an absorbing wall far behind), as JSON.
 std::string detectorScene() {
-    return R"({"dropscope": 1, "media": {"water": {"n": 1.333, "kappa": 1e-4}, "glass": {"n": 1.5, "sigma": 0.2}},
+    return R"({"dropscope": 1, "media": {"water": {"n": 1.333, "kappa": 1e-6}, "glass": {"n": 1.5, "sigma": 0.2}},
       "shapes": [{"type": "sphere", "name": "drop", "center": [0, 0, 0], "radius": 1, "medium": "water"},
                  {"type": "sphere", "name": "bead, small", "center": [0, 0.2, 2.5], "radius": 0.3, "medium": "glass"}],
       "sources": [{"type": "beam", "origin": [0, 0, -4], "direction": [0, 0, 1], "radius": 1.2}],
