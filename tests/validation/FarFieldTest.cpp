@@ -91,8 +91,8 @@ TEST(FarField, RingsOfTheSkyAgreeWithTheAngularTallyWithinTheirPixelation) {
     for (int iy = 0; iy < kSkyPixels; ++iy) {
         for (int ix = 0; ix < kSkyPixels; ++ix) {
             const std::size_t pixel = static_cast<std::size_t>(iy) * kSkyPixels + static_cast<std::size_t>(ix);
-            // A pixel whose centre is beyond the projection's domain (no theta_deg) still sees the directions of
-            // its part within it: binned by the middle of its range, as near 180 degrees as it is.
+            // A pixel whose centre is beyond the projection's domain still sees the directions of its part within
+            // it; its theta_deg is the edge's, 180 degrees (a pixel wholly beyond has none and sees nothing).
             const auto [lo, hi] = equalAreaPixelThetaDeg(ix, iy, kSkyPixels);
             const double centre = std::isfinite(theta[pixel]) ? theta[pixel] : (lo + hi) / 2.0;
             const int ring = std::min(static_cast<int>(centre / kSkyRingDeg), rings - 1);
