@@ -121,7 +121,8 @@ void addButton(AppState& state, const char* label, DetectorType type) {
 
 void drawDetectorsPanel(AppState& state) {
     if (!state.view.layers.detectors) return;
-    placeNextPanel(PanelSide::Left, 0.36f, 0.43f);  // over the Media and Place panels, while it is open
+    placeNextPanel(PanelSide::Left, 0.36f, 0.43f);  // over the Media and Place panels, while it is open:
+    ImGui::SetNextWindowBgAlpha(1.0f);              // opaque, so their fields do not show through
     if (!ImGui::Begin("Detectors", &state.view.layers.detectors)) {
         ImGui::End();
         return;
