@@ -63,6 +63,12 @@ shot app-path-inspector "$default" "mousemove 640 60" "key space" "sleep 2" "key
 shot app-ray-tree "$default" "mousemove 612 396" "key a" "key r" "mousemove 560 420" "click --repeat 4 --delay 100 4" \
     "mousemove 640 60" "sleep 1"
 shot app-help "$default" "mousemove 640 60" "key F1"
+# Detectors (docs/gui.md, "Detectors"): 20,000 photons (typed into the Fire panel), then the plane "screen"
+# selected in the Detectors panel (its image, its move and aim handles), the paths switched off (the Paths
+# panel) so that the far-field camera's frustum shows.
+detectors="$root/tests/data/scenes/detectors.json"
+shot app-detectors-edit "$detectors" "mousemove 1040 310" "click 1" "key ctrl+a" "type 20000" "key Return" \
+    "mousemove 640 60" "key space" "sleep 3" "mousemove 110 324" "click 1" "mousemove 967 501" "click 1" "mousemove 640 60" "sleep 0.5"
 # 100,000 photons (typed into the Fire panel's photon count), then the Results panel's Plot... button, the
 # mouse over the primary rainbow's edge near 138 degrees.
 shot app-results-plot "$default" "mousemove 1040 215" "click 1" "key ctrl+a" "type 100000" "key Return" \

@@ -61,6 +61,8 @@ void addLayerOptions(CLI::App& command, SnapshotCommandOptions& options) {
     command.add_flag("--ray-tree", layers.rayTree, "Draw the ray tree of the first source's central ray");
     command.add_flag("--traversal", layers.traversal, "Draw the octree cells the first source's central ray visits");
     command.add_flag("--sources", layers.sources, "Draw the sources as glyphs");
+    command.add_flag("--detectors", layers.detectors,
+                     "Draw the detectors: planes (with their images when photons are traced) and far-field cameras");
     command.add_flag("--axes", layers.axes, "Draw the coordinate axes");
     command.add_flag("--grid", layers.grid, "Draw a ground grid under the scene");
     command.add_flag("--no-shapes", options.noShapes, "Leave the shapes out");
@@ -114,6 +116,12 @@ void checkAgainstScene(const SnapshotCommandOptions& options, const Scene& scene
     if (render.paths > 0) needSources("--paths");
     if (render.layers.rayTree) needSources("--ray-tree");
     if (render.layers.traversal) needSources("--traversal");
+    if (render.layers.detectors) {
+        if (scene.detectors.empty()) {
+            throw SceneError(scene.origin, "detectors", "--detectors: the scene has no detectors to draw");
+        }
+        if (render.photons > 0) needSources("--detectors with --photons");
+    }
     if (options.select >= 0 && static_cast<std::uint64_t>(options.select) >= scene.shapes.size()) {
         throw SceneError(scene.origin, "shapes",
                          "--select " + std::to_string(options.select) + ": no such shape (the scene has " +

@@ -33,7 +33,7 @@ struct SnapshotCommandOptions {
 // [--fov-deg F] [--octree-level L] [--paths K] [--photons N] [--seed S]` and the layer switches
 // (docs/rendering.md): [--octree-filter level|upto|leaves] [--octree-colour level|occupancy]
 // [--colour-by weight|event|dolp] [--polarisation stokes|none] [--markers] [--ray-tree] [--traversal] [--sources]
-// [--axes] [--grid]
+// [--detectors] [--axes] [--grid]
 // [--no-shapes] [--translucent] [--select ID].
 CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options);
 

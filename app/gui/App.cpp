@@ -29,6 +29,7 @@ App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
     // selected, the octree cells its search visited.
     state_.view.layers.sources = true;
     state_.view.layers.traversal = true;
+    state_.view.layers.detectors = !document.detectors().empty();  // the layer and the Detectors panel
     state_.ui.screenshotDirectory = options.screenshotDirectory;
     state_.ui.itemProbe = options.itemProbe;
     if (const auto& view = document.view()) {
@@ -55,6 +56,7 @@ void App::buildUi() {
     drawMediaPanel(state_.scene.document(), state_.ui);
     drawPlacementPanel(state_.placement, state_.view.slice, state_.scene.document());
     drawFirePanel(state_);
+    drawDetectorsPanel(state_);
     drawOctreePanel(state_);
     drawPathPanel(state_.view.layers, state_.traces, state_.ui.itemProbe);
     drawResultsPanel(state_.traces, state_.ui);

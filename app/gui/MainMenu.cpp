@@ -39,6 +39,7 @@ void drawMainMenu(AppState& state) {
         ImGui::MenuItem("Octree cells", "C", &view.layers.octree);
         ImGui::MenuItem("Slice plane", "L", &view.slice.enabled);
         ImGui::MenuItem("Sources", nullptr, &view.layers.sources);
+        ImGui::MenuItem("Detectors (and their panel)", nullptr, &view.layers.detectors);
         ImGui::MenuItem("Paths", nullptr, &view.layers.paths);
         ImGui::MenuItem("Ray tree", nullptr, &view.layers.rayTree);
         ImGui::MenuItem("Event markers", nullptr, &view.layers.markers);

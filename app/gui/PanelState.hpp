@@ -58,6 +58,11 @@ struct FirePanelFields {
     std::uint32_t editingItem = 0;  // the ImGui item whose edits merge into one undo step (0: none)
 };
 
+// The Detectors panel's editor (DetectorsPanel.cpp).
+struct DetectorsPanelFields {
+    std::uint32_t editingItem = 0;  // the ImGui item whose edits merge into one undo step (0: none)
+};
+
 // The octree's per-level statistics, which walk every cell: computed again only for another document or
 // revision (OctreePanel.cpp).
 struct OctreeStatistics {
@@ -73,6 +78,7 @@ struct PanelState {
     ScenePanelFields scenePanel;
     MediaPanelFields mediaPanel;
     FirePanelFields firePanel;
+    DetectorsPanelFields detectorsPanel;
     OctreeStatistics octreeStatistics;
     bool octreeCellsShown = false;  // in the last frame: the Octree panel opens when the cells are switched on
     plot::PlotWindowState angularPlot{.exportPath = "angular-plot.csv"};  // the Results panel's

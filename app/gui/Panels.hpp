@@ -16,6 +16,8 @@ void drawMediaPanel(SceneDocument& document, UiState& ui);
 void drawPlacementPanel(PlacementState& placement, SliceSettings& slice, const SceneDocument& document);
 // Sources, fire, progress.
 void drawFirePanel(AppState& state);
+// Detectors: list, add, remove, every field; shown while the detectors layer is on.
+void drawDetectorsPanel(AppState& state);
 // Levels, statistics, traversal.
 void drawOctreePanel(AppState& state);
 // The path colouring, the recorded photons and their events with their polarisation.

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace dropscope::gui {
@@ -33,6 +34,7 @@ public:
         ++generation_;
         selectedShape_ = RayHit::kNone;
         selectedSource_ = 0;
+        selectedDetector_.reset();
     }
 
     ShapeId selectedShape() const { return selectedShape_; }
@@ -41,6 +43,13 @@ public:
     // clamped to the list, which may have shrunk since it was made.
     std::size_t selectedSource() const { return std::min(selectedSource_, document_->sources().size() - 1); }
     void selectSource(std::size_t index) { selectedSource_ = index; }
+    // The detector selected in the Detectors panel, if any and still there: while one is, the view shows its
+    // handles instead of the source's, and G and A move and aim it.
+    std::optional<std::size_t> selectedDetector() const {
+        if (!selectedDetector_ || *selectedDetector_ >= document_->detectors().size()) return std::nullopt;
+        return selectedDetector_;
+    }
+    void selectDetector(std::optional<std::size_t> index) { selectedDetector_ = index; }
 
 private:
     std::unique_ptr<SceneDocument> document_;
@@ -48,6 +57,7 @@ private:
     std::uint64_t generation_ = 0;
     ShapeId selectedShape_ = RayHit::kNone;
     std::size_t selectedSource_ = 0;
+    std::optional<std::size_t> selectedDetector_;
 };
 
 }  // namespace dropscope::gui

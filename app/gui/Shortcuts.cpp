@@ -76,8 +76,8 @@ const std::vector<Shortcut>& shortcuts() {
         {']', false, false, "]", "octree level up", levelUp},
         {kKeyLeft, false, false, "Left", "previous event of the selected path", previousEvent},
         {kKeyRight, false, false, "Right", "next event of the selected path", nextEvent},
-        {'G', false, false, "G", "move the selected source to the point under the cursor", nullptr},
-        {'A', false, false, "A", "aim the selected source at the point under the cursor", nullptr},
+        {'G', false, false, "G", "move the selected source (or detector) to the point under the cursor", nullptr},
+        {'A', false, false, "A", "aim the selected source (or detector) at the point under the cursor", nullptr},
     };
     return table;
 }
@@ -91,6 +91,7 @@ const std::vector<std::pair<std::string_view, std::string_view>>& mouseGestures(
         {"drag the selected droplet", "move it (refused where it would overlap)"},
         {"drag the source's white handle", "move the selected source"},
         {"drag the source's orange handle", "aim the selected source"},
+        {"drag a detector's white or blue handle", "move or aim the detector selected in the Detectors panel"},
         {"click in placement mode", "drop a droplet on the surface under the cursor, else on the placement plane"},
         {"hover", "tooltip: id, type, medium"},
     };

@@ -5,13 +5,6 @@
 
 namespace dropscope::gui {
 
-namespace {
-
-// A handle is this many event markers across: big enough to grab, small beside a droplet.
-constexpr double kHandleMarkerScale = 2.0;
-constexpr double kGrabScale = 1.5;
-
-// Distance from `point` to the ray, or infinity when the point is behind its origin.
 double distanceToRay(const Ray& ray, const Point& point) {
     const Eigen::Vector3d offset = point - ray.origin;
     const double along = offset.dot(ray.direction.vector());
@@ -19,11 +12,10 @@ double distanceToRay(const Ray& ray, const Point& point) {
     return (offset - along * ray.direction.vector()).norm();
 }
 
-}  // namespace
-
 std::optional<SourceHandlePlaces> sourceHandles(const AppState& state, const Eigen::AlignedBox3d& sceneBounds) {
     const auto& sources = state.scene.document().sources();
     if (!state.view.layers.sources || sources.empty() || sceneBounds.isEmpty()) return std::nullopt;
+    if (state.view.layers.detectors && state.scene.selectedDetector()) return std::nullopt;
     const Source& source = sources[state.scene.selectedSource()];
     const double diagonal = sceneBounds.diagonal().norm();
     const double arrow = render::kSourceGlyph * diagonal;

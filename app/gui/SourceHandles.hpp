@@ -19,8 +19,16 @@ struct SourceHandlePlaces {
 inline constexpr render::Colour kOriginHandleColour{1.0f, 1.0f, 1.0f, 1.0f};
 inline constexpr render::Colour kAimHandleColour{1.0f, 0.55f, 0.1f, 1.0f};
 
+// A handle is this many event markers across (render::kMarkerRadius): big enough to grab, small beside a
+// droplet; it is grabbed within kGrabScale times its radius.
+inline constexpr double kHandleMarkerScale = 2.0;
+inline constexpr double kGrabScale = 1.5;
+
+// Distance from `point` to the ray, or infinity when the point is behind its origin.
+double distanceToRay(const Ray& ray, const Point& point);
+
 // Where the selected source's handles are, sized by the bounds of the shapes drawn; nullopt without
-// sources or with the sources layer off.
+// sources, with the sources layer off, or while a detector is selected (its handles are shown instead).
 std::optional<SourceHandlePlaces> sourceHandles(const AppState& state, const Eigen::AlignedBox3d& sceneBounds);
 
 // The handle the ray passes closest to, within grabbing distance, in front of the eye.

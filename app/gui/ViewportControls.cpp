@@ -65,11 +65,18 @@ void ViewportControls::handle(AppState& state, const Eigen::AlignedBox3d& sceneB
             drag_ = Drag::None;
             moving_ = RayHit::kNone;
             handle_ = SourceHandle::None;
+            detectorHandle_ = DetectorHandle::None;
         }
     }
     if (mine) {
         hover(state, ray);
-        if (!io.WantTextInput && state.ui.prompt == FilePrompt::None) sourceKeys(state, ray);
+        if (!io.WantTextInput && state.ui.prompt == FilePrompt::None) {
+            if (state.view.layers.detectors && state.scene.selectedDetector()) {
+                detectorKeys(state, sceneBounds, ray);
+            } else {
+                sourceKeys(state, ray);
+            }
+        }
     }
 }
 
@@ -77,9 +84,22 @@ void ViewportControls::press(AppState& state, const Eigen::AlignedBox3d& sceneBo
     drag_ = Drag::Pending;
     travelled_ = 0.0f;
     handle_ = SourceHandle::None;
+    detectorHandle_ = DetectorHandle::None;
     movedThisDrag_ = false;
     if (state.placement.active) return;
     const int axis = state.placement.plane.axis;
+    if (const DetectorHandle handle = detectorHandleUnder(state, sceneBounds, ray); handle != DetectorHandle::None) {
+        // Grabbed a detector handle: it slides as a source handle does.
+        const auto places = detectorHandles(state, sceneBounds);
+        const Point at = handle == DetectorHandle::Move ? *places->move : places->aim;
+        handlePlane_ = at[axis];
+        if (const auto grabbed = rayPlaneAxis(ray, axis, handlePlane_)) {
+            grabOffset_ = at - *grabbed;
+            detectorHandle_ = handle;
+            handleBounds_ = sceneBounds;
+        }
+        return;
+    }
     if (const SourceHandle handle = handleUnder(state, sceneBounds, ray); handle != SourceHandle::None) {
         // Grabbed a source handle: it slides in the plane parallel to the placement plane through it.
         const auto places = sourceHandles(state, sceneBounds);
@@ -107,9 +127,9 @@ void ViewportControls::press(AppState& state, const Eigen::AlignedBox3d& sceneBo
 void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float dy) {
     travelled_ += std::abs(dx) + std::abs(dy);
     if (drag_ == Drag::Pending && travelled_ > kClickTolerance) {
-        drag_ = handle_ != SourceHandle::None ? Drag::MoveHandle
-                : moving_ != RayHit::kNone    ? Drag::MoveShape
-                                              : Drag::Orbit;
+        drag_ = handle_ != SourceHandle::None || detectorHandle_ != DetectorHandle::None ? Drag::MoveHandle
+                : moving_ != RayHit::kNone                                               ? Drag::MoveShape
+                                                                                         : Drag::Orbit;
     }
     const ImGuiIO& io = ImGui::GetIO();
     switch (drag_) {
@@ -137,6 +157,12 @@ void ViewportControls::dragTo(AppState& state, const Ray& ray, float dx, float d
 }
 
 void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
+    if (detectorHandle_ != DetectorHandle::None) {
+        if (const auto on = rayPlaneAxis(ray, state.placement.plane.axis, handlePlane_)) {
+            moveDetectorHandle(state, *on + grabOffset_);
+        }
+        return;
+    }
     std::vector<Source> sources = state.scene.document().sources();
     if (sources.empty()) return;
     Source& source = sources[state.scene.selectedSource()];
@@ -156,6 +182,17 @@ void ViewportControls::moveHandle(AppState& state, const Ray& ray) {
         movedThisDrag_ = true;
         const std::string done = handle_ == SourceHandle::Origin ? "moving the source" : "aiming the source";
         state.ui.status.say(note.empty() ? done : done + "; " + note);
+    });
+}
+
+void ViewportControls::moveDetectorHandle(AppState& state, const Point& target) {
+    const auto index = state.scene.selectedDetector();
+    const auto detector = detectorWithHandleAt(state, handleBounds_, detectorHandle_, target);
+    if (!index || !detector) return;
+    state.ui.status.attempt("detector not changed", [&] {
+        state.scene.document().setDetector(*index, *detector, movedThisDrag_);
+        movedThisDrag_ = true;
+        state.ui.status.say(detectorHandle_ == DetectorHandle::Move ? "moving the detector" : "aiming the detector");
     });
 }
 
@@ -194,6 +231,13 @@ void ViewportControls::hover(AppState& state, const Ray& ray) {
         return;
     }
     if (const auto pick = pickShape(state, ray)) ImGui::SetTooltip("%s", describe(state, pick->shape, "\n").c_str());
+}
+
+void ViewportControls::detectorKeys(AppState& state, const Eigen::AlignedBox3d& sceneBounds, const Ray& ray) {
+    const bool move = ImGui::IsKeyPressed('G', false);
+    const bool aim = ImGui::IsKeyPressed('A', false);
+    if (!move && !aim) return;
+    detectorKey(state, sceneBounds, move ? DetectorHandle::Move : DetectorHandle::Aim, pointUnderCursor(state, ray));
 }
 
 void ViewportControls::sourceKeys(AppState& state, const Ray& ray) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "gui/AppState.hpp"
+#include "gui/DetectorHandles.hpp"
 #include "gui/SourceHandles.hpp"
 
 #include <optional>
@@ -22,15 +23,19 @@ private:
     void click(AppState& state, const Ray& ray);
     void hover(AppState& state, const Ray& ray);
     void sourceKeys(AppState& state, const Ray& ray);
+    void detectorKeys(AppState& state, const Eigen::AlignedBox3d& sceneBounds, const Ray& ray);
     void moveHandle(AppState& state, const Ray& ray);
+    void moveDetectorHandle(AppState& state, const Point& target);
 
     Drag drag_ = Drag::None;
     float travelled_ = 0.0f;            // pixels moved since the press
     Point grabOffset_ = Point::Zero();  // droplet centre minus the grabbed point on the drag plane
     ShapeId moving_ = RayHit::kNone;
     bool movedThisDrag_ = false;
-    SourceHandle handle_ = SourceHandle::None;  // the source handle being dragged
-    double handlePlane_ = 0.0;                  // its coordinate along the placement plane's axis
+    SourceHandle handle_ = SourceHandle::None;              // the source handle being dragged
+    DetectorHandle detectorHandle_ = DetectorHandle::None;  // or the detector handle
+    double handlePlane_ = 0.0;                              // its coordinate along the placement plane's axis
+    Eigen::AlignedBox3d handleBounds_;                      // the scene bounds the detector handle was grabbed in
 };
 
 }  // namespace dropscope::gui

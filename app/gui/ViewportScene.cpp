@@ -1,5 +1,6 @@
 #include "gui/ViewportScene.hpp"
 
+#include "gui/DetectorHandles.hpp"
 #include "gui/Picking.hpp"
 #include "gui/SourceHandles.hpp"
 #include "render/Colour.hpp"
@@ -18,11 +19,23 @@ const Event* currentEvent(const TraceState& traces) {
     return events.empty() ? nullptr : &events[static_cast<std::size_t>(traces.selectedEvent)];
 }
 
+// The plane detectors' images in the last trace, when it counted them (its tallies' detector tables).
+std::vector<render::DetectorImage> detectorImages(const TraceState& traces, const std::vector<Detector>& detectors) {
+    if (!traces.trace || detectors.empty()) return {};
+    ResultReport report;
+    traces.trace->outcome.result.tallies.report(report);
+    return render::planeDetectorImages(report, detectors);
+}
+
 }  // namespace
 
 Eigen::AlignedBox3d viewBounds(const AppState& state, const Eigen::AlignedBox3d& shapes) {
     Eigen::AlignedBox3d box = shapes;
     for (const Source& source : state.scene.document().sources()) box.extend(source.origin);
+    if (state.view.layers.detectors) {
+        box = render::withDetectorGlyphs(box, state.scene.document().detectors(), shapes,
+                                         render::kSourceGlyph * shapes.diagonal().norm());
+    }
     const double reach = render::kEscapeLength * shapes.diagonal().norm();
     box.extend(box.min() - Eigen::Vector3d::Constant(reach));
     box.extend(box.max() + Eigen::Vector3d::Constant(reach));
@@ -38,6 +51,7 @@ ViewKey viewKey(const AppState& state) {
         .slice = state.view.slice,
         .selectedShape = scene.selectedShape(),
         .selectedSource = scene.document().sources().empty() ? 0 : scene.selectedSource(),
+        .selectedDetector = scene.selectedDetector(),
         .traces = state.traces.shownId,
         .selectedPath = state.traces.selectedPath,
         .selectedEvent = state.traces.selectedEvent,
@@ -64,6 +78,10 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
     if (traces.rayTree) inputs.rayTree = &*traces.rayTree;
     inputs.traversal = traversal;
     inputs.currentEvent = currentEvent(traces);
+    inputs.detectors = &document.detectors();
+    const std::vector<render::DetectorImage> images =
+        options.detectors ? detectorImages(traces, document.detectors()) : std::vector<render::DetectorImage>{};
+    inputs.detectorImages = &images;
     layers_ = render::buildSceneLayers(inputs, options, anchor);
 
     if (inputs.currentEvent) {
@@ -78,6 +96,13 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
             layers_.markers.push_back(render::sphereInstance(handles->aim, handles->radius, anchor, kAimHandleColour));
         }
     }
+    if (const auto handles = detectorHandles(state, bounds_)) {
+        if (handles->move) {
+            layers_.markers.push_back(
+                render::sphereInstance(*handles->move, handles->radius, anchor, kMoveDetectorColour));
+        }
+        layers_.markers.push_back(render::sphereInstance(handles->aim, handles->radius, anchor, kAimDetectorColour));
+    }
     render::uploadScene(renderer_, octree.shapes(), layers_, options);
     ++rebuilds_;
     builtFrom_ = key;
@@ -88,7 +113,12 @@ void ViewportScene::draw(AppState& state, int width, int height) {
     ViewState& view = state.view;
     const double aspect = static_cast<double>(width) / static_cast<double>(std::max(height, 1));
     if (view.fitRequested) {
-        view.camera.fitTo(bounds_, aspect);
+        // The shapes, and the detectors when they are drawn (a screen beyond the droplets).
+        const Eigen::AlignedBox3d fitted =
+            view.layers.detectors ? render::withDetectorGlyphs(bounds_, state.scene.document().detectors(), bounds_,
+                                                               render::kSourceGlyph * bounds_.diagonal().norm())
+                                  : bounds_;
+        view.camera.fitTo(fitted, aspect);
         view.fitRequested = false;
     }
     view.camera.clipTo(viewBounds(state, bounds_));

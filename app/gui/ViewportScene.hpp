@@ -18,6 +18,7 @@ struct ViewKey {
     SliceSettings slice;
     ShapeId selectedShape = RayHit::kNone;
     std::size_t selectedSource = 0;
+    std::optional<std::size_t> selectedDetector;
     std::uint64_t traces = 0;  // which trace and ray tree are shown
     int selectedPath = -1;     // the photon event selected in the trace
     int selectedEvent = 0;
@@ -54,8 +55,8 @@ private:
     std::uint64_t rebuilds_ = 0;
 };
 
-// The box the camera keeps between its near and far planes: the shapes, the sources, and room for the
-// escaping ends of paths.
+// The box the camera keeps between its near and far planes: the shapes, the sources, the detectors when drawn,
+// and room for the escaping ends of paths.
 Eigen::AlignedBox3d viewBounds(const AppState& state, const Eigen::AlignedBox3d& shapes);
 
 }  // namespace dropscope::gui

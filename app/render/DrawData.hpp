@@ -97,4 +97,21 @@ private:
     std::vector<LineVertex> vertices_;
 };
 
+// Flat-coloured triangles, drawn opaque with the line shaders (GL_TRIANGLES: three vertices a triangle,
+// every one of a face in its colour): detector images and fills.
+class TriangleBatch {
+public:
+    explicit TriangleBatch(const Anchor& anchor) : anchor_(anchor) {}
+    // The quadrilateral a, b, c, d (in order around it) as two triangles.
+    void addQuad(const Point& a, const Point& b, const Point& c, const Point& d, const Colour& colour) {
+        for (const Point* corner : {&a, &b, &c, &a, &c, &d}) vertices_.push_back({anchor_.relative(*corner), colour});
+    }
+    const std::vector<LineVertex>& vertices() const { return vertices_; }
+    bool empty() const { return vertices_.empty(); }
+
+private:
+    Anchor anchor_;
+    std::vector<LineVertex> vertices_;
+};
+
 }  // namespace dropscope::render

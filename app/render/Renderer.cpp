@@ -139,11 +139,13 @@ Renderer::Renderer(const GlFunctions& gl)
       boxes_(std::make_unique<Mesh>(gl)),
       markers_(std::make_unique<Mesh>(gl)),
       lines_(std::make_unique<Mesh>(gl)),
+      surfaces_(std::make_unique<Mesh>(gl)),
       meshCache_(std::make_unique<MeshCache>()) {
     rounded_->makeInstanced(quadTriangles());
     boxes_->makeInstanced(cubeTriangles());
     markers_->makeInstanced(quadTriangles());
     lines_->makeLines();
+    surfaces_->makeLines();
 }
 
 Renderer::~Renderer() = default;
@@ -180,6 +182,8 @@ void Renderer::setShapes(const ShapeInstances& instances) {
 }
 
 void Renderer::setLines(const LineBatch& lines) { lines_->upload(lines.vertices()); }
+
+void Renderer::setSurfaces(const TriangleBatch& surfaces) { surfaces_->upload(surfaces.vertices()); }
 
 void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) { markers_->upload(markers); }
 
@@ -232,6 +236,17 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
         gl_.UniformMatrix4fv(line_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
         gl_.BindVertexArray(lines_->vertexArray);
         gl_.DrawArrays(GL_LINES, 0, lines_->count);
+    }
+    if (options.lines && surfaces_->count > 0) {
+        line_->use();
+        gl_.UniformMatrix4fv(line_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+        gl_.BindVertexArray(surfaces_->vertexArray);
+        // Pushed back a little in depth: a line drawn on a detector (its outline, axes, hatching) would otherwise
+        // tie with it, rasterised at slightly other depths, and show dashed.
+        gl_.Enable(GL_POLYGON_OFFSET_FILL);
+        gl_.PolygonOffset(1.0f, 1.0f);
+        gl_.DrawArrays(GL_TRIANGLES, 0, surfaces_->count);
+        gl_.Disable(GL_POLYGON_OFFSET_FILL);
     }
     if (options.shapes && boxesBlended) {
         gl_.Enable(GL_BLEND);

@@ -19,7 +19,7 @@ struct RenderOptions {
     bool translucent = false;      // every shape blended at `opacity`, drawn after everything opaque
     bool translucentBoxes = true;  // boxes blended: usually cells around the droplets
     float opacity = 0.35f;
-    bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid)
+    bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid) and the surfaces
     Colour background{0.08f, 0.09f, 0.11f, 1.0f};
 
     bool operator==(const RenderOptions&) const = default;
@@ -43,6 +43,8 @@ public:
     // Where uploadScene keeps the mesh geometries between uploads (buildShapeInstances).
     MeshCache& meshCache() { return *meshCache_; }
     void setLines(const LineBatch& lines);
+    // Opaque flat-coloured faces (detector images), drawn after the lines: a line lying on a face wins.
+    void setSurfaces(const TriangleBatch& surfaces);
     // Small spheres (event markers): instances of the impostor, drawn with the shapes, always opaque.
     void setMarkers(const std::vector<ShapeInstance>& markers);
 
@@ -68,6 +70,7 @@ private:
     std::unique_ptr<Mesh> boxes_;
     std::unique_ptr<Mesh> markers_;
     std::unique_ptr<Mesh> lines_;
+    std::unique_ptr<Mesh> surfaces_;
     std::unique_ptr<MeshCache> meshCache_;
     // One per geometry, in the order the shapes list them (a fixed drawing order, for determinism).
     std::vector<std::pair<std::shared_ptr<const MeshGeometry>, std::unique_ptr<Mesh>>> meshes_;

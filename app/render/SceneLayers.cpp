@@ -34,7 +34,7 @@ void addSliced(LineBatch& lines, const std::optional<SlicePlane>& slice, const A
 }  // namespace
 
 SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& options, const Anchor& anchor) {
-    SceneLayers layers{LineBatch(anchor), {}};
+    SceneLayers layers{LineBatch(anchor), {}, TriangleBatch(anchor)};
     LineBatch& lines = layers.lines;
     const std::optional<SlicePlane>& slice = options.slice;
     const double size = inputs.bounds.diagonal().norm();
@@ -58,6 +58,11 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
         if (options.markers) addEventMarkers(layers.markers, *inputs.paths, kMarkerRadius * size, anchor);
     }
     if (options.sources) addSourceGlyphs(lines, inputs.sources, kSourceGlyph * size);
+    if (options.detectors && inputs.detectors) {
+        static const std::vector<DetectorImage> none;
+        addDetectorGlyphs(lines, layers.surfaces, *inputs.detectors,
+                          inputs.detectorImages ? *inputs.detectorImages : none, inputs.bounds, kSourceGlyph * size);
+    }
     if (options.axes) {
         // At the world origin when the scene is around it, else at the scene's centre (the anchor).
         const Point origin = inputs.bounds.contains(Point::Zero()) ? Point(Point::Zero()) : anchor.origin;
@@ -80,6 +85,7 @@ void uploadScene(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& 
     if (options.slice) instances = keptShapes(instances, shapes, *options.slice);
     renderer.setShapes(instances);
     renderer.setLines(layers.lines);
+    renderer.setSurfaces(layers.surfaces);
     renderer.setMarkers(layers.markers);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render/DetectorGlyphs.hpp"
 #include "render/DrawData.hpp"
 #include "render/OctreeLayer.hpp"
 #include "render/PathLayer.hpp"
@@ -26,11 +27,12 @@ struct LayerOptions {
     bool markers = false;  // event markers of the paths and the ray tree
     bool rayTree = false;
     bool sources = false;
+    bool detectors = false;  // plane outlines with their images, far-field frusta (DetectorGlyphs.hpp)
     bool axes = false;
     bool grid = false;
     // Hides what lies beyond the plane (SlicePlane.hpp): shapes and markers by their centre; the octree
-    // cells, traversal, paths, ray tree and grid cut at the plane. Source glyphs and axes, the guides
-    // that say where the light comes from and which way is which, stay whole.
+    // cells, traversal, paths, ray tree and grid cut at the plane. Source and detector glyphs and axes, the
+    // guides that say where the light comes from, where it is counted and which way is which, stay whole.
     std::optional<SlicePlane> slice;
 
     bool operator==(const LayerOptions&) const = default;
@@ -49,12 +51,14 @@ struct LayerInputs {
     // The event the path inspector is at: its polarisation ellipse is drawn there when it carries a
     // polarisation (PolarisationEllipse.hpp).
     const Event* currentEvent = nullptr;
+    const std::vector<Detector>* detectors = nullptr;
+    const std::vector<DetectorImage>* detectorImages = nullptr;  // drawn on the planes of the same name and grid
 };
 
 // Sizes of the drawn helpers, as fractions of the diagonal of the scene's bounds.
 inline constexpr double kEscapeLength = 0.5;  // escaping paths and branches go on this far
 inline constexpr double kMarkerRadius = 0.006;
-inline constexpr double kSourceGlyph = 0.15;  // a source's arrow
+inline constexpr double kSourceGlyph = 0.15;  // a source's arrow, a detector's normal and frustum
 inline constexpr double kAxisLength = 0.25;
 // The polarisation ellipse's semi-major axis: about five times the current event's marker (2.5
 // kMarkerRadius), so it shows well around it.
@@ -63,6 +67,7 @@ inline constexpr double kEllipseSize = 0.08;
 struct SceneLayers {
     LineBatch lines;
     std::vector<ShapeInstance> markers;
+    TriangleBatch surfaces{Anchor{}};  // detector images and fills
 };
 
 // The bounds of the shapes (null slots skipped); the cube [-1, 1]^3 for a scene with none.
@@ -70,8 +75,8 @@ Eigen::AlignedBox3d sceneBounds(const std::vector<std::unique_ptr<Shape>>& shape
 
 // The line batch and the markers of every layer switched on. Where lines coincide the first one added
 // wins the depth test (GL_LESS), so they go in order of importance: polarisation ellipse (its line along
-// the direction lies on the path), traversal, ray tree, paths, sources, axes, octree cells, grid. With a slice plane,
-// the hidden side is left out.
+// the direction lies on the path), traversal, ray tree, paths, sources, detectors, axes, octree cells, grid. With a
+// slice plane, the hidden side is left out.
 SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& options, const Anchor& anchor);
 
 // Hands the shapes (the selected one highlighted; with a slice plane only those on its kept side) and the

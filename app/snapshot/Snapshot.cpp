@@ -3,6 +3,7 @@
 #include "render/Renderer.hpp"
 #include "run/TraceRun.hpp"
 #include "snapshot/OsmesaContext.hpp"
+#include "tally/StandardTallies.hpp"
 #include "transport/OpticalScene.hpp"
 #include "transport/RayTree.hpp"
 
@@ -14,12 +15,18 @@ namespace dropscope::snapshot {
 
 namespace {
 
+// The box a camera is fitted to: the shapes, and the detectors' glyphs when they are drawn.
+Eigen::AlignedBox3d fitBox(const Scene& scene, const SnapshotOptions& options, const Eigen::AlignedBox3d& bounds) {
+    if (!options.layers.detectors) return bounds;
+    return render::withDetectorGlyphs(bounds, scene.detectors, bounds, render::kSourceGlyph * bounds.diagonal().norm());
+}
+
 render::Camera snapshotCamera(const Scene& scene, const SnapshotOptions& options, const Eigen::AlignedBox3d& bounds) {
     const double aspect = static_cast<double>(options.width) / static_cast<double>(options.height);
     render::Camera camera;
     if (scene.view) camera = render::Camera::fromView(*scene.view);
     if (options.fovDeg) camera.fovDeg = *options.fovDeg;
-    if (!scene.view && !options.eye) camera.fitTo(bounds, aspect);
+    if (!scene.view && !options.eye) camera.fitTo(fitBox(scene, options, bounds), aspect);
     if (options.target) camera.target = {options.target->x(), options.target->y(), options.target->z()};
     if (options.eye) camera.eye = {options.eye->x(), options.eye->y(), options.eye->z()};
     if (options.eye && !options.target && !scene.view) {
@@ -42,6 +49,7 @@ render::Camera snapshotCamera(const Scene& scene, const SnapshotOptions& options
 // The data of the layers that need a trace, computed only when they are drawn.
 struct TracedData {
     std::optional<TraceResult> traced;
+    std::vector<render::DetectorImage> detectorImages;
     std::optional<RayTree> rayTree;
     std::optional<render::RayTraversal> traversal;
 };
@@ -50,13 +58,23 @@ TracedData traceData(const Scene& scene, const OpticalScene& optical, const Snap
                      const render::LayerOptions& layers) {
     TracedData data;
     if (scene.sources.empty()) return data;
-    if (options.paths > 0 && layers.paths) {
+    const bool images = layers.detectors && options.photons > 0 &&
+                        std::any_of(scene.detectors.begin(), scene.detectors.end(),
+                                    [](const Detector& d) { return d.type == DetectorType::Plane; });
+    if ((options.paths > 0 && layers.paths) || images) {
         TraceSettings settings;
         settings.photons = std::max(options.photons, options.paths);
-        settings.paths = options.paths;
+        settings.paths = layers.paths ? options.paths : 0;
         settings.seed = options.seed;
         settings.transport.polarisation = options.polarisation;
-        data.traced = runTrace(optical, scene.sources, settings, TallySet{});  // only the paths are drawn
+        TallySet tallies;  // only the paths are drawn, and the planes' images
+        if (images) addDetectorTallies(tallies, scene, options.polarisation);
+        data.traced = runTrace(optical, scene.sources, settings, tallies);
+        if (images) {
+            ResultReport report;
+            data.traced->tallies.report(report);
+            data.detectorImages = render::planeDetectorImages(report, scene.detectors);
+        }
     }
     const Source& first = scene.sources.front();
     const Ray central{first.origin, first.direction};
@@ -88,9 +106,12 @@ Image renderSnapshot(const Scene& scene, const SnapshotOptions& options) {
     if (data.traced) inputs.paths = &data.traced->paths;
     if (data.rayTree) inputs.rayTree = &*data.rayTree;
     if (data.traversal) inputs.traversal = &*data.traversal;
+    inputs.detectors = &scene.detectors;
+    inputs.detectorImages = &data.detectorImages;
 
-    // The near and far planes: around the shapes, and the sources when a layer starts at them.
-    Eigen::AlignedBox3d clipBox = bounds;
+    // The near and far planes: around the shapes (and the detectors drawn), and the sources when a layer
+    // starts at them.
+    Eigen::AlignedBox3d clipBox = fitBox(scene, options, bounds);
     if (layers.sources || layers.rayTree || layers.traversal) {
         for (const Source& source : scene.sources) clipBox.extend(source.origin);
     }

@@ -130,6 +130,7 @@ void SceneDocument::setProperties(const Properties& properties) {
     rest_.media = properties.media;
     rest_.ambient = properties.ambient;
     rest_.sources = properties.sources;
+    rest_.detectors = properties.detectors;
 }
 
 void SceneDocument::commitProperties(std::string label, Properties after) {
@@ -150,6 +151,7 @@ Scene SceneDocument::toScene(std::vector<ShapeId>* slotOfShape) const {
     scene.ambient = rest_.ambient;
     scene.media = rest_.media;
     scene.sources = rest_.sources;
+    scene.detectors = rest_.detectors;
     scene.octree = rest_.octree;
     scene.view = rest_.view;
     scene.shapes.reserve(octree_.shapeCount());

@@ -56,6 +56,7 @@ public:
     const std::vector<Medium>& media() const { return rest_.media; }
     MediumId ambient() const { return rest_.ambient; }
     const std::vector<Source>& sources() const { return rest_.sources; }
+    const std::vector<Detector>& detectors() const { return rest_.detectors; }
     const std::string& unit() const { return rest_.unit; }
     double unitInMetres() const { return rest_.unitInMetres; }
     double wavelengthNm() const { return rest_.wavelengthNm; }
@@ -93,6 +94,16 @@ public:
     // With mergeWithPrevious, when the last undo step is a sources edit and nothing is to be redone, this
     // folds into it: dragging a source's handle is one undo step.
     void setSources(std::vector<Source> sources, bool mergeWithPrevious = false);
+
+    // Detectors: each must pass checkDetector (the loader's rules), their names unique; a refusal names the
+    // detector and what is wrong ("detector \"screen\": size must be two numbers > 0"). The list in scene
+    // order, as setSources; with mergeWithPrevious, folds into the last step when that is a detectors edit and
+    // nothing is to be redone (dragging a detector's handle is one undo step).
+    void setDetectors(std::vector<Detector> detectors, bool mergeWithPrevious = false);
+    // The same edits on one detector, with labels that name it: "add detector \"screen\"", ...
+    void addDetector(const Detector& detector);
+    void removeDetector(std::size_t index);
+    void setDetector(std::size_t index, const Detector& detector, bool mergeWithPrevious = false);
 
     // nullopt when the shape `spec` describes could be added (or, with `ignore`, replace that shape),
     // else the message the edit would be refused with.
@@ -132,8 +143,9 @@ private:
         std::vector<Medium> media;
         MediumId ambient;
         std::vector<Source> sources;
+        std::vector<Detector> detectors;
     };
-    enum class StepKind { Modify, Sources, Other };
+    enum class StepKind { Modify, Sources, Detectors, Other };
     struct Step {
         std::string label;
         StepKind kind = StepKind::Other;
@@ -150,8 +162,11 @@ private:
     void setSlot(ShapeId id, std::unique_ptr<Shape> shape, const std::string& name);
     void setName(ShapeId id, const std::string& name);
     void setProperties(const Properties& properties);
-    Properties properties() const { return {rest_.media, rest_.ambient, rest_.sources}; }
+    Properties properties() const { return {rest_.media, rest_.ambient, rest_.sources, rest_.detectors}; }
     void commitProperties(std::string label, Properties after);
+    // Commits a detectors edit labelled `label`, or folds it into the last one (setDetectors).
+    void commitDetectors(std::string label, std::vector<Detector> detectors, bool mergeWithPrevious);
+    const Detector& liveDetector(std::size_t index) const;
 
     // Checks shared by the edits; each throws EditRefused.
     const Shape& liveShape(ShapeId id) const;

@@ -189,3 +189,44 @@ TEST_F(SnapshotCamera, PhotonCountsAreBounded) {
 
 }  // namespace
 }  // namespace dropscope
+
+namespace dropscope {
+namespace {
+
+const std::string kDetectorScene = kDataDir + "/scenes/detectors.json";
+
+class SnapshotDetectors : public ::testing::Test {
+protected:
+    std::string out = (fs::temp_directory_path() / "dropscope-snapshot-detectors.png").string();
+    void TearDown() override { fs::remove(out); }
+    snapshot::Image shot(std::vector<std::string> extra) {
+        std::vector<std::string> arguments{"snapshot", kDetectorScene, "--out",      out,     "--width",
+                                           "80",       "--height",     "60",         "--eye", "0,0,12",
+                                           "--target", "0,0,5",        "--detectors"};
+        arguments.insert(arguments.end(), extra.begin(), extra.end());
+        const CliRun run = runDropscope(arguments);
+        EXPECT_EQ(run.status, kExitSuccess) << run.err;
+        return snapshot::readPng(out);
+    }
+};
+
+// Seen from behind the screen (it fills the view): without photons its outline only, with them its image.
+TEST_F(SnapshotDetectors, DrawsThePlanesWithTheirImagesWhenPhotonsAreTraced) {
+    const snapshot::Image outline = shot({});
+    const snapshot::Image image = shot({"--photons", "3000"});
+    const std::uint8_t* before = outline.pixel(8, 8);
+    const std::uint8_t* after = image.pixel(8, 8);
+    EXPECT_FALSE(std::equal(before, before + 3, after)) << "the image covers what was background";
+    EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), shot({"--photons", "3000"}).rgba.begin()))
+        << "the same image for the same arguments";
+}
+
+TEST_F(SnapshotDetectors, ASceneWithoutDetectorsIsBadInputNamingTheKey) {
+    const CliRun run = runDropscope({"snapshot", kOneSphere, "--out", out, "--detectors"});
+    expectOneLineFailure(run);
+    EXPECT_NE(run.err.find("detectors: --detectors: the scene has no detectors to draw"), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace dropscope
