@@ -6,6 +6,7 @@
 #include "cli/RayCsv.hpp"
 #include "cli/SnapshotCommand.hpp"
 #include "cli/TraceCommand.hpp"
+#include "results/Version.hpp"
 #include "scene/SceneLoader.hpp"
 
 #include <CLI/CLI.hpp>
@@ -46,6 +47,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     try {
         CLI::App app{"dropscope: light through droplets", "dropscope"};
         app.require_subcommand(0, 1);
+        app.set_version_flag("--version", "dropscope " + std::string(dropscopeVersion()),
+                             "Print dropscope's version and exit");
         app.footer(
             "Exit status: 0 success, 2 bad input (arguments, scene file, output path), 3 no display for the app\n"
             "(dropscope [SCENE.json] opens it), 1 internal error,\n"
@@ -63,6 +66,9 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
             app.parse(argc, argv);
         } catch (const CLI::CallForHelp&) {
             out << app.help();
+            return kExitSuccess;
+        } catch (const CLI::CallForVersion& version) {
+            out << version.what() << '\n';
             return kExitSuccess;
         } catch (const CLI::ParseError& error) {
             return reportUsageError(error.what(), err);

@@ -1,9 +1,11 @@
 // The top level of the dropscope command line: commands, help, and bad arguments.
 #include "app/CliRun.hpp"
 #include "cli/Cli.hpp"
+#include "results/Version.hpp"
 
 #include <gtest/gtest.h>
 
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,16 @@ TEST(Cli, HelpExitsZero) {
     EXPECT_EQ(inspect.status, kExitSuccess);
     EXPECT_NE(inspect.out.find("--json"), std::string::npos);
     EXPECT_EQ(inspect.err, "");
+}
+
+TEST(Cli, VersionPrintsTheProjectVersionAndExitsZero) {
+    const CliRun run = runDropscope({"--version"});
+    EXPECT_EQ(run.status, kExitSuccess);
+    EXPECT_EQ(run.out, "dropscope " + std::string(dropscopeVersion()) + "\n");
+    EXPECT_EQ(run.err, "");
+    EXPECT_TRUE(std::regex_match(std::string(dropscopeVersion()), std::regex(R"([0-9]+\.[0-9]+\.[0-9]+)")))
+        << dropscopeVersion();
+    EXPECT_NE(runDropscope({"--help"}).out.find("--version"), std::string::npos);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ set(_scenes ${CMAKE_CURRENT_SOURCE_DIR}/data/scenes)
 dropscope_add_cli_exit_test(cli_inspect_default_scene 0 "" inspect ${_default_scene})
 dropscope_add_cli_exit_test(cli_inspect_default_scene_json 0 "" inspect --json ${_default_scene})
 dropscope_add_cli_exit_test(cli_help 0 "" --help)
+dropscope_add_cli_exit_test(cli_version 0 "" --version)
 dropscope_add_cli_exit_test(cli_inspect_missing_file 2 "does_not_exist\\.json: no such file$"
                             inspect ${_scenes}/does_not_exist.json)
 dropscope_add_cli_exit_test(cli_inspect_bad_scene 2 "overlapping\\.json: shapes\\[1\\]: .* overlaps shapes\\[0\\]"
