@@ -150,6 +150,7 @@ Scene SceneDocument::toScene(std::vector<ShapeId>* slotOfShape) const {
     scene.ambient = rest_.ambient;
     scene.media = rest_.media;
     scene.sources = rest_.sources;
+    scene.detectors = rest_.detectors;
     scene.octree = rest_.octree;
     scene.view = rest_.view;
     scene.shapes.reserve(octree_.shapeCount());
