@@ -111,3 +111,22 @@ shot app-spectra-results "$rainbow" "mousemove 1040 310" "click 1" "key ctrl+a" 
     "mouseup 1" "mousemove 798 458" "mousedown 1" "mousemove 1000 600" "mousemove 1270 770" "mouseup 1" \
     "mousemove 929 400" "mousedown 1" "mousemove 1000 400" "mousemove 1070 400" "mouseup 1" \
     "mousemove 773 420" "sleep 0.5"
+# Detectors (docs/gui.md, "Detectors"): rainbow-sky.json, 12,000,000 photons (typed into the Fire panel), the
+# sky's window opened from the Results panel's "images:" line, binning 2 (its combo box), the mouse on the
+# primary bow.
+sky="$root/assets/scenes/rainbow-sky.json"
+shot app-detectors-sky "$sky" "mousemove 1040 310" "click 1" "key ctrl+a" "type 12000000" "key Return" \
+    "mousemove 640 60" "key space" "sleep 80" "mousemove 80 757" "click 1" "sleep 1" "mousemove 570 84" "click 1" \
+    "sleep 0.5" "mousemove 570 122" "click 1" "sleep 0.5" "mousemove 671 283" "sleep 0.5"
+# The same scene after 2,000,000 photons: the Energy budget window (the Results panel's Budget... button) and the
+# Ray orders plot (Orders...), dragged by its title below the budget.
+shot app-detectors-results "$sky" "mousemove 1040 310" "click 1" "key ctrl+a" "type 2000000" "key Return" \
+    "mousemove 640 60" "key space" "sleep 20" "mousemove 280 722" "click 1" "sleep 0.5" "mousemove 275 740" "click 1" \
+    "sleep 1" "mousemove 640 190" "mousedown 1" "mousemove 670 280" "mousemove 700 372" "mouseup 1" "mousemove 640 790"
+# 20,000 photons with 500 paths kept (typed into the Fire panel), the Paths panel's filters on order p2 and hit
+# "screen", the first photon kept selected and stepped to its internal reflection.
+shot app-detectors-paths "$sky" "mousemove 1040 333" "click 1" "key ctrl+a" "type 500" "key Return" \
+    "mousemove 1040 310" "click 1" "key ctrl+a" "type 20000" "key Return" "mousemove 640 60" "key space" "sleep 4" \
+    "mousemove 990 523" "click 1" "sleep 0.5" "mousemove 990 612" "click 1" "sleep 0.5" "mousemove 1110 523" "click 1" \
+    "sleep 0.5" "mousemove 1110 578" "click 1" "sleep 0.5" "mousemove 1100 547" "click 1" "mousemove 640 60" \
+    "key Right" "key Right"

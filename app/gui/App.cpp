@@ -60,6 +60,7 @@ void App::buildUi() {
     drawOctreePanel(state_);
     drawPathPanel(state_.view.layers, state_.traces, state_.ui.itemProbe);
     drawResultsPanel(state_.traces, state_.ui);
+    drawDetectorWindows(state_.traces, state_.ui.itemProbe);
     drawFilePrompts(state_);
     drawHelpWindow(state_.ui);
     drawStatusBar(state_);

@@ -22,8 +22,11 @@ void drawDetectorsPanel(AppState& state);
 void drawOctreePanel(AppState& state);
 // The path colouring, the recorded photons and their events with their polarisation.
 void drawPathPanel(render::LayerOptions& layers, TraceState& traces, const ItemProbe& probe);
-// Fractions, and the angular distribution in its plot window.
-void drawResultsPanel(const TraceState& traces, UiState& ui);
+// Fractions, the energy budget, the ray orders and the detectors; the angular distribution and the orders in
+// their plot windows, the budget in its window.
+void drawResultsPanel(TraceState& traces, UiState& ui);
+// Each plane and far-field detector's image in its own window, while open (DetectorWindows.cpp).
+void drawDetectorWindows(TraceState& traces, const ItemProbe& probe);
 // Open, save as, export, screenshot.
 void drawFilePrompts(AppState& state);
 void drawHelpWindow(UiState& ui);

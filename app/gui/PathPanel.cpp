@@ -1,6 +1,7 @@
 #include "gui/PanelLayout.hpp"
 #include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
+#include "gui/PathFilter.hpp"
 #include "gui/PolarisationText.hpp"
 #include "gui/SpectralWidgets.hpp"
 #include "gui/TraceActions.hpp"
@@ -12,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,8 @@ constexpr float kLegendWidth = 120.0f;
 constexpr float kColouringWidth = 100.0f;   // the colouring's combo box, on the row of the layer switches
 constexpr float kPhotonListHeight = 64.0f;  // three photons
 constexpr float kMinTableHeight = 90.0f;    // the header and four events
+constexpr float kOrderWidth = 70.0f;        // the filters' combo boxes, with the count of paths kept on their row
+constexpr float kHitWidth = 90.0f;
 
 void layerSwitches(render::LayerOptions& layers, const ItemProbe& probe) {
     ImGui::Checkbox("paths", &layers.paths);
@@ -80,17 +84,54 @@ void wavelengthLegend() {
     ImGui::TextUnformatted("780 nm");
 }
 
-void photonList(TraceState& traces) {
+// The filters by ray order and by detector hit (PathFilter.hpp), on one row; the number of paths they keep.
+void pathFilters(TraceState& traces, std::size_t kept, const ItemProbe& probe) {
+    const std::vector<Detector>& detectors = traces.trace->outcome.scene.detectors;
+    PathFilter& filter = traces.pathFilter;
+    ImGui::SetNextItemWidth(kOrderWidth);
+    choiceCombo("order", filter.order, kOrderChoices, probe,
+                "the ray order: p = interface events at the one shape met - 1 (p2: the primary bow);\n"
+                "multiple: met two shapes or more; unscattered: met none");
+    if (!detectors.empty()) {
+        ImGui::SameLine();
+        std::vector<std::string> names{"any"};
+        std::vector<std::size_t> indices{detectors.size()};
+        for (std::size_t d = 0; d < detectors.size(); ++d) {
+            if (detectors[d].type == DetectorType::ShapeAbsorption) continue;
+            names.push_back(detectors[d].name);
+            indices.push_back(d);
+        }
+        std::vector<const char*> choices;
+        for (const std::string& name : names) choices.push_back(name.c_str());
+        int chosen = 0;
+        for (std::size_t c = 1; c < indices.size(); ++c) {
+            if (filter.detector == indices[c]) chosen = static_cast<int>(c);
+        }
+        ImGui::SetNextItemWidth(kHitWidth);
+        if (choiceCombo("hit", chosen, choices, probe,
+                        "paths that crossed this plane detector or ended on it,\nor escaped into this far-field "
+                        "camera's view")) {
+            filter.detector = chosen > 0 ? std::optional(indices[static_cast<std::size_t>(chosen)]) : std::nullopt;
+        }
+    }
+    ImGui::SameLine();
+    probedText(probe, "paths kept",
+               std::to_string(kept) + " of " + std::to_string(traces.trace->outcome.result.paths.size()));
+}
+
+void photonList(TraceState& traces, const std::vector<int>& kept) {
     const auto& paths = traces.trace->outcome.result.paths;
     ImGui::BeginChild("photons", ImVec2(0.0f, kPhotonListHeight), true);
     ImGuiListClipper clipper;
-    clipper.Begin(static_cast<int>(paths.size()));
+    clipper.Begin(static_cast<int>(kept.size()));
     while (clipper.Step()) {
-        for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
+        for (int shown = clipper.DisplayStart; shown < clipper.DisplayEnd; ++shown) {
+            const int row = kept[static_cast<std::size_t>(shown)];
             const PhotonPath& path = paths[static_cast<std::size_t>(row)];
-            const std::string label =
-                "photon " + std::to_string(path.photon) + ": " + wavelengthText(path.wavelengthNm) + ", " +
-                std::string(photonFateName(path.fate)) + ", " + std::to_string(path.events.size()) + " events";
+            const std::string label = "photon " + std::to_string(path.photon) + ": " +
+                                      wavelengthText(path.wavelengthNm) + ", " +
+                                      std::string(photonFateName(path.fate)) + ", " + orderName(rayOrder(path)) + ", " +
+                                      std::to_string(path.events.size()) + " events";
             if (ImGui::Selectable(label.c_str(), row == traces.selectedPath)) selectEvent(traces, row, 0);
         }
     }
@@ -212,7 +253,10 @@ void drawPathPanel(render::LayerOptions& layers, TraceState& traces, const ItemP
         ImGui::End();
         return;
     }
-    photonList(traces);
+    const std::vector<int> kept =
+        filterPaths(traces.trace->outcome.result.paths, traces.trace->outcome.scene.detectors, traces.pathFilter);
+    pathFilters(traces, kept.size(), probe);
+    photonList(traces, kept);
     if (traces.selectedPath >= 0) eventTable(traces, probe);
     ImGui::End();
 }

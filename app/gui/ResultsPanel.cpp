@@ -1,11 +1,16 @@
+#include "gui/EnergyBudget.hpp"
 #include "gui/PanelLayout.hpp"
 #include "gui/PanelWidgets.hpp"
 #include "gui/Panels.hpp"
+#include "gui/PathFilter.hpp"
 #include "gui/PlotWindow.hpp"
+#include "gui/TraceActions.hpp"
 
 #include "spectrum/Colour.hpp"
 #include "tally/AngularTally.hpp"
+#include "tally/DetectorTallies.hpp"
 #include "tally/FateTally.hpp"
+#include "tally/OrderTally.hpp"
 #include "tally/SpectralAngularTally.hpp"
 
 #include <imgui.h>
@@ -13,7 +18,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace dropscope::gui {
@@ -78,6 +85,130 @@ plot::Figure angularFigure(const TallySet& tallies, bool unpolarisedSources) {
     return figure;
 }
 
+// Escapes per steradian of each ray order (OrderTally) as a fraction of the photons traced, at the angular
+// bins' centres: p0 .. p4, p5+ and multiple, log scale (NaN, not drawn, where none escaped).
+plot::Figure ordersFigure(const OrderTally& orders) {
+    const int bins = orders.bins();
+    const double photons = std::max<double>(static_cast<double>(orders.photons()), 1.0);
+    std::vector<double> centres;
+    std::vector<double> solidAngles;
+    for (int bin = 0; bin < bins; ++bin) {
+        const double lo = std::numbers::pi * bin / bins;
+        const double hi = std::numbers::pi * (bin + 1) / bins;
+        centres.push_back(90.0 * (bin + bin + 1) / bins);
+        solidAngles.push_back(2.0 * std::numbers::pi * (std::cos(lo) - std::cos(hi)));
+    }
+    const auto perSteradian = [&](const std::vector<std::uint64_t>& counts) {
+        std::vector<double> y;
+        for (std::size_t b = 0; b < counts.size(); ++b) {
+            y.push_back(counts[b] > 0 ? static_cast<double>(counts[b]) / photons / solidAngles[b] : std::nan(""));
+        }
+        return y;
+    };
+    plot::SubPlot subPlot{"escaped fraction per sr, by ray order", {}, plot::Scale::Log, {}};
+    for (std::size_t p = 0; p < OrderTally::kOrderColumns; ++p) {
+        subPlot.curves.push_back({orderName(static_cast<int>(p)), centres, perSteradian(orders.order(p))});
+    }
+    subPlot.curves.push_back({"multiple", centres, perSteradian(orders.multiple())});
+    return {"Ray orders", "scattering angle (deg)", plot::AxisRange{0.0, 180.0}, {std::move(subPlot)}};
+}
+
+// Single and multiple scattering shares, the orders' plot button.
+void drawOrders(const OrderTally& orders, ResultViews& views, const ItemProbe& probe) {
+    const double n = std::max<double>(static_cast<double>(orders.photons()), 1.0);
+    char text[96];
+    std::snprintf(text, sizeof text, "single %.5f  multiple %.5f", static_cast<double>(orders.singleTotal()) / n,
+                  static_cast<double>(orders.multipleTotal()) / n);
+    probedText(probe, "orders shares", text);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Orders...")) views.ordersPlot.open = true;
+    reportItemRect(probe, "orders plot");
+}
+
+// The shape-absorption detector's table: each shape that absorbed light, its medium and share.
+void absorptionTable(const ShapeAbsorptionTally& tally) {
+    ResultReport report;
+    tally.report(report);
+    const ResultTable* table = report.table(tally.name());
+    if (!table || table->rows() == 0) return ImGui::TextDisabled("  nothing absorbed in a shape");
+    const auto& shapes = std::get<std::vector<std::uint64_t>>(table->columns[0].values);
+    const auto& names = std::get<std::vector<std::string>>(table->columns[1].values);
+    const auto& media = std::get<std::vector<std::string>>(table->columns[2].values);
+    const auto& fractions = std::get<std::vector<double>>(table->columns[3].values);
+    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY;
+    const float height = std::min(6.0f, static_cast<float>(table->rows() + 1)) * ImGui::GetTextLineHeightWithSpacing();
+    if (!ImGui::BeginTable(tally.name().data(), 4, flags, ImVec2(0.0f, height))) return;
+    for (const char* header : {"shape", "name", "medium", "fraction"}) ImGui::TableSetupColumn(header);
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableHeadersRow();
+    for (std::size_t row = 0; row < table->rows(); ++row) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%llu", static_cast<unsigned long long>(shapes[row]));
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(names[row].c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(media[row].c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%.5f", fractions[row]);
+    }
+    ImGui::EndTable();
+}
+
+// The plane and far-field detectors' image buttons on one line (their windows: DetectorWindows.cpp), each
+// detector's share of the photons in its tooltip; below, each shape-absorption detector's table, folded.
+void drawDetectors(const TallySet& tallies, ResultViews& views, const ItemProbe& probe) {
+    const std::vector<const DetectorTally*> detectors = tallies.all<DetectorTally>();
+    const bool images = std::any_of(detectors.begin(), detectors.end(), [](const DetectorTally* tally) {
+        return tally->detector().type != DetectorType::ShapeAbsorption;
+    });
+    if (images) ImGui::TextUnformatted("images:");
+    for (const DetectorTally* tally : detectors) {
+        const Detector& detector = tally->detector();
+        if (detector.type == DetectorType::ShapeAbsorption) continue;
+        ImGui::SameLine();
+        if (ImGui::SmallButton(detector.name.c_str())) {
+            DetectorView& view = views.detectors[detector.name];
+            view.open = true;
+            view.focus = true;
+        }
+        reportItemRect(probe, "detector " + detector.name);
+        if (ImGui::IsItemHovered()) {
+            const double n = std::max<double>(static_cast<double>(tally->photons()), 1.0);
+            ImGui::SetTooltip("%s %s: %llu hits (%.5f of the photons); its image in a window",
+                              std::string(detectorTypeName(detector.type)).c_str(), detector.name.c_str(),
+                              static_cast<unsigned long long>(tally->hits()), static_cast<double>(tally->hits()) / n);
+        }
+    }
+    for (const DetectorTally* tally : detectors) {
+        const auto* absorption = dynamic_cast<const ShapeAbsorptionTally*>(tally);
+        if (!absorption) continue;
+        const std::string title = "absorbed by shape (" + tally->detector().name + ")";
+        if (ImGui::TreeNode(title.c_str())) {
+            absorptionTable(*absorption);
+            ImGui::TreePop();
+        }
+    }
+}
+
+// The budget's bar and window button, the orders, the detectors: from the tallies so far while a run goes on.
+void drawDetectorResults(const ShownTallies& shown, ResultViews& views, const ItemProbe& probe) {
+    if (shown.filling) {
+        ImGui::Text("filling in: %llu of %llu photons", static_cast<unsigned long long>(shown.photons),
+                    static_cast<unsigned long long>(shown.requested));
+    }
+    if (const auto* budget = shown.tallies->find<BudgetTally>()) {
+        ImGui::TextUnformatted("budget");
+        ImGui::SameLine();
+        drawBudgetBar(*budget, std::max(ImGui::GetContentRegionAvail().x - 70.0f, 40.0f), probe);
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Budget...")) views.budgetOpen = true;
+        reportItemRect(probe, "budget window");
+    }
+    if (const auto* orders = shown.tallies->find<OrderTally>()) drawOrders(*orders, views, probe);
+    drawDetectors(*shown.tallies, views, probe);
+}
+
 void drawFractions(const TraceResult& result) {
     const FateTally& fates = result.tallies.get<FateTally>();
     const double n = fates.photons() > 0 ? static_cast<double>(fates.photons()) : 1.0;
@@ -91,7 +222,7 @@ void drawFractions(const TraceResult& result) {
 
 }  // namespace
 
-void drawResultsPanel(const TraceState& traces, UiState& ui) {
+void drawResultsPanel(TraceState& traces, UiState& ui) {
     plot::PlotWindowState& plotState = ui.panels.angularPlot;
     placeNextPanel(PanelSide::Left, 0.79f, 0.21f);
     if (ImGui::Begin("Results")) {
@@ -108,11 +239,20 @@ void drawResultsPanel(const TraceState& traces, UiState& ui) {
             } else {
                 ImGui::TextDisabled("angular distribution, %d bins", result.tallies.get<AngularTally>().bins());
             }
-        } else {
+        } else if (!traces.partial) {
             ImGui::TextDisabled("no trace yet: fire photons (Space)");
         }
+        const ShownTallies shown = shownTallies(traces);
+        if (shown.tallies) drawDetectorResults(shown, traces.views, ui.itemProbe);
     }
     ImGui::End();
+    const ShownTallies shown = shownTallies(traces);
+    const auto* budget = shown.tallies ? shown.tallies->find<BudgetTally>() : nullptr;
+    if (budget && traces.views.budgetOpen) drawBudgetWindow(*budget, traces.views.budgetOpen, ui.itemProbe);
+    const auto* orders = shown.tallies ? shown.tallies->find<OrderTally>() : nullptr;
+    if (orders && traces.views.ordersPlot.open) {
+        drawPlotWindow(ordersFigure(*orders), traces.views.ordersPlot, ui.status, ui.itemProbe);
+    }
     if (traces.trace && plotState.open) {
         const std::vector<Source>& sources = traces.trace->outcome.scene.sources;
         const bool unpolarised = std::all_of(sources.begin(), sources.end(), [](const Source& source) {

@@ -78,7 +78,13 @@ void fireRayTree(AppState& state) { traceRayTree(state, false); }
 
 void updateTraces(AppState& state) {
     TraceState& traces = state.traces;
+    if (auto partial = traces.job.takePartial()) {
+        traces.partial = std::move(partial);
+        ++traces.talliesId;
+    }
     if (auto outcome = traces.job.takeResult()) {
+        traces.partial.reset();
+        ++traces.talliesId;
         if (outcome->error) {
             state.ui.status.refuse("trace failed: " + *outcome->error);
         } else {
@@ -129,8 +135,19 @@ void stepEvent(TraceState& traces, int delta) {
     selectEvent(traces, traces.selectedPath, traces.selectedEvent + delta);
 }
 
+ShownTallies shownTallies(const TraceState& traces) {
+    if (traces.partial && traces.job.running()) {
+        return {&traces.partial->tallies, traces.partial->photons, traces.partial->requested, true};
+    }
+    if (!traces.trace) return {};
+    const TraceResult& result = traces.trace->outcome.result;
+    return {&result.tallies, result.photons, result.requested, false};
+}
+
 void forgetTraces(TraceState& traces) {
     if (traces.trace || traces.rayTree) ++traces.shownId;
+    ++traces.talliesId;
+    traces.partial.reset();
     traces.trace.reset();
     traces.rayTree.reset();
     traces.traversal.reset();

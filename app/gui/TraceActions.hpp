@@ -20,6 +20,15 @@ void updateTraces(AppState& state);
 void selectEvent(TraceState& traces, int path, int event);
 void stepEvent(TraceState& traces, int delta);
 
+// The tallies the result views show: the run in progress's so far, else the last finished run's.
+struct ShownTallies {
+    const TallySet* tallies = nullptr;  // null: none yet
+    std::uint64_t photons = 0;          // traced into them
+    std::uint64_t requested = 0;
+    bool filling = false;  // a run is going on: they fill in as its batches finish
+};
+ShownTallies shownTallies(const TraceState& traces);
+
 // Drops the results shown and the event selected in them (another scene was opened).
 void forgetTraces(TraceState& traces);
 

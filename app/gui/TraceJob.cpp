@@ -1,8 +1,11 @@
 #include "gui/TraceJob.hpp"
 
+#include "tally/OrderTally.hpp"
 #include "tally/StandardTallies.hpp"
 #include "transport/OpticalScene.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <exception>
 #include <utility>
 
@@ -12,6 +15,28 @@ namespace {
 
 // Seconds between progress reports: ten a second moves a progress bar smoothly, at no cost to the run.
 constexpr double kProgressInterval = 0.1;
+// Seconds a batch of photons lasts, after the first: the partial results refresh about twice a second, and the
+// batches' set-up (per-thread tally copies, their merge) stays a small part of the run.
+constexpr double kBatchSeconds = 0.5;
+// Photons in the first batch, and the fewest in any: a few chunks of 256 per thread, to measure the rate by.
+constexpr std::uint64_t kFirstBatch = 2048;
+// The angular bins of the angular distribution and the ray orders.
+constexpr int kAngularBins = 180;
+
+// What the app counts: standardTallies, the ray orders and the scene's detectors with the energy budget.
+TallySet appTallies(const Scene& scene, PolarisationModel polarisation, const std::optional<WavelengthBins>& bands) {
+    TallySet tallies = standardTallies(kAngularBins, polarisation, bands);
+    tallies.add(std::make_unique<OrderTally>(kAngularBins));
+    addDetectorTallies(tallies, scene, polarisation);
+    return tallies;
+}
+
+// The next batch's photons: about kBatchSeconds at the rate of the last one, at least kFirstBatch.
+std::uint64_t nextBatch(std::uint64_t lastPhotons, double lastSeconds, std::uint64_t remaining) {
+    const double rate = static_cast<double>(lastPhotons) / std::max(lastSeconds, 1e-3);
+    const auto photons = static_cast<std::uint64_t>(std::min(rate * kBatchSeconds, 1e15));
+    return std::min(std::max(photons, kFirstBatch), remaining);
+}
 
 }  // namespace
 
@@ -24,6 +49,7 @@ void TraceJob::start(Scene scene, TraceSettings settings, std::optional<Waveleng
     cancel();
     joinWorker();
     outcome_.reset();
+    takePartial();
     stop_.store(false);
     finished_.store(false);
     buildingOctree_.store(true);
@@ -41,6 +67,7 @@ void TraceJob::discard() {
     cancel();
     joinWorker();
     outcome_.reset();
+    takePartial();
 }
 
 bool TraceJob::running() const { return worker_.joinable() && !finished_.load(std::memory_order_acquire); }
@@ -56,6 +83,11 @@ std::optional<TraceOutcome> TraceJob::takeResult() {
     return std::exchange(outcome_, std::nullopt);
 }
 
+std::optional<TracePartial> TraceJob::takePartial() {
+    const std::lock_guard lock(partialMutex_);
+    return std::exchange(partial_, std::nullopt);
+}
+
 void TraceJob::joinWorker() {
     if (worker_.joinable()) worker_.join();
 }
@@ -65,23 +97,49 @@ void TraceJob::run(Scene scene, const TraceSettings& settings, const std::option
     TraceOutcome outcome;
     try {
         const OpticalScene optical(scene);
+        const TallySet tallies = appTallies(scene, settings.transport.polarisation, wavelengths);
         buildingOctree_.store(false, std::memory_order_relaxed);
+        const auto start = std::chrono::steady_clock::now();
+        const auto elapsed = [&] {
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        };
+        TraceResult& total = outcome.result;
+        total.requested = settings.photons;
+        total.tallies = tallies.emptyCopy();
+        TraceSettings batch = settings;
+        batch.photons = std::min(kFirstBatch, settings.photons);
         TraceControl control;
         control.stop = &stop_;
         control.interval = kProgressInterval;
-        control.onProgress = [this](const TraceProgress& progress) {
-            done_.store(progress.done, std::memory_order_relaxed);
-            seconds_.store(progress.seconds, std::memory_order_relaxed);
+        control.onProgress = [&](const TraceProgress& progress) {
+            done_.store(total.photons + progress.done, std::memory_order_relaxed);
+            seconds_.store(elapsed(), std::memory_order_relaxed);
         };
-        outcome.result = runTrace(optical, scene.sources, settings,
-                                  standardTallies(180, settings.transport.polarisation, wavelengths), control);
-        done_.store(outcome.result.photons, std::memory_order_relaxed);
-        seconds_.store(outcome.result.seconds, std::memory_order_relaxed);
+        while (true) {
+            TraceResult part = runTrace(optical, scene.sources, batch, tallies, control);
+            total.tallies.merge(part.tallies);
+            total.photons += part.photons;
+            total.threads = part.threads;
+            for (PhotonPath& path : part.paths) total.paths.push_back(std::move(path));
+            done_.store(total.photons, std::memory_order_relaxed);
+            seconds_.store(elapsed(), std::memory_order_relaxed);
+            if (part.partial || total.photons >= settings.photons) break;
+            {
+                TracePartial partial{total.tallies, total.photons, settings.photons};
+                const std::lock_guard lock(partialMutex_);
+                partial_ = std::move(partial);
+            }
+            batch.firstPhoton = total.photons;
+            batch.photons = nextBatch(part.photons, part.seconds, settings.photons - total.photons);
+        }
+        total.partial = total.photons < settings.photons;
+        total.seconds = elapsed();
     } catch (const std::exception& error) {
         outcome.error = error.what();
     } catch (...) {
         outcome.error = "the trace failed with an unknown error";
     }
+    takePartial();
     buildingOctree_.store(false, std::memory_order_relaxed);
     outcome.scene = std::move(scene);
     outcome_ = std::move(outcome);

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -29,11 +30,21 @@ struct TraceJobProgress {
     double seconds = 0.0;         // since the photons started
 };
 
+// The tallies of the photons traced so far while a run goes on (its batches merged; see TraceJob).
+struct TracePartial {
+    TallySet tallies;
+    std::uint64_t photons = 0;    // traced so far
+    std::uint64_t requested = 0;  // in the whole run
+};
+
 // A trace run on a worker thread for the GUI, which keeps drawing while it goes: builds the scene's
-// OpticalScene and calls runTrace with a stop flag and a progress hook.
+// OpticalScene and calls runTrace with a stop flag and a progress hook, in batches of consecutive photons
+// (TraceSettings::firstPhoton) whose tallies merge exactly: the outcome is the same as one runTrace's, and after
+// each batch the tallies so far are offered to the UI (takePartial). A batch lasts about kBatchSeconds.
 //
 // Every member function is called from the UI thread only. The worker touches its own scene and result
-// and the atomics; its outcome passes to the UI thread through join(), which orders the two.
+// and the atomics; its outcome passes to the UI thread through join(), which orders the two, and its partial
+// tallies through partial_, under partialMutex_.
 //
 // Stopping is not instant: runTrace checks the stop flag between chunks of 256 photons per thread, so a
 // cancelled run ends once each thread finishes its chunk, and the octree is built before the first
@@ -50,8 +61,9 @@ public:
     TraceJob& operator=(const TraceJob&) = delete;
 
     // Starts tracing `scene` into standardTallies (180 angular bins; with `wavelengths`, the angular
-    // distribution per band too). A run still going is cancelled and waited for first, and its result (or
-    // a finished one not yet taken) is dropped: only the new run's outcome is delivered.
+    // distribution per band too), an OrderTally of the same bins and the scene's detector tallies
+    // (addDetectorTallies: one per detector and the BudgetTally). A run still going is cancelled and waited for first,
+    // and its result (or a finished one not yet taken) is dropped: only the new run's outcome is delivered.
     void start(Scene scene, TraceSettings settings, std::optional<WavelengthBins> wavelengths = std::nullopt);
     // Asks the run to stop; it ends soon after (see above) with a partial result. Returns at once.
     void cancel();
@@ -63,6 +75,9 @@ public:
     void discard();
     // The outcome of the finished run, once; nothing while it is running or when already taken.
     std::optional<TraceOutcome> takeResult();
+    // The tallies so far of the run going on, once per batch finished; nothing before the first, when already
+    // taken, or once the run has finished (its outcome has them all).
+    std::optional<TracePartial> takePartial();
 
 private:
     void run(Scene scene, const TraceSettings& settings, const std::optional<WavelengthBins>& wavelengths);
@@ -70,6 +85,8 @@ private:
 
     std::thread worker_;
     std::optional<TraceOutcome> outcome_;  // written by the worker, read after joining it
+    std::mutex partialMutex_;              // guards partial_, which the worker and the UI thread both touch
+    std::optional<TracePartial> partial_;
     std::atomic<bool> stop_{false};
     std::atomic<bool> finished_{false};
     std::atomic<bool> buildingOctree_{false};

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "gui/PathFilter.hpp"
+#include "gui/ResultViews.hpp"
 #include "gui/TraceJob.hpp"
 #include "render/OctreeLayer.hpp"
 #include "transport/RayTree.hpp"
@@ -51,8 +53,13 @@ struct TraceState {
     bool automatic = false;             // the run in progress was started by "live", not the user
 
     std::optional<TraceShown> trace;  // the last finished Monte Carlo run
-    std::optional<RayTree> rayTree;   // the last ray fired as a tree
-    TracedWith rayTreeTraced;         // what it was traced with
+    // The run in progress's tallies so far (TraceJob::takePartial); dropped when it finishes.
+    std::optional<TracePartial> partial;
+    // Which tallies the result views show: moves on with every partial taken and every trace shown or dropped,
+    // so the detector windows make their images again.
+    std::uint64_t talliesId = 0;
+    std::optional<RayTree> rayTree;  // the last ray fired as a tree
+    TracedWith rayTreeTraced;        // what it was traced with
     // Which results are shown: moves on whenever `trace` or `rayTree` is replaced or dropped, so the 3D
     // view knows to draw them again (as SceneDocument::revision() does for the scene).
     std::uint64_t shownId = 0;
@@ -60,6 +67,8 @@ struct TraceState {
     int selectedPath = -1;                          // index into trace->outcome.result.paths
     int selectedEvent = 0;                          // within that path; the segment from it to the next is "selected"
     std::optional<render::RayTraversal> traversal;  // of the selected segment
+    PathFilter pathFilter;                          // which recorded photons the Paths panel lists
+    ResultViews views;                              // detector windows, the ray orders' plot
 };
 
 }  // namespace dropscope::gui

@@ -78,7 +78,9 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     // several threads at once; merged after the threads end.
     std::vector<TallySet> locals;
     for (int thread = 0; thread < requestedThreads; ++thread) locals.push_back(tallies.emptyCopy());
-    const std::uint64_t recorded = std::min(settings.paths, settings.photons);
+    // Paths of photons [first, first + recorded), at paths[photon - first].
+    const std::uint64_t first = settings.firstPhoton;
+    const std::uint64_t recorded = settings.paths > first ? std::min(settings.paths - first, settings.photons) : 0;
     // A traced photon's path starts with its emission, so an empty one was never traced (stopped run).
     std::vector<PhotonPath> paths(recorded);
 
@@ -101,10 +103,11 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
             TallySet& local = locals[static_cast<std::size_t>(omp_get_thread_num())];
             double lastReport = 0.0;
             while (!stopRequested()) {
-                const std::uint64_t first = kChunk * nextChunk.fetch_add(1, std::memory_order_relaxed);
-                if (first >= settings.photons) break;
-                const std::uint64_t last = std::min(first + kChunk, settings.photons);
-                for (std::uint64_t photon = first; photon < last; ++photon) {
+                const std::uint64_t begin = kChunk * nextChunk.fetch_add(1, std::memory_order_relaxed);
+                if (begin >= settings.photons) break;
+                const std::uint64_t end = std::min(begin + kChunk, settings.photons);
+                for (std::uint64_t k = begin; k < end; ++k) {
+                    const std::uint64_t photon = first + k;
                     const std::size_t sourceIndex = photon % sources.size();
                     const Source& source = sources[sourceIndex];
                     PhotonRandom random(settings.seed, photon);
@@ -115,11 +118,11 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                     std::optional<Polarisation> polarisation;
                     if (polarised) polarisation = emittedPolarisation(source, emitted.direction);
                     std::vector<Event>* events = nullptr;
-                    if (photon < recorded) {
-                        paths[photon].photon = photon;
-                        paths[photon].source = sourceIndex;
-                        paths[photon].wavelengthNm = light.wavelengthNm;
-                        events = &paths[photon].events;
+                    if (k < recorded) {
+                        paths[k].photon = photon;
+                        paths[k].source = sourceIndex;
+                        paths[k].wavelengthNm = light.wavelengthNm;
+                        events = &paths[k].events;
                     }
                     PhotonScorer scorer(local, photon, sourceIndex, events);
                     // Beams and rays: scattering angles from their axis, so a divergent beam's spread shows.
@@ -127,9 +130,9 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
                     if (source.type != SourceType::PointSource) axis = source.direction;
                     const PhotonOutcome outcome = tracePhoton(scene, emitted, random, settings.transport, &scorer,
                                                               polarisation, light.wavelengthNm, axis);
-                    if (photon < recorded) paths[photon].fate = outcome.fate;
+                    if (k < recorded) paths[k].fate = outcome.fate;
                 }
-                done.fetch_add(last - first, std::memory_order_relaxed);
+                done.fetch_add(end - begin, std::memory_order_relaxed);
                 if (omp_get_thread_num() == 0 && control.onProgress) {
                     const double now = secondsSince(start);
                     if (now - lastReport >= control.interval) {
@@ -151,8 +154,8 @@ TraceResult runTrace(const OpticalScene& scene, const std::vector<Source>& sourc
     result.seconds = secondsSince(start);
     result.photons = done.load();
     result.partial = result.photons < settings.photons;
-    for (std::uint64_t photon = 0; photon < recorded; ++photon) {
-        if (!paths[photon].events.empty()) result.paths.push_back(std::move(paths[photon]));
+    for (PhotonPath& path : paths) {
+        if (!path.events.empty()) result.paths.push_back(std::move(path));
     }
     return result;
 }

@@ -15,9 +15,12 @@ namespace dropscope {
 
 struct TraceSettings {
     std::uint64_t photons = 0;
+    // The run traces photons [firstPhoton, firstPhoton + photons): runs over consecutive ranges, their tallies
+    // merged, are one run (the app traces in such batches to show results as they fill in).
+    std::uint64_t firstPhoton = 0;
     std::uint64_t seed = 1;
     int threads = 0;          // 0: all the machine has (omp_get_max_threads)
-    std::uint64_t paths = 0;  // record every event of photons [0, paths)
+    std::uint64_t paths = 0;  // record every event of photons [0, paths) (those of them this run traces)
     TransportSettings transport;
 };
 

@@ -35,6 +35,16 @@ public:
         return nullptr;
     }
 
+    // Every tally of type T, in order.
+    template <class T>
+    std::vector<const T*> all() const {
+        std::vector<const T*> found;
+        for (const auto& tally : tallies_) {
+            if (const auto* typed = dynamic_cast<const T*>(tally.get())) found.push_back(typed);
+        }
+        return found;
+    }
+
     TallySet emptyCopy() const;
     void score(const Event& event, const TallyContext& photon) {
         for (const auto& tally : tallies_) tally->score(event, photon);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <utility>
 
 namespace dropscope {
 namespace {
@@ -82,6 +83,36 @@ TEST(TraceRun, RecordedPathsAreTheFirstPhotonsAndEndTheWayTheyWereCounted) {
                 EXPECT_EQ(event.reflectance, 1.0);
             }
         }
+    }
+}
+
+TEST(TraceRun, ConsecutivePhotonRangesMergedAreOneRun) {
+    // What the app's batches rely on: [0, 700) + [700, 1800) + [1800, 3000), their tallies merged and their
+    // paths (40 recorded, across the first boundary) joined, are the run of [0, 3000).
+    const Scene scene = defaultScene();
+    const OpticalScene optical(scene);
+    TraceSettings settings = settingsFor(3000, 2);
+    settings.paths = 40;
+    const TraceResult whole = test::traceStandard(optical, scene.sources, settings);
+    TraceResult joined;
+    for (const auto [first, count] : {std::pair<std::uint64_t, std::uint64_t>{0, 700}, {700, 1100}, {1800, 1200}}) {
+        settings.firstPhoton = first;
+        settings.photons = count;
+        TraceResult batch = test::traceStandard(optical, scene.sources, settings);
+        if (first == 0) {
+            joined = std::move(batch);
+            continue;
+        }
+        joined.tallies.merge(batch.tallies);
+        joined.photons += batch.photons;
+        for (PhotonPath& path : batch.paths) joined.paths.push_back(std::move(path));
+    }
+    expectSameTally(whole, joined);
+    ASSERT_EQ(joined.paths.size(), 40U);
+    for (std::size_t i = 0; i < joined.paths.size(); ++i) {
+        EXPECT_EQ(joined.paths[i].photon, i);
+        ASSERT_EQ(joined.paths[i].events.size(), whole.paths[i].events.size()) << "photon " << i;
+        EXPECT_EQ(joined.paths[i].events.back().position, whole.paths[i].events.back().position) << "photon " << i;
     }
 }
 

@@ -1,0 +1,65 @@
+#include "gui/PathFilter.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace dropscope::gui {
+
+int rayOrder(const PhotonPath& path) {
+    ShapeId shape = RayHit::kNone;
+    int events = 0;
+    for (const Event& event : path.events) {
+        if (event.type != EventType::Reflect && event.type != EventType::Refract && event.type != EventType::Tir) {
+            continue;
+        }
+        if (shape == RayHit::kNone) shape = event.shape;
+        if (event.shape != shape) return kMultipleShapes;
+        ++events;
+    }
+    if (shape == RayHit::kNone) return kUnscattered;
+    return std::min(events - 1, kMaxOrder);
+}
+
+// Choices 1.. of kOrderChoices are unscattered, p0 .. p5+, multiple: the orders -1 .. 6.
+const char* orderName(int order) { return kOrderChoices[static_cast<std::size_t>(std::clamp(order, -1, 6) + 2)]; }
+
+bool hasOrderChoice(const PhotonPath& path, int choice) {
+    if (choice <= 0) return true;
+    return rayOrder(path) == choice - 2;
+}
+
+bool hitsDetector(const PhotonPath& path, const Detector& detector, std::size_t index) {
+    const auto& events = path.events;
+    if (events.empty()) return false;
+    const Event& last = events.back();
+    if (detector.type == DetectorType::FarField) {
+        // A photon escaping along d is seen from -d (Detector.hpp).
+        return last.type == EventType::Escape && FarFieldCamera(detector).pixelOf(-last.direction).has_value();
+    }
+    if (detector.type != DetectorType::Plane) return false;
+    if (last.type == EventType::Detect && last.detector == index) return true;
+    const PlaneFrame frame = planeFrame(detector);
+    for (std::size_t k = 0; k + 1 < events.size(); ++k) {
+        const Point& from = events[k].position;
+        const double length = (events[k + 1].position - from).norm();
+        if (crossPlane(detector, frame, from, events[k].direction, length)) return true;
+    }
+    return last.type == EventType::Escape &&
+           crossPlane(detector, frame, last.position, last.direction, std::numeric_limits<double>::infinity());
+}
+
+std::vector<int> filterPaths(const std::vector<PhotonPath>& paths, const std::vector<Detector>& detectors,
+                             const PathFilter& filter) {
+    std::vector<int> kept;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        if (!hasOrderChoice(paths[i], filter.order)) continue;
+        if (filter.detector && (*filter.detector >= detectors.size() ||
+                                !hitsDetector(paths[i], detectors[*filter.detector], *filter.detector))) {
+            continue;
+        }
+        kept.push_back(static_cast<int>(i));
+    }
+    return kept;
+}
+
+}  // namespace dropscope::gui
