@@ -7,6 +7,7 @@
 #include "cli/WholeNumberOption.hpp"
 #include "results/TraceFiles.hpp"
 #include "run/TraceRun.hpp"
+#include "scene/JsonDocument.hpp"
 #include "scene/SceneLoader.hpp"
 #include "tally/FateTally.hpp"
 #include "tally/OrderTally.hpp"
@@ -173,7 +174,9 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
     // The file names do not depend on the bins: checked before the scene is read.
     checkOutputPath(directory, traceFileNames(standardTallies(options.bins, settings.transport.polarisation,
                                                               WavelengthBins{1, 1.0, 1.0})));
-    const Scene scene = loadScene(options.scenePath);
+    // The text read once: results.h5 keeps exactly what was traced.
+    const std::string sceneJson = readJsonFileText(options.scenePath);
+    const Scene scene = parseScene(sceneJson, options.scenePath);
     if (scene.sources.empty()) throw SceneError(scene.origin, "sources", "the scene has no light sources to trace");
     const auto [lo, hi] = wavelengthRangeNm(scene.sources, scene.wavelengthNm);
     const WavelengthBins wavelengths{options.wavelengthBins, lo, hi};
@@ -190,7 +193,8 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
     const OpticalScene opticalScene(scene);
     createOutputDirectory(directory);
 
-    const TraceRunInfo info{options.scenePath, scene.sources.size(), settings, scene.wavelengthNm, scene.sources};
+    TraceRunInfo info{options.scenePath, scene.sources.size(), settings, scene.wavelengthNm, scene.sources};
+    info.sceneJson = sceneJson;
     // Alive until the files are written: a first Ctrl-C while writing them is absorbed, not fatal.
     const InterruptGuard interrupt;
     std::optional<ProgressLine> progress;

@@ -1,6 +1,7 @@
 #include "gui/ViewportScene.hpp"
 
 #include "gui/DetectorHandles.hpp"
+#include "gui/PathFilter.hpp"
 #include "gui/Picking.hpp"
 #include "gui/SourceHandles.hpp"
 #include "render/Colour.hpp"
@@ -55,6 +56,7 @@ ViewKey viewKey(const AppState& state) {
         .traces = state.traces.shownId,
         .selectedPath = state.traces.selectedPath,
         .selectedEvent = state.traces.selectedEvent,
+        .pathFilter = state.traces.pathFilter,
         .up = state.view.camera.up,
     };
 }
@@ -74,7 +76,17 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
     options.traversal = options.traversal && traversal;
     const glm::dvec3& up = state.view.camera.up;
     render::LayerInputs inputs{octree, document.sources(), bounds_, Eigen::Vector3d(up.x, up.y, up.z)};
-    if (traces.trace) inputs.paths = &traces.trace->outcome.result.paths;
+    // The paths the Paths panel's filters keep; all of them when it filters nothing.
+    std::vector<PhotonPath> kept;
+    if (traces.trace) {
+        const std::vector<PhotonPath>& paths = traces.trace->outcome.result.paths;
+        inputs.paths = &paths;
+        if (traces.pathFilter != PathFilter{}) {
+            for (int index : filterPaths(paths, traces.trace->outcome.scene.detectors, traces.pathFilter))
+                kept.push_back(paths[static_cast<std::size_t>(index)]);
+            inputs.paths = &kept;
+        }
+    }
     if (traces.rayTree) inputs.rayTree = &*traces.rayTree;
     inputs.traversal = traversal;
     inputs.currentEvent = currentEvent(traces);

@@ -22,7 +22,8 @@ struct ViewKey {
     std::uint64_t traces = 0;  // which trace and ray tree are shown
     int selectedPath = -1;     // the photon event selected in the trace
     int selectedEvent = 0;
-    glm::dvec3 up{0.0};  // the camera's: the grid lies across it
+    PathFilter pathFilter;  // the 3D view draws the paths the Paths panel lists
+    glm::dvec3 up{0.0};     // the camera's: the grid lies across it
 
     bool operator==(const ViewKey&) const = default;
 };

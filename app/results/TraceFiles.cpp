@@ -3,8 +3,10 @@
 #include "results/AtomicFile.hpp"
 #include "results/ImagePng.hpp"
 #include "results/PathsJsonl.hpp"
+#include "results/ResultsHdf5.hpp"
 #include "results/SummaryJson.hpp"
 #include "results/TableCsv.hpp"
+#include "results/Version.hpp"
 
 namespace dropscope {
 
@@ -24,6 +26,7 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
     report.set({"max_events"}, static_cast<std::uint64_t>(info.settings.transport.maxEvents));
     report.set({"paths"}, static_cast<std::uint64_t>(result.paths.size()));
     report.set({"sources"}, static_cast<std::uint64_t>(info.sourceCount));
+    report.set({"version"}, std::string(dropscopeVersion()));
     if (info.sceneWavelengthNm > 0.0) report.set({"wavelength_nm"}, info.sceneWavelengthNm);
     for (std::size_t i = 0; i < info.sources.size(); ++i) {
         const Source& source = info.sources[i];
@@ -71,6 +74,7 @@ void writeTraceSummary(const ResultReport& report, std::ostream& out) {
                                                          "single_scattering",
                                                          "multiple_scattering",
                                                          "budget",
+                                                         "version",
                                                          "detectors"};
     writeSummaryJson(report, kKeyOrder, out);
 }
@@ -82,6 +86,7 @@ std::vector<std::string> traceFileNames(const TallySet& tallies) {
     for (const ResultTable& table : report.tables()) names.push_back(table.name + ".csv");
     for (const ResultImage& image : report.images()) names.push_back(image.name + ".png");
     names.push_back("paths.jsonl");
+    names.push_back("results.h5");
     return names;
 }
 
@@ -96,6 +101,9 @@ void writeTraceFiles(const std::filesystem::path& directory, const TraceResult& 
         files.push_back({directory / (image.name + ".png"), [&](std::ostream& out) { writeImagePng(image, out); }});
     }
     files.push_back({directory / "paths.jsonl", [&](std::ostream& out) { writePathsJsonl(result.paths, media, out); }});
+    files.push_back({directory / "results.h5", [&](std::ostream& out) {
+                         writeResultsHdf5(report, {std::string(dropscopeVersion()), info.sceneJson}, out);
+                     }});
     // Renamed last: a summary.json is only ever beside the files of its own run.
     files.push_back({directory / "summary.json", [&](std::ostream& out) { writeTraceSummary(report, out); }});
     writeFilesAtomically(files);

@@ -20,11 +20,12 @@ struct TraceRunInfo {
     TraceSettings settings;
     double sceneWavelengthNm = 0.0;    // 0: not reported
     std::vector<Source> sources = {};  // their spectra and divergences are reported (none: not reported)
+    std::string sceneJson = {};        // the scene file's text, kept in results.h5
 };
 
 std::string_view fresnelModelName(FresnelModel model);  // "exact", "schlick"
 
-// Everything a run reports: the run's own values (photons, seed, threads, seconds, photons_requested,
+// Everything a run reports: the run's own values (version, photons, seed, threads, seconds, photons_requested,
 // partial, scene, fresnel, polarisation, max_events, paths, sources, wavelength_nm, spectra) and then every
 // tally's report.
 ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info);
@@ -33,11 +34,12 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info);
 void writeTraceSummary(const ResultReport& report, std::ostream& out);
 
 // The files writeTraceFiles writes for runs with these tallies, in the order docs/cli.md names them:
-// summary.json, one NAME.csv per table they report, paths.jsonl.
+// summary.json, one NAME.csv per table they report, one NAME.png per image, paths.jsonl, results.h5.
 std::vector<std::string> traceFileNames(const TallySet& tallies);
 
 // Writes every file of traceFileNames into `directory`, all or none (writeFilesAtomically): a
-// summary.json is only ever beside the files of the same run. Tables as CSV (writeTableCsv).
+// summary.json is only ever beside the files of the same run. Tables as CSV (writeTableCsv), images as PNG, and
+// everything in results.h5 (writeResultsHdf5, docs/results-format.md).
 void writeTraceFiles(const std::filesystem::path& directory, const TraceResult& result, const TraceRunInfo& info,
                      const std::vector<Medium>& media);
 

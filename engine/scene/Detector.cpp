@@ -160,13 +160,16 @@ std::optional<PlaneCrossing> crossPlane(const Detector& plane, const PlaneFrame&
     const double halfW = plane.size[0] / 2.0;
     const double halfH = plane.size[1] / 2.0;
     if (!(std::abs(u) <= halfW && std::abs(v) <= halfH)) return std::nullopt;
+    return PlaneCrossing{distance, u, v, planePixel(plane, u, v)};
+}
+
+std::size_t planePixel(const Detector& plane, double u, double v) {
     const auto cell = [](double offsetFromEdge, double extent, int count) {
         const auto index = static_cast<int>(offsetFromEdge / extent * count);
         return std::clamp(index, 0, count - 1);  // the far edge belongs to the last pixel
     };
-    const int ix = cell(u + halfW, plane.size[0], plane.pixels.nx);
-    const int iy = cell(v + halfH, plane.size[1], plane.pixels.ny);
-    return PlaneCrossing{distance, u, v, plane.pixels.index(ix, iy)};
+    return plane.pixels.index(cell(u + plane.size[0] / 2.0, plane.size[0], plane.pixels.nx),
+                              cell(v + plane.size[1] / 2.0, plane.size[1], plane.pixels.ny));
 }
 
 std::array<double, 2> planePixelCentre(const Detector& plane, int ix, int iy) {

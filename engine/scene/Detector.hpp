@@ -92,6 +92,8 @@ struct PlaneCrossing {
 // side it does not count.
 std::optional<PlaneCrossing> crossPlane(const Detector& plane, const PlaneFrame& frame, const Point& origin,
                                         const Direction& direction, double length);
+// The pixel of a point (u, v) of the rectangle (the far edges belong to the last pixels).
+std::size_t planePixel(const Detector& plane, double u, double v);
 // Pixel (ix, iy)'s centre in the detector's frame.
 std::array<double, 2> planePixelCentre(const Detector& plane, int ix, int iy);
 double planePixelArea(const Detector& plane);

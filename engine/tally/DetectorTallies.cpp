@@ -208,12 +208,7 @@ void PlaneDetectorTally::score(const Event& event, const TallyContext& photon) {
     // The photon ended on this (absorbing) plane: the crossing is where it stopped.
     const Eigen::Vector3d offset = event.position - detector().center;
     PlaneCrossing crossing{0.0, offset.dot(frame_.u), offset.dot(frame_.v), 0};
-    const PixelGrid& grid = detector().pixels;
-    const auto cell = [](double fromEdge, double extent, int count) {
-        return std::clamp(static_cast<int>(fromEdge / extent * count), 0, count - 1);
-    };
-    crossing.pixel = grid.index(cell(crossing.u + detector().size[0] / 2.0, detector().size[0], grid.nx),
-                                cell(crossing.v + detector().size[1] / 2.0, detector().size[1], grid.ny));
+    crossing.pixel = planePixel(detector(), crossing.u, crossing.v);
     const Polarisation* light = event.polarisation ? &*event.polarisation : nullptr;
     add(crossing, event.position, event.direction, light, photon, photon.state.pathLength);
 }

@@ -117,7 +117,8 @@ TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
                              "photons",           "seed",    "threads", "seconds",      "fractions", "events",
                              "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
                              "max_events",        "paths",   "counts",  "lost_reasons", "sources",   "wavelength_nm",
-                             "wavelength_bins",   "spectra", "budget"}));
+                             "wavelength_bins",   "spectra", "budget",  "version"}));
+    EXPECT_EQ(s["version"], "0.1.0");
     EXPECT_EQ(keysOf(s["fractions"]),
               (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered", "detected"}));
     EXPECT_EQ(keysOf(s["counts"]),
@@ -387,7 +388,7 @@ TEST_F(TraceCommand, BadInputLeavesAnEarlierRunsFilesAlone) {
     expectOneLineFailure(trace(kNoSources, "10"));
     expectOneLineFailure(trace(kSingleRay, "10", {"--bins", "0"}));
     EXPECT_EQ(read(path("out/summary.json")), before);
-    EXPECT_EQ(std::distance(fs::directory_iterator(path("out")), fs::directory_iterator()), 4);  // no leftovers
+    EXPECT_EQ(std::distance(fs::directory_iterator(path("out")), fs::directory_iterator()), 5);  // no leftovers
 }
 
 TEST_F(TraceCommand, AnOutputNameTakenByAFolderIsRefusedBeforeAnyFileIsReplaced) {
@@ -497,11 +498,12 @@ TEST_F(TraceCommand, DetectorsWriteTheirFilesAndTheBudgetAddsUp) {
     for (const char* name :
          {"summary.json", "angular.csv", "angular_spectral.csv", "angular_orders.csv", "detector-sky.csv",
           "detector-sky.png", "detector-sky-records.csv", "detector-screen.csv", "detector-screen-records.csv",
-          "detector-wall.csv", "detector-absorbed.csv", "detector-absorbed-records.csv", "paths.jsonl"}) {
+          "detector-wall.csv", "detector-absorbed.csv", "detector-absorbed-records.csv", "paths.jsonl", "results.h5"}) {
         EXPECT_TRUE(fs::is_regular_file(path(std::string("out/") + name))) << name;
     }
     EXPECT_FALSE(fs::exists(path("out/detector-wall-records.csv")));
     EXPECT_TRUE(read(path("out/detector-sky.png")).starts_with("\x89PNG"));
+    EXPECT_TRUE(read(path("out/results.h5")).starts_with("\x89HDF\r\n\x1a\n"));
 
     const Json s = summary();
     const auto photons = s["photons"].get<std::uint64_t>();
@@ -574,7 +576,7 @@ TEST_F(TraceCommand, DetectorFilesAreTheSameForAnyThreadCount) {
         EXPECT_EQ(read(entry.path().string()), read(path("two/" + name))) << name;
         ++compared;
     }
-    EXPECT_GE(compared, 12u);
+    EXPECT_GE(compared, 13u);  // results.h5 among them
     Json one = summary("one");
     Json two = summary("two");
     for (Json* s : {&one, &two}) {

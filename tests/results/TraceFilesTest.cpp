@@ -75,7 +75,7 @@ TEST(TraceFiles, SummaryKeysComeInTheDocumentedOrder) {
     const std::vector<std::string> documented{
         "photons",           "seed",    "threads", "seconds",      "fractions", "events",
         "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
-        "max_events",        "paths",   "counts",  "lost_reasons", "sources"};
+        "max_events",        "paths",   "counts",  "lost_reasons", "sources",   "version"};
     EXPECT_EQ(keys, documented);
 }
 

@@ -6,9 +6,10 @@
 // carry wavelengths, summary.json has "wavelength_nm" and "spectra" and each line of paths.jsonl a
 // "wavelength_nm": those keys are checked here and then taken out, and what remains must be the reference's
 // bytes. Since detectors, summary.json's "fractions" and "counts" have a "detected" entry (0 here), also checked
-// and taken out; results.h5 is newer than every reference and not compared. summary.json's "seconds" and
-// "threads" are the only other lines allowed to differ.
+// and taken out, as is "version"; results.h5 is newer than every reference and not compared. summary.json's "seconds"
+// and "threads" are the only other lines allowed to differ.
 #include "results/TraceFiles.hpp"
+#include "results/Version.hpp"
 #include "scene/SceneLoader.hpp"
 #include "tally/StandardTallies.hpp"
 #include "transport/OpticalScene.hpp"
@@ -121,6 +122,7 @@ TEST_P(TraceReference, FilesAreTheReferenceBytesOnOneAndTwoThreads) {
                 actual = withoutKey(actual, "spectra", Json::parse(R"({"0": {"spectrum": "scene", "lo_nm": 532.0,
                                                        "hi_nm": 532.0, "lines": 1, "divergence_deg": 0.0}})"),
                                     2);
+                actual = withoutKey(actual, "version", std::string(dropscopeVersion()), 2);
                 actual = withoutMember(actual, "fractions", "detected", 0.0);
                 actual = withoutMember(actual, "counts", "detected", 0);
                 actual = withoutTimings(actual);

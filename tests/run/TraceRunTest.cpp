@@ -95,7 +95,7 @@ TEST(TraceRun, ConsecutivePhotonRangesMergedAreOneRun) {
     settings.paths = 40;
     const TraceResult whole = test::traceStandard(optical, scene.sources, settings);
     TraceResult joined;
-    for (const auto [first, count] : {std::pair<std::uint64_t, std::uint64_t>{0, 700}, {700, 1100}, {1800, 1200}}) {
+    for (const auto& [first, count] : {std::pair<std::uint64_t, std::uint64_t>{0, 700}, {700, 1100}, {1800, 1200}}) {
         settings.firstPhoton = first;
         settings.photons = count;
         TraceResult batch = test::traceStandard(optical, scene.sources, settings);

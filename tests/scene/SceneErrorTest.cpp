@@ -112,7 +112,7 @@ TEST(SceneError, UnknownKeySuggestsTheNearestValidKey) {
 TEST(SceneError, UnknownKeyWithoutANearOneListsTheValidKeys) {
     EXPECT_EQ(sceneErrorOf(R"({"dropscope": 1, "camera": {}})"),
               R"(scene.json: unknown key "camera" (valid keys: dropscope, unit, wavelength_nm, ambient, media, )"
-              R"(shapes, sources, octree, generators, view))");
+              R"(shapes, sources, octree, generators, view, detectors))");
     EXPECT_EQ(sourceError(R"({"type": "point", "origin": [0, 0, 0], "direction": [0, 0, 1]})"),
               R"(scene.json: sources[0]: unknown key "direction" (valid keys: type, origin, polarisation, spectrum))");
 }
