@@ -124,8 +124,9 @@ shot app-detectors-results "$sky" "mousemove 1040 310" "click 1" "key ctrl+a" "t
     "mousemove 640 60" "key space" "sleep 20" "mousemove 280 722" "click 1" "sleep 0.5" "mousemove 275 740" "click 1" \
     "sleep 1" "mousemove 640 190" "mousedown 1" "mousemove 670 280" "mousemove 700 372" "mouseup 1" "mousemove 640 790"
 # 20,000 photons with 500 paths kept (typed into the Fire panel), the Paths panel's filters on order p2 and hit
-# "screen", the first photon kept selected and stepped to its internal reflection.
-shot app-detectors-paths "$sky" "mousemove 1040 333" "click 1" "key ctrl+a" "type 500" "key Return" \
+# "screen", the first photon kept selected and stepped to its internal reflection. The Detectors panel is closed
+# first, which hides the detectors' layer too: the screen's image would stand between the view and the drop.
+shot app-detectors-paths "$sky" "mousemove 318 300" "click 1" "sleep 0.3" "mousemove 1040 333" "click 1" "key ctrl+a" "type 500" "key Return" \
     "mousemove 1040 310" "click 1" "key ctrl+a" "type 20000" "key Return" "mousemove 640 60" "key space" "sleep 4" \
     "mousemove 990 523" "click 1" "sleep 0.5" "mousemove 990 612" "click 1" "sleep 0.5" "mousemove 1110 523" "click 1" \
     "sleep 0.5" "mousemove 1110 578" "click 1" "sleep 0.5" "mousemove 1100 547" "click 1" "mousemove 640 60" \
