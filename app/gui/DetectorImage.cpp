@@ -11,11 +11,10 @@ namespace dropscope::gui {
 
 namespace {
 
-const std::vector<double>& numbers(const ResultTable& table, std::string_view column) {
-    for (const ResultColumn& c : table.columns) {
-        if (c.name == column) return std::get<std::vector<double>>(c.values);
-    }
-    throw std::logic_error("detector table " + table.name + " has no column " + std::string(column));
+const std::vector<double>& numbers(const ResultTable& table, std::string_view name) {
+    const ResultColumn* column = table.column(name);
+    if (!column) throw std::logic_error("detector table " + table.name + " has no column " + std::string(name));
+    return std::get<std::vector<double>>(column->values);
 }
 
 // A ResultImage's pixels (top row first) in pixel order, iy * nx + ix with row 0 at the bottom.

@@ -6,26 +6,20 @@
 namespace dropscope::gui {
 
 int rayOrder(const PhotonPath& path) {
-    ShapeId shape = RayHit::kNone;
-    int events = 0;
-    for (const Event& event : path.events) {
-        if (event.type != EventType::Reflect && event.type != EventType::Refract && event.type != EventType::Tir) {
-            continue;
-        }
-        if (shape == RayHit::kNone) shape = event.shape;
-        if (event.shape != shape) return kMultipleShapes;
-        ++events;
-    }
-    if (shape == RayHit::kNone) return kUnscattered;
-    return std::min(events - 1, kMaxOrder);
+    RayOrder order;
+    for (const Event& event : path.events) order.add(event);
+    return order.order();
 }
 
 // Choices 1.. of kOrderChoices are unscattered, p0 .. p5+, multiple: the orders -1 .. 6.
-const char* orderName(int order) { return kOrderChoices[static_cast<std::size_t>(std::clamp(order, -1, 6) + 2)]; }
+const char* orderName(int order) {
+    const int known = std::clamp(order, RayOrder::kUnscattered, RayOrder::kMultipleShapes);
+    return kOrderChoices[static_cast<std::size_t>(known - RayOrder::kUnscattered + 1)];
+}
 
 bool hasOrderChoice(const PhotonPath& path, int choice) {
     if (choice <= 0) return true;
-    return rayOrder(path) == choice - 2;
+    return rayOrder(path) == choice - 1 + RayOrder::kUnscattered;
 }
 
 bool hitsDetector(const PhotonPath& path, const Detector& detector, std::size_t index) {

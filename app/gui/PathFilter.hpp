@@ -2,6 +2,7 @@
 
 #include "run/TraceRun.hpp"
 #include "scene/Detector.hpp"
+#include "tally/OrderTally.hpp"
 
 #include <array>
 #include <cstddef>
@@ -23,12 +24,8 @@ struct PathFilter {
 inline constexpr std::array<const char*, 9> kOrderChoices{"any", "unscattered", "p0",  "p1",      "p2",
                                                           "p3",  "p4",          "p5+", "multiple"};
 
-// A path's ray order as OrderTally counts it (docs/detectors.md, "Ray orders"): p = (its interface events at the
-// one shape it met) - 1, kMaxOrder for five or more; kMultipleShapes when it met two shapes or more;
-// kUnscattered when it met none. Unlike OrderTally, which counts escapes only, any fate has an order.
-inline constexpr int kUnscattered = -1;
-inline constexpr int kMaxOrder = 5;
-inline constexpr int kMultipleShapes = 6;
+// A path's ray order as OrderTally counts it (RayOrder of its events). Unlike OrderTally, which counts escapes
+// only, any fate has an order.
 int rayOrder(const PhotonPath& path);
 // "unscattered", "p0" .. "p5+", "multiple": a rayOrder's name.
 const char* orderName(int order);

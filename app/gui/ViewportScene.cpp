@@ -5,6 +5,7 @@
 #include "gui/Picking.hpp"
 #include "gui/SourceHandles.hpp"
 #include "render/Colour.hpp"
+#include "tally/DetectorTallies.hpp"
 
 namespace dropscope::gui {
 
@@ -20,11 +21,15 @@ const Event* currentEvent(const TraceState& traces) {
     return events.empty() ? nullptr : &events[static_cast<std::size_t>(traces.selectedEvent)];
 }
 
-// The plane detectors' images in the last trace, when it counted them (its tallies' detector tables).
+// The plane detectors' images in the last trace, when it counted them (their tallies' tables). Only the planes
+// report: the view is rebuilt as the camera turns, and a far-field camera's report integrates every pixel's
+// solid angle.
 std::vector<render::DetectorImage> detectorImages(const TraceState& traces, const std::vector<Detector>& detectors) {
     if (!traces.trace || detectors.empty()) return {};
     ResultReport report;
-    traces.trace->outcome.result.tallies.report(report);
+    for (const PlaneDetectorTally* plane : traces.trace->outcome.result.tallies.all<PlaneDetectorTally>()) {
+        plane->report(report);
+    }
     return render::planeDetectorImages(report, detectors);
 }
 

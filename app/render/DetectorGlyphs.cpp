@@ -1,6 +1,7 @@
 #include "render/DetectorGlyphs.hpp"
 
 #include "render/Colour.hpp"
+#include "tally/DetectorTallies.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -126,12 +127,11 @@ std::vector<DetectorImage> planeDetectorImages(const ResultReport& report, const
     std::vector<DetectorImage> images;
     for (const Detector& detector : detectors) {
         if (detector.type != DetectorType::Plane) continue;
-        const ResultTable* table = report.table("detector-" + detector.name);
+        const ResultTable* table = report.table(detectorTableName(detector));
         if (!table || table->rows() != detector.pixels.count()) continue;
-        for (const ResultColumn& column : table->columns) {
-            const auto* values = std::get_if<std::vector<double>>(&column.values);
-            if (column.name == "fraction" && values) images.push_back({detector.name, detector.pixels, *values});
-        }
+        const ResultColumn* fraction = table->column("fraction");
+        const auto* values = fraction ? std::get_if<std::vector<double>>(&fraction->values) : nullptr;
+        if (values) images.push_back({detector.name, detector.pixels, *values});
     }
     return images;
 }

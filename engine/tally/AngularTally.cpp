@@ -26,6 +26,14 @@ StokesVector scatteringPlaneStokes(const Polarisation& light, const Direction& k
 
 }  // namespace
 
+std::size_t angularBinOf(const Direction& direction, const Direction& axis, std::size_t bins) {
+    const double cosine = std::clamp(direction.dot(axis), -1.0, 1.0);
+    const double fraction = std::acos(cosine) / std::numbers::pi;
+    return std::min(static_cast<std::size_t>(fraction * static_cast<double>(bins)), bins - 1);
+}
+
+double angularEdgeDeg(int k, int bins) { return 180.0 * static_cast<double>(k) / static_cast<double>(bins); }
+
 AngularTally::AngularTally(int bins, bool stokes) {
     if (bins < 1) throw std::invalid_argument("the number of angular bins must be at least 1");
     const auto count = static_cast<std::size_t>(bins);
@@ -37,10 +45,7 @@ void AngularTally::score(const Event& event, const TallyContext& photon) {
     if (event.type == EventType::Emit) ++photons_;
     if (event.type != EventType::Escape) return;
     const Direction& emitted = photon.state.axis;
-    const double cosine = std::clamp(event.direction.dot(emitted), -1.0, 1.0);
-    const double fraction = std::acos(cosine) / std::numbers::pi;
-    const auto bins = escapes_.size();
-    const std::size_t bin = std::min(static_cast<std::size_t>(fraction * static_cast<double>(bins)), bins - 1);
+    const std::size_t bin = angularBinOf(event.direction, emitted, escapes_.size());
     ++escapes_[bin];
     if (!stokes()) return;
     if (!event.polarisation) throw std::logic_error("a Stokes angular tally was given an unpolarised photon");
@@ -64,10 +69,7 @@ void AngularTally::merge(const Tally& other) {
     }
 }
 
-double AngularTally::lowerEdgeDeg(int bin) const {
-    // 180 * bin / bins: the edge correctly rounded, so whole degrees come out whole
-    return 180.0 * static_cast<double>(bin) / static_cast<double>(bins());
-}
+double AngularTally::lowerEdgeDeg(int bin) const { return angularEdgeDeg(bin, bins()); }
 
 AngularTally::Columns AngularTally::columns() const {
     Columns columns;

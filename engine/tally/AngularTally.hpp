@@ -8,6 +8,12 @@
 
 namespace dropscope {
 
+// Of `bins` equal bins of theta over 0-180 degrees: the one a direction at angle acos(direction . axis) from
+// `axis` falls in (180 degrees in the last), and edge k, 180 k / bins degrees, correctly rounded (so whole degrees
+// come out whole). AngularTally, SpectralAngularTally and OrderTally share them.
+std::size_t angularBinOf(const Direction& direction, const Direction& axis, std::size_t bins);
+double angularEdgeDeg(int k, int bins);
+
 // Escapes per equal bin of theta, the angle between a photon's escape direction and its emission
 // direction (0 straight on, 180 degrees straight back): the table "angular" (angular.csv, docs/cli.md).
 // With `stokes`, also the Stokes parameters Q, U, V of the escaping light in each photon's scattering-plane

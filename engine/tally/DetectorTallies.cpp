@@ -18,13 +18,18 @@ bool before(const DetectorHit& a, const DetectorHit& b) {
     return std::tie(a.photon, a.sequence) < std::tie(b.photon, b.sequence);
 }
 
+// A detector's parallel axis closer than this sine to the light's direction is too short to fix a frame once
+// made perpendicular to it (its direction would be mostly rounding): the other axis of the detector is used.
+constexpr double kParallelAxisSine = 1e-6;
+
 // The light's Stokes vector with parallel axis `axis` (made perpendicular to the direction), or with
 // `fallback` when the direction is (nearly) along `axis`; unpolarised light of unit power without polarisation.
 StokesVector stokesAlong(const Polarisation* light, const Direction& direction, const Eigen::Vector3d& axis,
                          const Eigen::Vector3d& fallback) {
     if (!light) return unpolarisedStokes();
     Eigen::Vector3d reference = axis - axis.dot(direction.vector()) * direction.vector();
-    if (reference.norm() < 1e-6) reference = fallback - fallback.dot(direction.vector()) * direction.vector();
+    if (reference.norm() < kParallelAxisSine)
+        reference = fallback - fallback.dot(direction.vector()) * direction.vector();
     return stokesInFrame(*light, direction, reference.normalized());
 }
 
@@ -74,15 +79,6 @@ void HitRecords::merge(const HitRecords& other) {
     hits_ = std::move(merged);
 }
 
-bool operator==(const HitRecords& a, const HitRecords& b) {
-    const auto key = [](const DetectorHit& h) {
-        return std::tie(h.photon, h.sequence, h.position, h.direction, h.weight, h.wavelengthNm, h.stokes, h.events,
-                        h.pathLength);
-    };
-    return a.capacity_ == b.capacity_ && std::equal(a.hits_.begin(), a.hits_.end(), b.hits_.begin(), b.hits_.end(),
-                                                    [&](const auto& x, const auto& y) { return key(x) == key(y); });
-}
-
 ResultTable HitRecords::table(const std::string& name, bool stokes) const {
     std::vector<std::uint64_t> photon, events;
     std::vector<double> x, y, z, dx, dy, dz, weight, wavelength, pathLength;
@@ -122,11 +118,13 @@ ResultTable HitRecords::table(const std::string& name, bool stokes) const {
     return table;
 }
 
+std::string detectorTableName(const Detector& detector) { return "detector-" + detector.name; }
+
 DetectorTally::DetectorTally(Detector detector, std::size_t index, bool stokes)
     : detector_(std::move(detector)),
       index_(index),
       stokes_(stokes),
-      tableName_("detector-" + detector_.name),
+      tableName_(detectorTableName(detector_)),
       records_(detector_.record) {
     checkDetector(detector_);
 }

@@ -37,12 +37,14 @@ public:
     // Table `name`: photon, x, y, z, dx, dy, dz, weight, wavelength_nm, [stokes_i, stokes_q, stokes_u,
     // stokes_v,] events, path_length.
     ResultTable table(const std::string& name, bool stokes) const;
-    friend bool operator==(const HitRecords&, const HitRecords&);
 
 private:
     std::uint64_t capacity_;
     std::vector<DetectorHit> hits_;  // sorted by (photon, sequence), at most capacity_
 };
+
+// "detector-NAME": the name of the detector's tally, of its table and image, and of its files.
+std::string detectorTableName(const Detector& detector);
 
 // Shared by the three detector tallies: the detector, its index in the scene, its records and the photon
 // being scored (to number its hits).

@@ -1,5 +1,7 @@
 #include "tally/OrderTally.hpp"
 
+#include "tally/AngularTally.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -7,6 +9,19 @@
 #include <string>
 
 namespace dropscope {
+
+void RayOrder::add(const Event& event) {
+    if (event.type != EventType::Reflect && event.type != EventType::Refract && event.type != EventType::Tir) return;
+    if (firstShape_ == RayHit::kNone) firstShape_ = event.shape;
+    if (event.shape != firstShape_) severalShapes_ = true;
+    ++eventsAtShape_;
+}
+
+int RayOrder::order() const {
+    if (firstShape_ == RayHit::kNone) return kUnscattered;
+    if (severalShapes_) return kMultipleShapes;
+    return std::min(eventsAtShape_ - 1, kMaxOrder);
+}
 
 OrderTally::OrderTally(int bins) {
     if (bins < 1) throw std::invalid_argument("the number of angular bins must be at least 1");
@@ -16,35 +31,22 @@ OrderTally::OrderTally(int bins) {
 }
 
 void OrderTally::score(const Event& event, const TallyContext& photon) {
-    switch (event.type) {
-    case EventType::Emit:
+    if (event.type == EventType::Emit) {
         ++photons_;
-        firstShape_ = RayHit::kNone;
-        severalShapes_ = false;
-        eventsAtShape_ = 0;
+        current_ = {};
         return;
-    case EventType::Reflect:
-    case EventType::Refract:
-    case EventType::Tir:
-        if (firstShape_ == RayHit::kNone) firstShape_ = event.shape;
-        if (event.shape != firstShape_) severalShapes_ = true;
-        ++eventsAtShape_;
-        return;
-    case EventType::Escape: break;
-    default: return;
     }
-    if (firstShape_ == RayHit::kNone) return;  // unscattered
+    current_.add(event);
+    if (event.type != EventType::Escape) return;
+    const int order = current_.order();
+    if (order == RayOrder::kUnscattered) return;
     // The same bins as AngularTally: theta from the photon's axis.
-    const double cosine = std::clamp(event.direction.dot(photon.state.axis), -1.0, 1.0);
-    const auto bins = multiple_.size();
-    const auto bin =
-        std::min(static_cast<std::size_t>(std::acos(cosine) / std::numbers::pi * static_cast<double>(bins)), bins - 1);
-    if (severalShapes_) {
+    const std::size_t bin = angularBinOf(event.direction, photon.state.axis, multiple_.size());
+    if (order == RayOrder::kMultipleShapes) {
         ++multiple_[bin];
-        return;
+    } else {
+        ++orders_[static_cast<std::size_t>(order)][bin];
     }
-    const std::uint64_t order = std::min<std::uint64_t>(eventsAtShape_ - 1, kOrderColumns - 1);
-    ++orders_[order][bin];
 }
 
 void OrderTally::merge(const Tally& other) {
@@ -79,8 +81,8 @@ void OrderTally::report(ResultReport& report) const {
     report.set({"multiple_scattering"}, share(multipleTotal()));
     std::vector<double> lower, upper;
     for (int bin = 0; bin < bins(); ++bin) {
-        lower.push_back(180.0 * bin / bins());
-        upper.push_back(180.0 * (bin + 1) / bins());
+        lower.push_back(angularEdgeDeg(bin, bins()));
+        upper.push_back(angularEdgeDeg(bin + 1, bins()));
     }
     ResultTable table{"angular_orders", {}};
     table.columns.push_back({"theta_lo_deg", std::move(lower), "deg"});

@@ -8,6 +8,26 @@
 
 namespace dropscope {
 
+// A photon's ray order (docs/detectors.md, "Ray orders"), told its events one by one from the emission: the
+// photon meets a shape when it reflects off it or enters it (a reflect, refract or tir event at it). One that met
+// exactly one shape has order p = (its interface events) - 1, kMaxOrder for five or more; kMultipleShapes when it
+// met two shapes or more; kUnscattered when it met none. OrderTally counts escapes by it; the app's path filter
+// gives each recorded path its order.
+class RayOrder {
+public:
+    static constexpr int kUnscattered = -1;
+    static constexpr int kMaxOrder = 5;
+    static constexpr int kMultipleShapes = 6;
+
+    void add(const Event& event);
+    int order() const;
+
+private:
+    ShapeId firstShape_ = RayHit::kNone;
+    bool severalShapes_ = false;
+    int eventsAtShape_ = 0;
+};
+
 // Ray orders (`dropscope trace --orders`, docs/detectors.md, "Ray orders"). An escaping photon that met exactly
 // one shape (reflected off it or entered it) has ray order p = (its interface events at that shape) - 1: p0
 // reflected outside, p1 straight through, p2 one internal reflection (the primary bow), ...; one that met two
@@ -16,7 +36,7 @@ namespace dropscope {
 // "single_scattering" and "multiple_scattering" (the columns' totals).
 class OrderTally final : public Tally {
 public:
-    static constexpr std::size_t kOrderColumns = 6;  // p0 .. p4, p5_plus
+    static constexpr std::size_t kOrderColumns = RayOrder::kMaxOrder + 1;  // p0 .. p4, p5_plus
 
     explicit OrderTally(int bins);
     std::string_view name() const override { return "angular_orders"; }
@@ -38,10 +58,7 @@ private:
     std::uint64_t photons_ = 0;
     std::array<std::vector<std::uint64_t>, kOrderColumns> orders_;
     std::vector<std::uint64_t> multiple_;
-    // The photon being scored.
-    ShapeId firstShape_ = RayHit::kNone;
-    bool severalShapes_ = false;
-    std::uint64_t eventsAtShape_ = 0;
+    RayOrder current_;  // of the photon being scored
 };
 
 }  // namespace dropscope

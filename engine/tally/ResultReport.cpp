@@ -61,6 +61,12 @@ void ResultReport::addImage(ResultImage image) {
     images_.push_back(std::move(image));
 }
 
+const ResultColumn* ResultTable::column(std::string_view columnName) const {
+    const auto found =
+        std::find_if(columns.begin(), columns.end(), [&](const ResultColumn& c) { return c.name == columnName; });
+    return found == columns.end() ? nullptr : &*found;
+}
+
 const SummaryValue* ResultReport::find(const std::vector<std::string>& path) const {
     const auto entry =
         std::find_if(summary_.begin(), summary_.end(), [&](const SummaryEntry& e) { return e.path == path; });

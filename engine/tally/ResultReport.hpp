@@ -37,6 +37,7 @@ struct ResultTable {
     std::vector<ResultColumn> columns;
     std::vector<std::size_t> grid = {};
     std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
+    const ResultColumn* column(std::string_view columnName) const;  // nullptr when absent
     friend bool operator==(const ResultTable&, const ResultTable&) = default;
 };
 

@@ -51,7 +51,6 @@ public:
         Detector plane;
         PlaneFrame frame;
     };
-    const std::vector<AbsorbingPlane>& absorbingPlanes() const { return absorbingPlanes_; }
     // The nearest absorbing plane a flight from p along d crosses within (0, length], if any.
     struct PlaneHit {
         const AbsorbingPlane* plane;

@@ -80,12 +80,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         observe(here(EventType::Absorb));
         return true;
     };
-    // The absorbing plane detector a flight of `reach` ahead would end on, if any.
-    const bool absorbingPlanes = !scene.absorbingPlanes().empty();
-    const auto detectorAhead = [&](double reach) -> std::optional<OpticalScene::PlaneHit> {
-        if (!absorbingPlanes) return std::nullopt;
-        return scene.firstAbsorbingPlane(position, direction, reach);
-    };
+    // Ends the photon on the absorbing plane detector its flight reaches.
     const auto detect = [&](const OpticalScene::PlaneHit& detector) {
         fly(detector.distance);
         outcome.fate = PhotonFate::Detected;
@@ -103,7 +98,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     if (region == OpticalScene::kAmbient) {
         const double approach = scene.approachDistance(position, direction);
         if (approach > 0.0) {
-            const auto detector = detectorAhead(approach);
+            const auto detector = scene.firstAbsorbingPlane(position, direction, approach);
             if (absorbedWithin(detector ? detector->distance : approach)) return outcome;
             if (detector) return detect(*detector);
             fly(approach);
@@ -114,7 +109,9 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         const RayHit hit = scene.octree().firstHit(position, direction);
         double reach = hit ? hit.distance : std::numeric_limits<double>::infinity();
         // A photon inside a shape with no surface ahead is lost below, never detected beyond it.
-        const auto detector = hit || region == OpticalScene::kAmbient ? detectorAhead(reach) : std::nullopt;
+        const auto detector = hit || region == OpticalScene::kAmbient
+                                  ? scene.firstAbsorbingPlane(position, direction, reach)
+                                  : std::nullopt;
         if (detector) reach = detector->distance;
         if (absorbedWithin(reach)) return outcome;
         if (detector) return detect(*detector);
