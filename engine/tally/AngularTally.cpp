@@ -96,10 +96,10 @@ AngularTally::Columns AngularTally::columns() const {
 }
 
 void AngularTally::appendColumns(ResultTable& table, Columns c, bool stokes) {
-    table.columns.push_back({"theta_lo_deg", std::move(c.lower)});
-    table.columns.push_back({"theta_hi_deg", std::move(c.upper)});
+    table.columns.push_back({"theta_lo_deg", std::move(c.lower), "deg"});
+    table.columns.push_back({"theta_hi_deg", std::move(c.upper), "deg"});
     table.columns.push_back({"fraction", std::move(c.fraction)});
-    table.columns.push_back({"fraction_per_sr", std::move(c.perSteradian)});
+    table.columns.push_back({"fraction_per_sr", std::move(c.perSteradian), "1/sr"});
     if (!stokes) return;
     table.columns.push_back({"stokes_q", std::move(c.stokesQ)});
     table.columns.push_back({"stokes_u", std::move(c.stokesU)});

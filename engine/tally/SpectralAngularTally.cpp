@@ -75,7 +75,8 @@ void SpectralAngularTally::report(ResultReport& report) const {
         append(all.stokesV, c.stokesV);
         append(all.dolp, c.dolp);
     }
-    ResultTable table{"angular_spectral", {{"wavelength_lo_nm", std::move(lo)}, {"wavelength_hi_nm", std::move(hi)}}};
+    ResultTable table{"angular_spectral",
+                      {{"wavelength_lo_nm", std::move(lo), "nm"}, {"wavelength_hi_nm", std::move(hi), "nm"}}};
     AngularTally::appendColumns(table, std::move(all), bands_.front().stokes());
     report.addTable(std::move(table));
 }

@@ -1,5 +1,6 @@
 // Detector geometry (plane crossings, far-field projections and solid angles) and the detector, order and
 // budget tallies on made-up event streams: what they count, exact merges, first-K records for any split.
+#include "tally/AngularTally.hpp"
 #include "tally/BudgetTally.hpp"
 #include "tally/DetectorTallies.hpp"
 #include "tally/OrderTally.hpp"
@@ -175,6 +176,21 @@ TEST(OrderTally, RayOrderIsEventsAtTheOneShapeMetLessOne) {
     for (const auto& column : table->columns) names.push_back(column.name);
     EXPECT_EQ(names, (std::vector<std::string>{"theta_lo_deg", "theta_hi_deg", "p0", "p1", "p2", "p3", "p4", "p5_plus",
                                                "multiple"}));
+}
+
+// results.h5 records each column's unit (docs/results-format.md): the angle tables state theirs alike.
+TEST(OrderTally, AngleColumnsHaveTheUnitsOfAngularCsv) {
+    ResultReport report;
+    AngularTally(4, true).report(report);
+    OrderTally(4).report(report);
+    for (const char* name : {"angular", "angular_orders"}) {
+        const ResultTable* table = report.table(name);
+        ASSERT_TRUE(table) << name;
+        EXPECT_EQ(table->column("theta_lo_deg")->unit, "deg") << name;
+        EXPECT_EQ(table->column("theta_hi_deg")->unit, "deg") << name;
+        EXPECT_EQ(table->column("fraction")->unit, "") << name;
+    }
+    EXPECT_EQ(report.table("angular")->column("fraction_per_sr")->unit, "1/sr");
 }
 
 TEST(BudgetTally, PutsEveryPhotonInOnePlace) {
