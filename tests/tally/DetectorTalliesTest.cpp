@@ -188,8 +188,10 @@ TEST(OrderTally, AngleColumnsHaveTheUnitsOfAngularCsv) {
         ASSERT_TRUE(table) << name;
         EXPECT_EQ(table->column("theta_lo_deg")->unit, "deg") << name;
         EXPECT_EQ(table->column("theta_hi_deg")->unit, "deg") << name;
-        EXPECT_EQ(table->column("fraction")->unit, "") << name;
     }
+    // Shares of the emitted photons have none.
+    EXPECT_EQ(report.table("angular")->column("fraction")->unit, "");
+    EXPECT_EQ(report.table("angular_orders")->column("p2")->unit, "");
     EXPECT_EQ(report.table("angular")->column("fraction_per_sr")->unit, "1/sr");
 }
 
