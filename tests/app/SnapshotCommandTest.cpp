@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace dropscope {
 namespace {
 
@@ -25,6 +27,12 @@ const std::string kDataDir = DROPSCOPE_TEST_DATA_DIR;
 const std::string kOneSphere = kDataDir + "/scenes/one_sphere.json";  // r = 2 at (1, 2, 3), a ray source
 const std::string kNoSources = kDataDir + "/scenes/no_sources.json";
 const std::string kMalformed = kDataDir + "/scenes/malformed.json";
+
+// CTest runs the tests of a fixture in parallel: one test's picture must not be another's "nothing written".
+std::string perTestOutput(const std::string& stem) {
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    return (fs::temp_directory_path() / (stem + "-" + test + "-" + std::to_string(::getpid()) + ".png")).string();
+}
 
 class SnapshotCommand : public ::testing::Test {
 protected:
@@ -156,7 +164,7 @@ namespace {
 
 class SnapshotCamera : public ::testing::Test {
 protected:
-    std::string out = (fs::temp_directory_path() / "dropscope-snapshot-camera.png").string();
+    std::string out = perTestOutput("dropscope-snapshot-camera");
     void TearDown() override { fs::remove(out); }
 };
 
@@ -197,7 +205,7 @@ const std::string kDetectorScene = kDataDir + "/scenes/detectors.json";
 
 class SnapshotDetectors : public ::testing::Test {
 protected:
-    std::string out = (fs::temp_directory_path() / "dropscope-snapshot-detectors.png").string();
+    std::string out = perTestOutput("dropscope-snapshot-detectors");
     void TearDown() override { fs::remove(out); }
     snapshot::Image shot(std::vector<std::string> extra) {
         std::vector<std::string> arguments{"snapshot", kDetectorScene, "--out",      out,     "--width",

@@ -23,7 +23,9 @@ const std::string kNoSources = std::string(DROPSCOPE_TEST_DATA_DIR) + "/scenes/n
 std::string outputPng(const std::string& name) {
     const fs::path folder = fs::temp_directory_path() / "dropscope-snapshot-layers";
     fs::create_directories(folder);
-    return (folder / (name + ".png")).string();
+    // CTest runs the tests of this file in parallel: each test writes under its own name.
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    return (folder / (test + "-" + name + ".png")).string();
 }
 
 test::CliRun snapshot(const std::string& scene, const std::string& out, std::vector<std::string> extra) {
