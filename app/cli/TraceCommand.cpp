@@ -81,6 +81,8 @@ TraceSettings traceSettings(const TraceOptions& options) {
     settings.transport.maxEvents = options.maxEvents;
     settings.transport.fresnel = options.fresnel == "schlick" ? FresnelModel::Schlick : FresnelModel::Exact;
     settings.transport.polarisation = polarisationModel(options);
+    settings.transport.diffraction =
+        options.diffraction == "fraunhofer" ? DiffractionModel::Fraunhofer : DiffractionModel::None;
     return settings;
 }
 
@@ -151,6 +153,12 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
                      "Equal wavelength bins over the sources' spectra in angular_spectral.csv")
         ->capture_default_str()
         ->transform(wholeNumberIn(1, kMaxWavelengthBins));
+    command
+        ->add_option("--diffraction", options.diffraction,
+                     "none: ray optics only; fraunhofer: half the photons that meet a sphere or an ellipsoid are "
+                     "diffracted by its outline (Airy pattern) and pass it (docs/transport.md, \"Diffraction\")")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"none", "fraunhofer"}));
     command->add_flag("--orders", options.orders,
                       "Ray orders: angular_orders.csv (p0 .. p5_plus of photons that met one shape, and multiple) and "
                       "single/multiple scattering shares in summary.json");
@@ -186,11 +194,14 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
         throw BadInputError("--wavelength-bins " + std::to_string(options.wavelengthBins) + ": " + error.what());
     }
     TallySet tallies = standardTallies(options.bins, settings.transport.polarisation, wavelengths);
-    if (options.orders) tallies.add(std::make_unique<OrderTally>(options.bins));
+    if (options.orders) {
+        tallies.add(
+            std::make_unique<OrderTally>(options.bins, settings.transport.diffraction != DiffractionModel::None));
+    }
     addDetectorTallies(tallies, scene, settings.transport.polarisation);
     // The detectors' files are named after them: checked now that they are known.
     checkOutputPath(directory, traceFileNames(tallies));
-    const OpticalScene opticalScene(scene);
+    const OpticalScene opticalScene(scene, settings.transport.diffraction != DiffractionModel::None);
     createOutputDirectory(directory);
 
     TraceRunInfo info{options.scenePath, scene.sources.size(), settings, scene.wavelengthNm, scene.sources};

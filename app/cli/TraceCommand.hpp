@@ -19,14 +19,16 @@ struct TraceOptions {
     std::uint64_t paths = 0;
     std::uint32_t maxEvents = 10000;
     std::string fresnel = "exact";
-    std::string polarisation;  // "stokes" | "none"; empty: stokes, or none with --fresnel schlick
+    std::string polarisation;          // "stokes" | "none"; empty: stokes, or none with --fresnel schlick
+    std::string diffraction = "none";  // --diffraction none|fraunhofer
     int wavelengthBins = 1;
     bool orders = false;
     std::string outDir;
 };
 
 // Registers `dropscope trace SCENE --photons N [--seed S] [--bins B] [--threads T] [--paths K]
-// [--max-events M] [--fresnel exact|schlick] [--polarisation stokes|none] [--wavelength-bins K] [--orders]
+// [--max-events M] [--fresnel exact|schlick] [--polarisation stokes|none] [--wavelength-bins K] [--diffraction
+// none|fraunhofer] [--orders]
 // --out DIR`.
 CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options);
 

@@ -11,9 +11,9 @@ int rayOrder(const PhotonPath& path) {
     return order.order();
 }
 
-// Choices 1.. of kOrderChoices are unscattered, p0 .. p5+, multiple: the orders -1 .. 6.
+// Choices 1.. of kOrderChoices are unscattered, p0 .. p5+, multiple, diffraction: the orders -1 .. 7.
 const char* orderName(int order) {
-    const int known = std::clamp(order, RayOrder::kUnscattered, RayOrder::kMultipleShapes);
+    const int known = std::clamp(order, RayOrder::kUnscattered, RayOrder::kDiffracted);
     return kOrderChoices[static_cast<std::size_t>(known - RayOrder::kUnscattered + 1)];
 }
 

@@ -21,8 +21,8 @@ struct PathFilter {
     bool operator==(const PathFilter&) const = default;
 };
 
-inline constexpr std::array<const char*, 9> kOrderChoices{"any", "unscattered", "p0",  "p1",      "p2",
-                                                          "p3",  "p4",          "p5+", "multiple"};
+inline constexpr std::array<const char*, 10> kOrderChoices{"any", "unscattered", "p0",  "p1",       "p2",
+                                                           "p3",  "p4",          "p5+", "multiple", "diffraction"};
 
 // A path's ray order as OrderTally counts it (RayOrder of its events). Unlike OrderTally, which counts escapes
 // only, any fate has an order.

@@ -69,6 +69,7 @@ Colour eventColour(EventType type) {
     case EventType::Lost: return {1.00f, 0.20f, 0.75f, 1.0f};       // pink
     case EventType::Detect: return {1.00f, 0.85f, 0.10f, 1.0f};     // yellow
     case EventType::Truncated: return {0.55f, 0.55f, 0.55f, 1.0f};  // grey
+    case EventType::Diffract: return {0.30f, 0.95f, 0.95f, 1.0f};   // cyan
     }
     return {1.0f, 1.0f, 1.0f, 1.0f};
 }

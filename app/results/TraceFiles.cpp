@@ -23,6 +23,7 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
     report.set({"scene"}, info.scenePath);
     report.set({"fresnel"}, std::string(fresnelModelName(info.settings.transport.fresnel)));
     report.set({"polarisation"}, std::string(polarisationModelName(info.settings.transport.polarisation)));
+    report.set({"diffraction"}, std::string(diffractionModelName(info.settings.transport.diffraction)));
     report.set({"max_events"}, static_cast<std::uint64_t>(info.settings.transport.maxEvents));
     report.set({"paths"}, static_cast<std::uint64_t>(result.paths.size()));
     report.set({"sources"}, static_cast<std::uint64_t>(info.sourceCount));
@@ -63,6 +64,7 @@ void writeTraceSummary(const ResultReport& report, std::ostream& out) {
                                                          "bins",
                                                          "fresnel",
                                                          "polarisation",
+                                                         "diffraction",
                                                          "max_events",
                                                          "paths",
                                                          "counts",

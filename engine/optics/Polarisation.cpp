@@ -7,6 +7,15 @@
 
 namespace dropscope {
 
+Eigen::Vector3d turnedReference(const Eigen::Vector3d& reference, const Direction& from, const Direction& to) {
+    // Rodrigues' rotation with w = from x to (|w| = sin t) and c = cos t: v c + w x v + w (w.v) / (1 + c).
+    const Eigen::Vector3d w = from.vector().cross(to.vector());
+    const double c = from.dot(to);
+    const Eigen::Vector3d turned = reference * c + w.cross(reference) + w * (w.dot(reference) / (1.0 + c));
+    // Rounding: perpendicular to `to` and unit again.
+    return (turned - turned.dot(to.vector()) * to.vector()).normalized();
+}
+
 namespace {
 
 // The frame whose parallel axis is `direction` x s: the one frame every beam at an interface shares s with.

@@ -22,6 +22,10 @@ inline Eigen::Vector3d perpendicularAxis(const Eigen::Vector3d& reference, const
     return reference.cross(direction.vector());
 }
 
+// The parallel axis of light turned from `from` to `to` without a change of its state (diffraction): `reference`
+// turned by the rotation about from x to that takes `from` to `to`. `to` must not be -from.
+Eigen::Vector3d turnedReference(const Eigen::Vector3d& reference, const Direction& from, const Direction& to);
+
 // The Stokes vector of the same light in the frame whose parallel axis is `newReference` (unit, also
 // perpendicular to `direction`): I and V are unchanged, (Q, U) turn by twice the angle between the axes.
 StokesVector stokesInFrame(const Polarisation& light, const Direction& direction, const Eigen::Vector3d& newReference);

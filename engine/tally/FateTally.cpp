@@ -24,6 +24,7 @@ void FateTally::score(const Event& event, const TallyContext& photon) {
         ++lostReasons_[static_cast<std::size_t>(event.lostReason)];
         break;
     case EventType::Detect: ++detected_; break;
+    case EventType::Diffract: ++events_.diffract; break;
     case EventType::Truncated: break;  // ray trees only
     }
 }
@@ -54,6 +55,7 @@ void FateTally::report(ResultReport& report) const {
     report.set({"events", "refract"}, events_.refract);
     report.set({"events", "tir"}, events_.tir);
     report.set({"events", "absorb"}, events_.absorb);
+    report.set({"events", "diffract"}, events_.diffract);
     report.set({"counts", "escaped"}, escaped_);
     report.set({"counts", "absorbed"}, absorbed_);
     report.set({"counts", "lost"}, lost_);

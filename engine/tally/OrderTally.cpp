@@ -11,23 +11,33 @@
 namespace dropscope {
 
 void RayOrder::add(const Event& event) {
-    if (event.type != EventType::Reflect && event.type != EventType::Refract && event.type != EventType::Tir) return;
+    const bool diffract = event.type == EventType::Diffract;
+    if (!diffract && event.type != EventType::Reflect && event.type != EventType::Refract &&
+        event.type != EventType::Tir)
+        return;
     if (firstShape_ == RayHit::kNone) firstShape_ = event.shape;
     if (event.shape != firstShape_) severalShapes_ = true;
-    ++eventsAtShape_;
+    if (diffract) {
+        diffracted_ = true;
+    } else {
+        ++eventsAtShape_;
+    }
 }
 
 int RayOrder::order() const {
     if (firstShape_ == RayHit::kNone) return kUnscattered;
     if (severalShapes_) return kMultipleShapes;
+    // A droplet that diffracts a photon is passed as if it were not there: nothing else happens at it.
+    if (diffracted_) return kDiffracted;
     return std::min(eventsAtShape_ - 1, kMaxOrder);
 }
 
-OrderTally::OrderTally(int bins) {
+OrderTally::OrderTally(int bins, bool withDiffraction) : withDiffraction_(withDiffraction) {
     if (bins < 1) throw std::invalid_argument("the number of angular bins must be at least 1");
     const auto count = static_cast<std::size_t>(bins);
     for (auto& column : orders_) column.assign(count, 0);
     multiple_.assign(count, 0);
+    diffracted_.assign(count, 0);
 }
 
 void OrderTally::score(const Event& event, const TallyContext& photon) {
@@ -44,6 +54,8 @@ void OrderTally::score(const Event& event, const TallyContext& photon) {
     const std::size_t bin = angularBinOf(event.direction, photon.state.axis, multiple_.size());
     if (order == RayOrder::kMultipleShapes) {
         ++multiple_[bin];
+    } else if (order == RayOrder::kDiffracted) {
+        ++diffracted_[bin];
     } else {
         ++orders_[static_cast<std::size_t>(order)][bin];
     }
@@ -51,12 +63,16 @@ void OrderTally::score(const Event& event, const TallyContext& photon) {
 
 void OrderTally::merge(const Tally& other) {
     const OrderTally& more = sameTally(*this, other);
-    if (more.bins() != bins()) throw std::logic_error("merging order tallies of different bins");
+    if (more.bins() != bins() || more.withDiffraction_ != withDiffraction_)
+        throw std::logic_error("merging order tallies of different bins");
     photons_ += more.photons_;
     for (std::size_t p = 0; p < kOrderColumns; ++p) {
         for (std::size_t b = 0; b < multiple_.size(); ++b) orders_[p][b] += more.orders_[p][b];
     }
-    for (std::size_t b = 0; b < multiple_.size(); ++b) multiple_[b] += more.multiple_[b];
+    for (std::size_t b = 0; b < multiple_.size(); ++b) {
+        multiple_[b] += more.multiple_[b];
+        diffracted_[b] += more.diffracted_[b];
+    }
 }
 
 std::uint64_t OrderTally::singleTotal() const {
@@ -64,6 +80,7 @@ std::uint64_t OrderTally::singleTotal() const {
     for (const auto& column : orders_) {
         for (std::uint64_t count : column) total += count;
     }
+    for (std::uint64_t count : diffracted_) total += count;
     return total;
 }
 
@@ -95,6 +112,7 @@ void OrderTally::report(ResultReport& report) const {
     static const std::array<std::string, kOrderColumns> kNames{"p0", "p1", "p2", "p3", "p4", "p5_plus"};
     for (std::size_t p = 0; p < kOrderColumns; ++p) table.columns.push_back({kNames[p], shares(orders_[p])});
     table.columns.push_back({"multiple", shares(multiple_)});
+    if (withDiffraction_) table.columns.push_back({"diffraction", shares(diffracted_)});
     report.addTable(std::move(table));
 }
 

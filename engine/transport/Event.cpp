@@ -13,6 +13,7 @@ std::string_view eventTypeName(EventType type) {
     case EventType::Lost: return "lost";
     case EventType::Detect: return "detect";
     case EventType::Truncated: return "truncated";
+    case EventType::Diffract: return "diffract";
     }
     return "?";
 }

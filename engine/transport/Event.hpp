@@ -13,9 +13,10 @@
 
 namespace dropscope {
 
-// What happened to a photon (or a ray-tree branch). `Detect`: it ended on an absorbing detector. `Truncated`
-// only occurs in the ray tree: a branch whose weight fell below the minimum or whose depth reached the maximum.
-enum class EventType { Emit, Reflect, Refract, Tir, Absorb, Escape, Lost, Detect, Truncated };
+// What happened to a photon (or a ray-tree branch). `Detect`: it ended on an absorbing detector. `Diffract`: it
+// passed a droplet and was turned by diffraction where it left it (--diffraction fraunhofer). `Truncated` only
+// occurs in the ray tree: a branch whose weight fell below the minimum or whose depth reached the maximum.
+enum class EventType { Emit, Reflect, Refract, Tir, Absorb, Escape, Lost, Detect, Truncated, Diffract };
 
 // Why a photon was lost: every photon ends escaped, absorbed or lost, and a lost one says why.
 enum class LostReason {
@@ -54,12 +55,14 @@ struct EventCounts {
     std::uint64_t refract = 0;
     std::uint64_t tir = 0;
     std::uint64_t absorb = 0;
+    std::uint64_t diffract = 0;
 
     EventCounts& operator+=(const EventCounts& other) {
         reflect += other.reflect;
         refract += other.refract;
         tir += other.tir;
         absorb += other.absorb;
+        diffract += other.diffract;
         return *this;
     }
     friend bool operator==(const EventCounts&, const EventCounts&) = default;

@@ -1,8 +1,13 @@
 #include "transport/OpticalScene.hpp"
 
+#include "geometry/Ellipsoid.hpp"
+#include "geometry/Sphere.hpp"
 #include "scene/SceneOverlaps.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace dropscope {
 
@@ -17,7 +22,7 @@ std::vector<std::unique_ptr<Shape>> cloneShapes(const Scene& scene) {
 
 }  // namespace
 
-OpticalScene::OpticalScene(const Scene& scene)
+OpticalScene::OpticalScene(const Scene& scene, bool haloes)
     : media_(scene.media),
       wavelengthNm_(scene.wavelengthNm),
       unitInMetres_(scene.unitInMetres),
@@ -36,6 +41,51 @@ OpticalScene::OpticalScene(const Scene& scene)
             absorbingPlanes_.push_back({i, detector, planeFrame(detector)});
         }
     }
+    if (!haloes) return;
+    std::vector<std::unique_ptr<Shape>> rings;
+    for (ShapeId id = 0; id < octree_.slotCount(); ++id) {
+        const Shape* shape = octree_.shape(id);
+        if (!shape) continue;
+        if (shape->kind() == ShapeKind::Sphere) {
+            const auto& sphere = static_cast<const Sphere&>(*shape);
+            rings.push_back(std::make_unique<Sphere>(sphere.center(), std::sqrt(2.0) * sphere.radius()));
+        } else if (shape->kind() == ShapeKind::Ellipsoid) {
+            // Scaled by s about the centre, x.M x = 1 becomes x.(M / s^2) x = 1.
+            const auto& ellipsoid = static_cast<const Ellipsoid&>(*shape);
+            rings.push_back(
+                std::make_unique<Ellipsoid>(Ellipsoid::fromMatrix(ellipsoid.center(), 0.5 * ellipsoid.matrix())));
+        } else {
+            continue;
+        }
+        haloOwners_.push_back(id);
+    }
+    haloes_.emplace(std::move(rings), scene.octree);
+}
+
+std::optional<OpticalScene::HaloPass> OpticalScene::firstHaloPass(const Point& p, const Direction& d, double length,
+                                                                  ShapeId region) const {
+    if (!haloes_) throw std::logic_error("firstHaloPass: the scene was built without haloes");
+    // From halo surface to halo surface along the flight: Octree::firstHit never returns 0, so from a point on a
+    // halo's surface it finds that halo's far side when entering it and the next surface when leaving.
+    Point at = p;
+    double travelled = 0.0;
+    for (std::size_t step = 0; step < 2 * haloOwners_.size() + 2; ++step) {
+        const RayHit hit = haloes_->firstHit(at, d);
+        if (!hit || travelled + hit.distance >= length) return std::nullopt;
+        travelled += hit.distance;
+        at = p + travelled * d.vector();
+        const Shape& halo = *haloes_->shape(hit.shape);
+        const ShapeId droplet = haloOwners_[hit.shape];
+        const Direction normal = halo.normal(at);
+        if (!normal || d.dot(normal) >= 0.0 || parents_[droplet] != region) continue;
+        // Entering the halo: a pass when the flight then misses the droplet itself.
+        const double chord = halo.distanceToSurface(at, d);
+        if (!(chord > 0.0) || !std::isnan(octree_.shape(droplet)->distanceToSurface(at, d))) continue;
+        const double middle = travelled + 0.5 * chord;
+        if (middle < length) return HaloPass{droplet, middle};
+        return std::nullopt;
+    }
+    return std::nullopt;
 }
 
 std::optional<OpticalScene::PlaneHit> OpticalScene::firstAbsorbingPlane(const Point& p, const Direction& d,
@@ -92,9 +142,15 @@ ShapeId OpticalScene::regionAt(const Point& p, const Direction& d) const {
     return region;
 }
 
-double OpticalScene::approachDistance(const Point& p, const Direction& d) const {
+double OpticalScene::approachDistance(const Point& p, const Direction& d, bool haloes) const {
     const std::optional<std::pair<double, double>> span = octree_.rootSpan(p, d);
-    return span ? span->first : 0.0;
+    double approach = span ? span->first : 0.0;
+    // The haloes reach beyond the shapes: a photon must not start its first flight inside one.
+    if (haloes && haloes_) {
+        const std::optional<std::pair<double, double>> haloSpan = haloes_->rootSpan(p, d);
+        if (haloSpan) approach = std::min(approach, haloSpan->first);
+    }
+    return approach;
 }
 
 }  // namespace dropscope

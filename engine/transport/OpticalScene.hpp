@@ -18,8 +18,9 @@ class OpticalScene {
 public:
     static constexpr ShapeId kAmbient = RayHit::kNone;
 
-    // Clones the scene's shapes and finds each one's parent along the octree path of its centre.
-    explicit OpticalScene(const Scene& scene);
+    // Clones the scene's shapes and finds each one's parent along the octree path of its centre. With
+    // `haloes`, also indexes every sphere's and ellipsoid's halo for diffraction (firstHaloPass).
+    explicit OpticalScene(const Scene& scene, bool haloes = false);
 
     const Octree& octree() const { return octree_; }
     const std::vector<Medium>& media() const { return media_; }
@@ -36,8 +37,9 @@ public:
     // surface band heading into the shape it is already inside that shape.
     ShapeId regionAt(const Point& p, const Direction& d) const;
     // How far a ray from p must travel to reach the octree's root cell, outside which there is
-    // nothing but the ambient medium: 0 when p is inside it or the ray misses it.
-    double approachDistance(const Point& p, const Direction& d) const;
+    // nothing but the ambient medium: 0 when p is inside it or the ray misses it. `haloes`: also stop short of
+    // every halo (for diffraction; the scene must have them).
+    double approachDistance(const Point& p, const Direction& d, bool haloes = false) const;
     // The region on the outside of `shape`'s surface.
     ShapeId parentOf(ShapeId shape) const { return parents_[shape]; }
     MediumId mediumIdOf(ShapeId region) const {
@@ -58,6 +60,18 @@ public:
     };
     std::optional<PlaneHit> firstAbsorbingPlane(const Point& p, const Direction& d, double length) const;
 
+    // Diffraction (docs/transport.md, "Diffraction"): a droplet's halo is its body scaled by sqrt 2 about its
+    // centre, so the ring between outline and halo outline is as large as the outline, whatever the direction.
+    // A flight through that ring passes the droplet and is diffracted by it, at the middle of its chord through the
+    // halo. The nearest such pass within (0, length) of a flight from p along d in `region` (only droplets whose
+    // outside is `region` count, and only haloes the flight enters, not one it starts in), if any. Needs haloes.
+    struct HaloPass {
+        ShapeId droplet;
+        double distance;
+    };
+    bool hasHaloes() const { return haloes_.has_value(); }
+    std::optional<HaloPass> firstHaloPass(const Point& p, const Direction& d, double length, ShapeId region) const;
+
 private:
     ShapeId smallestContainer(const Shape& inner, ShapeId innerId) const;
 
@@ -69,6 +83,8 @@ private:
     Octree octree_;
     std::vector<ShapeId> parents_;
     std::vector<AbsorbingPlane> absorbingPlanes_;
+    std::optional<Octree> haloes_;
+    std::vector<ShapeId> haloOwners_;  // the droplet of each halo, by halo id
 };
 
 }  // namespace dropscope

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <stdexcept>
 
 namespace dropscope {
 
@@ -91,12 +93,14 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         }
         return outcome;
     };
+    const bool diffraction = settings.diffraction == DiffractionModel::Fraunhofer;
+    if (diffraction && !scene.hasHaloes()) throw std::logic_error("tracePhoton: diffraction needs a scene with haloes");
     observe(here(EventType::Emit));
 
     // From a distant source, cross the empty ambient up to the scene first, so that hit points are
     // computed from nearby and stay within the surface bands (docs/transport.md).
     if (region == OpticalScene::kAmbient) {
-        const double approach = scene.approachDistance(position, direction);
+        const double approach = scene.approachDistance(position, direction, diffraction);
         if (approach > 0.0) {
             const auto detector = scene.firstAbsorbingPlane(position, direction, approach);
             if (absorbedWithin(detector ? detector->distance : approach)) return outcome;
@@ -105,16 +109,42 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         }
     }
 
+    // Turns the photon by diffraction at the droplet it passes (OpticalScene::firstHaloPass).
+    const auto diffract = [&](ShapeId dropletId) {
+        const Shape& droplet = *scene.octree().shape(dropletId);
+        const double wavelength = wavelengthInUnits(state.wavelengthNm, scene.unitInMetres());
+        const double wavenumber = 2.0 * std::numbers::pi * optics[scene.mediumIdOf(region)].n / wavelength;
+        const Direction turned = diffractedDirection(direction, *projectedOutline(droplet, direction), wavenumber,
+                                                     [&] { return random.uniform(); });
+        if (light) light->reference = turnedReference(light->reference, direction, turned);
+        direction = turned;
+        outcome.metSurface = state.metSurface = true;
+        ++outcome.events.diffract;
+        if (observer) {
+            Event event = here(EventType::Diffract);
+            event.shape = dropletId;
+            observe(event);
+        }
+    };
+
     for (;;) {
         const RayHit hit = scene.octree().firstHit(position, direction);
         double reach = hit ? hit.distance : std::numeric_limits<double>::infinity();
+        const auto halo = diffraction ? scene.firstHaloPass(position, direction, reach, region) : std::nullopt;
+        if (halo) reach = halo->distance;
         // A photon inside a shape with no surface ahead is lost below, never detected beyond it.
-        const auto detector = hit || region == OpticalScene::kAmbient
+        const auto detector = hit || halo || region == OpticalScene::kAmbient
                                   ? scene.firstAbsorbingPlane(position, direction, reach)
                                   : std::nullopt;
         if (detector) reach = detector->distance;
         if (absorbedWithin(reach)) return outcome;
         if (detector) return detect(*detector);
+        if (halo) {
+            fly(halo->distance);
+            if (++state.interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap);
+            diffract(halo->droplet);
+            continue;
+        }
         if (!hit) {
             if (region != OpticalScene::kAmbient) return lose(LostReason::NoExit);
             fly(std::numeric_limits<double>::infinity());

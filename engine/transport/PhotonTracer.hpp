@@ -1,5 +1,6 @@
 #pragma once
 
+#include "transport/DropletDiffraction.hpp"
 #include "transport/Emission.hpp"
 #include "transport/Event.hpp"
 #include "transport/OpticalScene.hpp"
@@ -20,6 +21,7 @@ struct TransportSettings {
     FresnelModel fresnel = FresnelModel::Exact;
     // Stokes needs FresnelModel::Exact; with None every photon reflects with the unpolarised R.
     PolarisationModel polarisation = PolarisationModel::Stokes;
+    DiffractionModel diffraction = DiffractionModel::None;
 };
 
 enum class PhotonFate { Escaped, Absorbed, Lost, Detected };
@@ -44,7 +46,12 @@ struct PhotonOutcome {
 // flight their absorption at it. Observers measure scattering angles from `axis` (PhotonState::axis: the
 // axis of a divergent beam; the emitted direction when absent). An `observer` is told every event, starting
 // with the emission, and (if it wants them) every flight between them. A photon that crosses an absorbing
-// plane detector (on a side it counts) ends there: a Detect event, fate Detected.
+// plane detector (on a side it counts) ends there: a Detect event, fate Detected. With DiffractionModel::Fraunhofer
+// (the scene built with haloes), a photon that passes through the halo of a sphere or an ellipsoid but misses the
+// droplet is turned by an angle drawn from the Airy pattern of the droplet's outline, at the middle of its chord
+// through the halo (a Diffract event); ray optics is unchanged for photons that meet the droplet. The halo's ring
+// is as large as the outline: of the photons of a plane wave that meet a droplet's extinction cross-section (twice
+// its outline), half are diffracted.
 PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonRandom& random,
                           const TransportSettings& settings, PhotonObserver* observer = nullptr,
                           const std::optional<Polarisation>& polarisation = std::nullopt,

@@ -1,6 +1,7 @@
 // `dropscope trace`, run in-process: the three files, their consistency, and bad input.
 #include "app/CliRun.hpp"
 #include "cli/Cli.hpp"
+#include "optics/Diffraction.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -113,18 +114,20 @@ TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
     EXPECT_NE(run.out.find(path("out")), std::string::npos) << run.out;
 
     const Json s = summary();
-    EXPECT_EQ(keysOf(s), (std::vector<std::string>{
-                             "photons",           "seed",    "threads", "seconds",      "fractions", "events",
-                             "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
-                             "max_events",        "paths",   "counts",  "lost_reasons", "sources",   "wavelength_nm",
-                             "wavelength_bins",   "spectra", "budget",  "version"}));
+    EXPECT_EQ(
+        keysOf(s),
+        (std::vector<std::string>{
+            "photons", "seed",   "threads",      "seconds", "fractions",     "events",          "photons_requested",
+            "partial", "scene",  "bins",         "fresnel", "polarisation",  "diffraction",     "max_events",
+            "paths",   "counts", "lost_reasons", "sources", "wavelength_nm", "wavelength_bins", "spectra",
+            "budget",  "version"}));
     EXPECT_EQ(s["version"], "0.1.0");
     EXPECT_EQ(keysOf(s["fractions"]),
               (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered", "detected"}));
     EXPECT_EQ(keysOf(s["counts"]),
               (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered", "detected"}));
     EXPECT_EQ(keysOf(s["budget"]), (std::vector<std::string>{"photons", "escaped", "absorbed", "detected", "lost"}));
-    EXPECT_EQ(keysOf(s["events"]), (std::vector<std::string>{"reflect", "refract", "tir", "absorb"}));
+    EXPECT_EQ(keysOf(s["events"]), (std::vector<std::string>{"reflect", "refract", "tir", "absorb", "diffract"}));
     EXPECT_EQ(keysOf(s["lost_reasons"]),
               (std::vector<std::string>{"event_cap", "undefined_normal", "medium_mismatch", "no_exit"}));
     EXPECT_EQ(s["wavelength_nm"], 532.0);
@@ -489,6 +492,35 @@ double sum(const std::vector<double>& values) {
     double total = 0.0;
     for (double v : values) total += v;
     return total;
+}
+
+// A water drop of radius 0.05 mm in a beam of radius 0.08 mm: with diffraction a ring as large as the drop's outline
+// diffracts (0.05^2 / 0.08^2 of the photons), into angles of about lambda / (2 a), the "diffraction" column.
+TEST_F(TraceCommand, FraunhoferDiffractionDiffractsTheRingAroundTheDrop) {
+    std::ofstream(path("scene.json")) << R"({"dropscope": 1, "unit": "mm", "wavelength_nm": 532, "ambient": "air",
+        "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.05, "medium": "water"}],
+        "sources": [{"type": "beam", "origin": [0, 0, -1], "direction": [0, 0, 1], "radius": 0.08}]})";
+    const CliRun run = trace(path("scene.json"), "20000", {"--orders", "--diffraction", "fraunhofer", "--bins", "90"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    const Json s = summary();
+    EXPECT_EQ(s["diffraction"], "fraunhofer");
+    const double ring = 0.05 * 0.05 / (0.08 * 0.08);
+    EXPECT_NEAR(s["events"]["diffract"].get<double>() / 20000.0, ring, 5.0 * std::sqrt(ring * (1 - ring) / 20000.0));
+    EXPECT_NEAR(s["fractions"]["unscattered"].get<double>(), 1.0 - 2.0 * ring, 0.02);
+    const std::vector<std::string> orders = lines(path("out/angular_orders.csv"));
+    EXPECT_EQ(orders.front(), "theta_lo_deg,theta_hi_deg,p0,p1,p2,p3,p4,p5_plus,multiple,diffraction");
+    const std::vector<double> diffracted = csvColumn(orders, 9);
+    // The first 2-degree bin holds the Airy pattern's encircled energy out to u = x sin(2 degrees), x = 590.5 (the
+    // first dark ring is at 0.37 degrees; the tail 1 - F ~ 2 / (pi u) leaves 3 % beyond).
+    const double x = 2.0 * std::numbers::pi * 0.05 / 532e-6;
+    const double inFirstBin =
+        airyEncircledEnergy(x * std::sin(2.0 * std::numbers::pi / 180.0)) / airyEncircledEnergy(x);
+    EXPECT_NEAR(diffracted[0] / sum(diffracted), inFirstBin, 0.01);
+
+    const CliRun bad = trace(path("scene.json"), "10", {"--diffraction", "mie"}, "bad");
+    EXPECT_EQ(bad.status, kExitBadInput);
+    EXPECT_NE(bad.err.find("--diffraction"), std::string::npos) << bad.err;
 }
 
 TEST_F(TraceCommand, DetectorsWriteTheirFilesAndTheBudgetAddsUp) {

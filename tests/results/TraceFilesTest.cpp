@@ -73,9 +73,9 @@ TEST(TraceFiles, SummaryKeysComeInTheDocumentedOrder) {
     const nlohmann::ordered_json json = nlohmann::ordered_json::parse(summary.str());
     for (const auto& item : json.items()) keys.push_back(item.key());
     const std::vector<std::string> documented{
-        "photons",           "seed",    "threads", "seconds",      "fractions", "events",
-        "photons_requested", "partial", "scene",   "bins",         "fresnel",   "polarisation",
-        "max_events",        "paths",   "counts",  "lost_reasons", "sources",   "version"};
+        "photons", "seed",   "threads",      "seconds", "fractions",    "events",      "photons_requested",
+        "partial", "scene",  "bins",         "fresnel", "polarisation", "diffraction", "max_events",
+        "paths",   "counts", "lost_reasons", "sources", "version"};
     EXPECT_EQ(keys, documented);
 }
 

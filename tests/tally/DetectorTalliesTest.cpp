@@ -178,6 +178,33 @@ TEST(OrderTally, RayOrderIsEventsAtTheOneShapeMetLessOne) {
                                                "multiple"}));
 }
 
+// A droplet that diffracts a photon is met by it: alone it is the "diffraction" column, with another shape multiple.
+TEST(OrderTally, DiffractedPhotonsHaveTheirOwnColumnInSingleScattering) {
+    OrderTally tally(180, true);
+    const Direction back(0, 0, -1);
+    std::vector<Photon> photons(3, Photon{{{Point::Zero(), Direction(0, 0, 1)}}, {}});
+    photons[0].events = {event(EventType::Emit), event(EventType::Diffract, 3), event(EventType::Escape)};
+    photons[1].events = {event(EventType::Emit), event(EventType::Diffract, 3), event(EventType::Reflect, 4),
+                         event(EventType::Escape, RayHit::kNone, back)};
+    photons[2].events = {event(EventType::Emit), event(EventType::Refract, 4), event(EventType::Refract, 4),
+                         event(EventType::Escape)};
+    for (std::size_t i = 0; i < photons.size(); ++i) score(tally, i, photons[i]);
+    EXPECT_EQ(tally.diffracted()[0], 1u);
+    EXPECT_EQ(tally.multiple()[179], 1u);
+    EXPECT_EQ(tally.order(1)[0], 1u);
+    EXPECT_EQ(tally.singleTotal(), 2u);
+    ResultReport report;
+    tally.report(report);
+    const ResultTable* table = report.table("angular_orders");
+    ASSERT_TRUE(table);
+    EXPECT_EQ(table->columns.back().name, "diffraction");
+    EXPECT_EQ(std::get<std::vector<double>>(table->columns.back().values)[0], 1.0 / 3.0);
+    // Without diffraction the table keeps its nine columns.
+    ResultReport plain;
+    OrderTally(180).report(plain);
+    EXPECT_EQ(plain.table("angular_orders")->columns.size(), 9u);
+}
+
 // results.h5 records each column's unit (docs/results-format.md): the angle tables state theirs alike.
 TEST(OrderTally, AngleColumnsHaveTheUnitsOfAngularCsv) {
     ResultReport report;
