@@ -20,6 +20,7 @@ void addScaled(std::vector<double>& sum, const std::vector<double>& values, doub
 // into its own slot (on OpenMP threads) and the slots are summed in order, so the result does not
 // depend on the thread count.
 MieResult averageOverSizes(std::complex<double> m, const std::vector<double>& sizes, std::size_t bins) {
+    if (sizes.size() == 1) return mieSphere(m, sizes.front(), bins);  // exactly the sphere, not x^2 Q / x^2
     std::vector<MieResult> each(sizes.size());
     const auto count = static_cast<std::ptrdiff_t>(sizes.size());
 #pragma omp parallel for schedule(dynamic)
