@@ -90,7 +90,8 @@ MieAngularBins mieAngularBins(const MieCoefficients& coefficients, std::size_t b
     // Per bin: (2 / x^2) * integral of S_ij sin theta d theta = integral over the solid angle / (pi x^2).
     const double scale = 2.0 / (x * x) * 0.5 * panelWidth;
 
-#pragma omp parallel for schedule(dynamic)
+    const double work = static_cast<double>(nodes * bins * series.order.size());
+#pragma omp parallel for schedule(dynamic) if (work > mie::kParallelTermEvaluations)
     for (std::size_t bin = 0; bin < bins; ++bin) {
         const double binStart = static_cast<double>(bin) * width;
         std::array<double, 4> total{};
