@@ -56,7 +56,8 @@ MieMueller mieMueller(const MieAmplitudes& amplitudes);
 // The angular distribution in `bins` equal bins of theta over [0, 180] degrees: per bin, the integral of
 // S11, S12, S33 and S34 over the bin's solid angle divided by pi x^2, i.e. the power scattered into the
 // bin per unit power incident on the geometric cross-section. The `fraction` column adds up to Q_sca.
-// The bin integrals are accurate however fast S11 oscillates (period about pi / x).
+// The bin integrals are accurate however fast S11 oscillates (period about pi / x): Gauss-Legendre in theta
+// with nodes in proportion to x times the bin width (docs/mie.md, "Angular bins"). bins = 0 gives empty columns.
 struct MieAngularBins {
     std::vector<double> fraction;  // integral of S11
     std::vector<double> s12;
@@ -75,18 +76,23 @@ struct MieResult {
     std::size_t sizes = 1;  // how many size parameters were evaluated
 };
 
+// bins = 0: the efficiencies alone.
 MieResult mieSphere(std::complex<double> m, double x, std::size_t bins);
 
-// Uniform in x over [xLo, xHi] by `count` midpoints (count >= 1).
+// Uniform in x over [xLo, xHi] by `count` midpoints (count >= 1, xLo <= xHi, both in the valid range). One
+// size (count = 1 or xLo = xHi) gives exactly mieSphere of the midpoint. Sizes run on OpenMP threads, and the
+// result does not depend on their number.
 MieResult mieAverageOverSizeParameter(std::complex<double> m, double xLo, double xHi, std::size_t count,
                                       std::size_t bins);
 
-// The default count for mieAverageOverSizeParameter: enough to sample the ripple (docs/mie.md).
+// The default count for mieAverageOverSizeParameter: enough to sample the ripple, one size per 0.1 of x, at
+// least 1 and at most 1000 (docs/mie.md, "Averages").
 std::size_t defaultSizeParameterCount(double xLo, double xHi);
 
 // Over a cloud's radius distribution (by count), with x = wavenumber * r (wavenumber = 2 pi n_ambient /
-// lambda in the radii's unit). Throws std::invalid_argument when a radius of the distribution gives x
-// outside the valid range.
+// lambda in the radii's unit), sampled at probability midpoints through RadiusDistribution::quantile: one
+// per 0.1 of x between its 1e-3 and 1 - 1e-3 quantiles, at least 32; a fixed distribution is one size, exactly
+// mieSphere. Throws std::invalid_argument when a sampled radius gives x outside the valid range.
 MieResult mieAverageOverRadii(std::complex<double> m, const RadiusDistribution& radii, double wavenumber,
                               std::size_t bins);
 
