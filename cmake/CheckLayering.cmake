@@ -16,6 +16,7 @@ set(layers
     "3|optics|engine/optics"
     "4|scene|engine/scene"
     "5|transport|engine/transport"
+    "5|wave|engine/wave"
     "6|tally|engine/tally"
     "7|run|engine/run"
     "8|edit|engine/edit"
@@ -38,6 +39,7 @@ set(forbidden_tree "${no_ui}")
 set(forbidden_optics "${no_ui}")
 set(forbidden_scene "${no_ui}")
 set(forbidden_transport "${no_ui}")
+set(forbidden_wave "${no_ui}")
 set(forbidden_tally "${no_ui}")
 set(forbidden_run "${no_ui}")
 set(forbidden_edit "${no_ui}")

@@ -151,7 +151,14 @@ void RadiusDistribution::truncate() {
 
 double RadiusDistribution::sample(RandomStream& random) const {
     if (kind_ == Kind::Fixed) return location_;
-    const double u = random.openUniform();
+    return quantile(random.openUniform());
+}
+
+double RadiusDistribution::quantile(double u) const {
+    if (!(u > 0.0 && u < 1.0)) {
+        throw std::invalid_argument("probability " + jsonpath::number(u) + " is outside the open interval 0..1");
+    }
+    if (kind_ == Kind::Fixed) return location_;
     if (kind_ == Kind::Uniform) {
         const double offset = u * spread_;
         return std::clamp(location_ + offset, min_, max_);

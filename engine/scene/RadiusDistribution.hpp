@@ -25,7 +25,11 @@ public:
     // Weibull in radius by count: P(R <= r) = 1 - exp(-(r/scale)^shape), truncated to [min, max].
     static RadiusDistribution rosinRammler(double scale, double shape, double min = 0.0, double max = kUnbounded);
 
+    // quantile(u) of one RandomStream::openUniform() draw u; a fixed distribution draws nothing.
     double sample(RandomStream& random) const;
+    // The radius below which a share p (0 < p < 1) of the radii fall, under the truncation: the inverse CDF
+    // that sample() evaluates, so sample() == quantile(the same draw) bit for bit.
+    double quantile(double p) const;
 
     // Bounds every sample honours (min 0 and max infinity when not truncated).
     double min() const { return min_; }

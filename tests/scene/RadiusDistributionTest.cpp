@@ -200,5 +200,38 @@ TEST(RadiusDistribution, TruncationKeepingAlmostNothingIsRefused) {
     EXPECT_NO_THROW(RadiusDistribution::rosinRammler(1.0, 2.0, 0.0, 1e-2));
 }
 
+// sample() is quantile() of the stream's next openUniform() draw, bit for bit, for every kind and truncation
+// (the Mie averages read the distribution through quantile(), docs/mie.md); a fixed one draws nothing.
+TEST(RadiusDistribution, SampleIsTheQuantileOfTheSameDraw) {
+    const RadiusDistribution distributions[] = {
+        RadiusDistribution::uniform(0.5, 2.0),
+        RadiusDistribution::lognormal(1.0, 0.5),
+        RadiusDistribution::lognormal(1.0, 0.5, 0.8, 1.5),
+        RadiusDistribution::lognormal(1.0, 0.5, std::exp(4.0 * 0.5)),
+        RadiusDistribution::rosinRammler(0.02, 2.0),
+        RadiusDistribution::rosinRammler(0.02, 2.0, 0.04, 0.06),
+    };
+    for (const RadiusDistribution& distribution : distributions) {
+        RandomStream sampled(7, 3);
+        RandomStream drawn(7, 3);
+        for (int i = 0; i < 1000; ++i) {
+            const double radius = distribution.sample(sampled);
+            ASSERT_EQ(radius, distribution.quantile(drawn.openUniform())) << i;
+        }
+    }
+    RandomStream untouched(7, 3);
+    RandomStream reference(7, 3);
+    EXPECT_EQ(RadiusDistribution::fixed(2.5).sample(untouched), 2.5);
+    EXPECT_EQ(RadiusDistribution::fixed(2.5).quantile(0.3), 2.5);
+    EXPECT_EQ(untouched.openUniform(), reference.openUniform());
+    EXPECT_THROW(RadiusDistribution::uniform(1.0, 2.0).quantile(1.0), std::invalid_argument);
+    EXPECT_THROW(RadiusDistribution::uniform(1.0, 2.0).quantile(0.0), std::invalid_argument);
+    // The quantile is monotone and honours the truncation at its ends.
+    const RadiusDistribution truncated = RadiusDistribution::lognormal(1.0, 0.5, 0.8, 1.5);
+    EXPECT_GE(truncated.quantile(1e-12), 0.8);
+    EXPECT_LE(truncated.quantile(1.0 - 1e-12), 1.5);
+    EXPECT_LT(truncated.quantile(0.25), truncated.quantile(0.75));
+}
+
 }  // namespace
 }  // namespace dropscope
