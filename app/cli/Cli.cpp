@@ -2,6 +2,7 @@
 
 #include "cli/BadInput.hpp"
 #include "cli/InspectCommand.hpp"
+#include "cli/MieCommand.hpp"
 #include "cli/QueryCommand.hpp"
 #include "cli/RayCsv.hpp"
 #include "cli/SnapshotCommand.hpp"
@@ -61,6 +62,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         const CLI::App* trace = addTraceCommand(app, traceOptions);
         SnapshotCommandOptions snapshotOptions;
         const CLI::App* snapshot = addSnapshotCommand(app, snapshotOptions);
+        MieOptions mieOptions;
+        const CLI::App* mie = addMieCommand(app, mieOptions);
         if (const auto message = unknownCommand(app, argc, argv)) return reportUsageError(*message, err);
         try {
             app.parse(argc, argv);
@@ -77,6 +80,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         if (query->parsed()) return runQuery(queryOptions, out, err);
         if (trace->parsed()) return runTraceCommand(traceOptions, out, err);
         if (snapshot->parsed()) return runSnapshotCommand(snapshotOptions, out, err);
+        if (mie->parsed()) return runMieCommand(mieOptions, out);
         // No subcommand (main.cpp opens the app when there are no arguments at all).
         out << app.help();
         err << "dropscope: no command given (see the commands above)\n";

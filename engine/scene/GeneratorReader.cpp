@@ -162,6 +162,7 @@ void readGenerators(const JsonReader& generators, Scene& scene) {
         const DropletCloudSpec spec = readDropletCloudSpec(json, budget, generated);
         const MediumId medium = readMediumName(json.member("medium"), scene.media);
         const std::vector<Droplet> droplets = runDropletCloud(json, spec, scene, budget);
+        scene.generators.push_back({spec.radius, medium, scene.shapes.size(), droplets.size()});
         scene.shapes.reserve(scene.shapes.size() + droplets.size());
         scene.shapeNames.resize(scene.shapeNames.size() + droplets.size());
         for (const Droplet& droplet : droplets) {

@@ -3,6 +3,7 @@
 #include "geometry/Shape.hpp"
 #include "scene/Detector.hpp"
 #include "scene/Medium.hpp"
+#include "scene/RadiusDistribution.hpp"
 #include "scene/SceneView.hpp"
 #include "scene/Source.hpp"
 #include "tree/OctreeTypes.hpp"
@@ -13,6 +14,15 @@
 #include <vector>
 
 namespace dropscope {
+
+// What one entry of "generators" made: its droplets are shapes[firstShape, firstShape + count), all of `medium`,
+// their radii drawn from `radius` (dropscope mie --generator averages over it).
+struct GeneratedCloud {
+    RadiusDistribution radius;
+    MediumId medium = 0;
+    std::size_t firstShape = 0;
+    std::size_t count = 0;
+};
 
 // Everything a scene file describes (docs/scene-format.md). Shape ids are indices into `shapes`:
 // the explicit shapes of "shapes" first, then those of "generators", in generator order.
@@ -25,8 +35,9 @@ struct Scene {
     MediumId ambient = 0;  // index into media
     std::vector<Medium> media;
     std::vector<std::unique_ptr<Shape>> shapes;
-    std::vector<std::string> shapeNames;  // parallel to shapes; empty when unnamed (always for generated)
-    std::size_t explicitShapeCount = 0;   // shapes[0, explicitShapeCount) come from "shapes"
+    std::vector<std::string> shapeNames;     // parallel to shapes; empty when unnamed (always for generated)
+    std::size_t explicitShapeCount = 0;      // shapes[0, explicitShapeCount) come from "shapes"
+    std::vector<GeneratedCloud> generators;  // in file order
     std::vector<Source> sources;
     std::vector<Detector> detectors;  // scene key "detectors" (docs/detectors.md)
     OctreeSettings octree;            // scene key "octree"
