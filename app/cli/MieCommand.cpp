@@ -10,6 +10,7 @@
 #include "scene/SceneLoader.hpp"
 #include "tally/AngularTally.hpp"
 #include "wave/Mie.hpp"
+#include "wave/SceneMie.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -79,10 +80,6 @@ MieProblem sceneProblem(const MieOptions& options) {
     const Scene scene = loadScene(options.scenePath);
     const std::string& file = options.scenePath;
     const Medium& ambient = scene.media.at(scene.ambient);
-    if (ambient.absorptionPerUnit > 0.0) {
-        throw BadInputError(file + ": the ambient medium \"" + ambient.name +
-                            "\" absorbs; Lorenz-Mie theory here needs a clear ambient");
-    }
     MieProblem problem;
     const Medium* medium = nullptr;
     std::size_t sphereCount = 0;
@@ -106,8 +103,7 @@ MieProblem sceneProblem(const MieOptions& options) {
                                 " generators; choose one with --shape ID or --generator I");
         }
     }
-    const double wavelength = scene.wavelengthInSceneUnits();
-    problem.wavenumber = 2.0 * std::numbers::pi * ambient.n / wavelength;
+    problem.wavenumber = sceneWavenumber(scene);
     double radius = 0.0;
     if (shapeId) {
         if (*shapeId >= scene.shapes.size()) {
@@ -139,9 +135,11 @@ MieProblem sceneProblem(const MieOptions& options) {
         problem.radii = cloud.radius;
         problem.context.set({"generator"}, static_cast<std::uint64_t>(*generator));
     }
-    // kappa from the medium's absorption at the scene wavelength: sigma = 4 pi kappa / lambda.
-    const double kappa = medium->absorptionPerUnit * wavelength / (4.0 * std::numbers::pi);
-    problem.m = std::complex<double>(medium->n, kappa) / ambient.n;
+    try {
+        problem.m = relativeIndexInScene(scene, *medium);
+    } catch (const std::invalid_argument& error) {
+        throw BadInputError(file + ": " + error.what());
+    }
     problem.context.set({"scene"}, file);
     problem.context.set({"wavelength_nm"}, scene.wavelengthNm);
     problem.context.set({"medium"}, medium->name);

@@ -30,6 +30,10 @@ constexpr std::uint64_t kMaxPaths = 100'000;
 // Wavelength bands of the Results plot: 180 angular bins each, so kept to a few dozen curves.
 constexpr int kMaxWavelengthBins = 24;
 constexpr float kBinsFieldWidth = 150.0f;
+constexpr const char* kDiffractionHelp =
+    "Fraunhofer diffraction (trace --diffraction fraunhofer): spheres and ellipsoids also diffract the photons\n"
+    "passing close by (a ring as large as their outline) into their Airy pattern, so a droplet's extinction\n"
+    "is twice its cross-section and the forward peak of Mie theory appears; paths show 'diffract' events";
 constexpr const char* kWavelengthBinsHelp =
     "bands of equal width over the sources' wavelengths, each with its angular distribution in the\n"
     "Results plot (angular_spectral.csv's bands); 1, or light of one wavelength: none";
@@ -128,6 +132,9 @@ void fireControls(AppState& state) {
     fire.wavelengthBins = std::clamp(fire.wavelengthBins, 1, kMaxWavelengthBins);
     reportItemRect(state.ui.itemProbe, "wavelength bins");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kWavelengthBinsHelp);
+    ImGui::Checkbox("diffraction", &fire.diffraction);
+    reportItemRect(state.ui.itemProbe, "diffraction");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kDiffractionHelp);
     ImGui::Checkbox("live: trace again when the scene changes", &fire.live);
     if (ImGui::Button("Fire photons (Space)")) fireTrace(state);
     ImGui::SameLine();

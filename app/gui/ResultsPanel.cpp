@@ -16,6 +16,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -55,7 +56,45 @@ plot::SubPlot bandsSubPlot(const SpectralAngularTally& spectral, const std::vect
 // below it the same per band (bandsSubPlot); with polarisation, below those the degree of linear
 // polarisation and -Q/I in the scattering-plane frame (> 0 polarised across the plane; named -P12/P11 when
 // every source is unpolarised, which it then is) (NaN, not drawn, in empty bins).
-plot::Figure angularFigure(const TallySet& tallies, bool unpolarisedSources) {
+// The traced photons' share in each angular bin that was scattered: angular.csv's fraction less the unscattered
+// photons, which escape along the axis into the first bin.
+std::vector<double> scatteredShares(const TallySet& tallies) {
+    std::vector<double> shares = tallies.get<AngularTally>().columns().fraction;
+    const FateTally& fates = tallies.get<FateTally>();
+    if (!shares.empty() && fates.photons() > 0) {
+        shares[0] -= static_cast<double>(fates.unscattered()) / static_cast<double>(fates.photons());
+    }
+    return shares;
+}
+
+double solidAngleOfBin(std::size_t bin, std::size_t bins) {
+    const double lo = std::numbers::pi * static_cast<double>(bin) / static_cast<double>(bins);
+    const double hi = std::numbers::pi * static_cast<double>(bin + 1) / static_cast<double>(bins);
+    return 2.0 * std::numbers::pi * (std::cos(lo) - std::cos(hi));
+}
+
+// Mie theory's curves for the angular plot in the traced curve's units: its phase function times the traced
+// share that was scattered (so the two match where ray optics is right), and -P12/P11 (unpolarised light).
+void addMieCurves(plot::Figure& figure, const TallySet& tallies, const MieResult& mie,
+                  const std::vector<double>& centres, bool polarisation) {
+    const std::vector<double> traced = scatteredShares(tallies);
+    double scattered = 0.0;
+    for (double share : traced) scattered += share;
+    const std::vector<double>& fraction = mie.bins.fraction;
+    if (fraction.size() != centres.size() || !(mie.efficiencies.qsca > 0.0)) return;
+    std::vector<double> perSteradian;
+    std::vector<double> ratio;
+    for (std::size_t bin = 0; bin < fraction.size(); ++bin) {
+        perSteradian.push_back(fraction[bin] / mie.efficiencies.qsca * scattered /
+                               solidAngleOfBin(bin, fraction.size()));
+        ratio.push_back(fraction[bin] > 0.0 ? -mie.bins.s12[bin] / fraction[bin] : std::nan(""));
+    }
+    const std::array<float, 3> mieColour{0.95f, 0.35f, 0.35f};
+    figure.subPlots[0].curves.push_back({"Mie theory", centres, std::move(perSteradian), mieColour});
+    if (polarisation) figure.subPlots.back().curves.push_back({"Mie -P12/P11", centres, std::move(ratio), mieColour});
+}
+
+plot::Figure angularFigure(const TallySet& tallies, bool unpolarisedSources, const MieResult* mie) {
     const AngularTally& angular = tallies.get<AngularTally>();
     const AngularTally::Columns columns = angular.columns();
     std::vector<double> centres;
@@ -67,7 +106,10 @@ plot::Figure angularFigure(const TallySet& tallies, bool unpolarisedSources) {
         {"escaped fraction per sr", {{"fraction per sr", centres, columns.perSteradian}}, plot::Scale::Log, {}});
     const auto* spectral = tallies.find<SpectralAngularTally>();
     if (spectral && spectral->wavelengths().count > 1) figure.subPlots.push_back(bandsSubPlot(*spectral, centres));
-    if (!angular.stokes()) return figure;
+    if (!angular.stokes()) {
+        if (mie) addMieCurves(figure, tallies, *mie, centres, false);
+        return figure;
+    }
     std::vector<double> ratio;
     std::vector<double> dolp;
     for (std::size_t bin = 0; bin < centres.size(); ++bin) {
@@ -82,7 +124,76 @@ plot::Figure angularFigure(const TallySet& tallies, bool unpolarisedSources) {
          {{"DoLP", centres, std::move(dolp)}, {unpolarisedSources ? "-P12/P11" : "-Q/I", centres, std::move(ratio)}},
          plot::Scale::Linear,
          plot::AxisRange{-1.0, 1.0}});
+    if (mie) addMieCurves(figure, tallies, *mie, centres, unpolarisedSources);
     return figure;
+}
+
+// Bands of the scattering angle where ray optics and Mie theory are compared (docs/validation.md, "Ray optics with
+// diffraction against Mie theory"), in degrees.
+constexpr std::array<std::array<double, 2>, 8> kMieBands{
+    {{0, 1}, {1, 5}, {5, 15}, {15, 60}, {60, 130}, {130, 139}, {139, 150}, {150, 180}}};
+
+// The traced light against Mie theory: one line (x, Q_sca, g of both) and, folded, the ratio of the traced
+// phase function to Mie's in each band. Both are normalised to their scattered light, so the comparison holds
+// for any beam; a cloud's multiple scattering is in the traced light and not in Mie's.
+void drawMieComparison(const TraceOutcome& outcome, const ItemProbe& probe) {
+    if (!outcome.mie || !outcome.mieSpheres) {
+        if (!outcome.mieNote.empty()) probedText(probe, "mie summary", "Mie theory: none (" + outcome.mieNote + ")");
+        return;
+    }
+    const MieResult& mie = *outcome.mie;
+    const std::vector<double> traced = scatteredShares(outcome.result.tallies);
+    const std::size_t bins = traced.size();
+    if (mie.bins.fraction.size() != bins) return;
+    double tracedTotal = 0.0;
+    double tracedCos = 0.0;
+    for (std::size_t bin = 0; bin < bins; ++bin) {
+        tracedTotal += traced[bin];
+        tracedCos +=
+            traced[bin] * std::cos(std::numbers::pi * (static_cast<double>(bin) + 0.5) / static_cast<double>(bins));
+    }
+    const SphereSceneMie& spheres = *outcome.mieSpheres;
+    char text[200];
+    const double x = mie.xMean;
+    std::snprintf(text, sizeof text, "Mie: %s, x %.4g, m %.4g%+.2gi; Q_sca %.4f, g %.4f (traced %.4f)",
+                  spheres.spheres == 1 ? "one sphere" : (std::to_string(spheres.spheres) + " spheres").c_str(), x,
+                  spheres.m.real(), spheres.m.imag(), mie.efficiencies.qsca, mie.efficiencies.g,
+                  tracedTotal > 0.0 ? tracedCos / tracedTotal : std::nan(""));
+    probedText(probe, "mie summary", text);
+    if (!ImGui::TreeNode("traced / Mie by band")) return;
+    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg;
+    if (ImGui::BeginTable("mie bands", 4, flags)) {
+        for (const char* header : {"band (deg)", "traced", "Mie", "traced / Mie"}) ImGui::TableSetupColumn(header);
+        ImGui::TableHeadersRow();
+        std::string ratios;
+        for (const auto& band : kMieBands) {
+            double tracedShare = 0.0;
+            double mieShare = 0.0;
+            for (std::size_t bin = 0; bin < bins; ++bin) {
+                const double centre = 180.0 * (static_cast<double>(bin) + 0.5) / static_cast<double>(bins);
+                if (centre < band[0] || centre >= band[1]) continue;
+                tracedShare += traced[bin];
+                mieShare += mie.bins.fraction[bin];
+            }
+            tracedShare /= tracedTotal;
+            mieShare /= mie.efficiencies.qsca;
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::Text("%g-%g", band[0], band[1]);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.5f", tracedShare);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.5f", mieShare);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", tracedShare / mieShare);
+            char ratio[32];
+            std::snprintf(ratio, sizeof ratio, "%s%.3f", ratios.empty() ? "" : " ", tracedShare / mieShare);
+            ratios += ratio;
+        }
+        ImGui::EndTable();
+        probedText(probe, "mie band ratios", ratios);
+    }
+    ImGui::TreePop();
 }
 
 // Escapes per steradian of each ray order (OrderTally) as a fraction of the photons traced, at the angular
@@ -239,6 +350,7 @@ void drawResultsPanel(TraceState& traces, UiState& ui) {
             } else {
                 ImGui::TextDisabled("angular distribution, %d bins", result.tallies.get<AngularTally>().bins());
             }
+            drawMieComparison(traces.trace->outcome, ui.itemProbe);
         } else if (!traces.partial) {
             ImGui::TextDisabled("no trace yet: fire photons (Space)");
         }
@@ -258,8 +370,9 @@ void drawResultsPanel(TraceState& traces, UiState& ui) {
         const bool unpolarised = std::all_of(sources.begin(), sources.end(), [](const Source& source) {
             return source.polarisation.kind == PolarisationKind::Unpolarised;
         });
-        drawPlotWindow(angularFigure(traces.trace->outcome.result.tallies, unpolarised), plotState, ui.status,
-                       ui.itemProbe);
+        const TraceOutcome& outcome = traces.trace->outcome;
+        drawPlotWindow(angularFigure(outcome.result.tallies, unpolarised, outcome.mie ? &*outcome.mie : nullptr),
+                       plotState, ui.status, ui.itemProbe);
     }
 }
 

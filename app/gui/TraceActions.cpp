@@ -13,7 +13,8 @@ namespace dropscope::gui {
 namespace {
 
 TracedWith tracedNow(const AppState& state) {
-    return {state.scene.document().revision(), state.traces.fire.polarisation, state.traces.fire.wavelengthBins};
+    return {state.scene.document().revision(), state.traces.fire.polarisation, state.traces.fire.wavelengthBins,
+            state.traces.fire.diffraction};
 }
 
 // The fire settings' bands over the sources' wavelengths; none for one band or light of one wavelength.
@@ -34,6 +35,7 @@ void startTrace(AppState& state, bool automatic) {
     settings.paths = std::min(traces.fire.paths, settings.photons);
     settings.seed = traces.fire.seed;
     settings.transport.polarisation = traces.fire.polarisation;
+    settings.transport.diffraction = traces.fire.diffraction ? DiffractionModel::Fraunhofer : DiffractionModel::None;
     std::vector<ShapeId> slots;
     Scene scene = document.toScene(&slots);
     traces.pendingSlots = std::move(slots);

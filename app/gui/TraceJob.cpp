@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <future>
 #include <utility>
+#include <variant>
 
 namespace dropscope::gui {
 
@@ -22,6 +24,18 @@ constexpr double kBatchSeconds = 0.5;
 constexpr std::uint64_t kFirstBatch = 2048;
 // The angular bins of the angular distribution and the ray orders.
 constexpr int kAngularBins = 180;
+// Seconds of Mie theory a trace may spend beside its photons, and at most this many sizes for a cloud: a live
+// trace restarted by an edit waits for it. One size of x = 1000 in 180 bins takes about 15 ms, growing as x^2
+// (docs/performance.md, "Mie"); a sphere larger than the budget is still computed, alone.
+constexpr double kMieSeconds = 0.5;
+constexpr double kMieSecondsAtX1000 = 0.015;
+constexpr std::size_t kMaxMieSizes = 200;
+
+// How many of the cloud's sizes (largest x `largest`) the app averages Mie theory over.
+std::size_t mieSizeBudget(double largest) {
+    const double perSize = kMieSecondsAtX1000 * std::max(largest / 1000.0, 0.1) * std::max(largest / 1000.0, 0.1);
+    return std::clamp<std::size_t>(static_cast<std::size_t>(kMieSeconds / perSize), 1, kMaxMieSizes);
+}
 
 // What the app counts: standardTallies, the ray orders and the scene's detectors with the energy budget.
 TallySet appTallies(const Scene& scene, PolarisationModel polarisation, const std::optional<WavelengthBins>& bands) {
@@ -92,11 +106,39 @@ void TraceJob::joinWorker() {
     if (worker_.joinable()) worker_.join();
 }
 
+void TraceJob::solveMie(const Scene& scene, TraceOutcome& outcome) {
+    try {
+        auto spheres = sphereSceneMie(scene);
+        if (const auto* why = std::get_if<std::string>(&spheres)) {
+            outcome.mieNote = *why;
+            return;
+        }
+        SphereSceneMie& found = std::get<SphereSceneMie>(spheres);
+        found.sizes = sizeSample(found.sizes, mieSizeBudget(found.sizes.back()));
+        if (!mieCache_ || mieCache_->first.m != found.m || mieCache_->first.sizes != found.sizes) {
+            mieCache_.reset();
+            mieCache_.emplace(found, mieAverageOverSizes(found.m, found.sizes, static_cast<std::size_t>(kAngularBins)));
+        }
+        outcome.mieSpheres = std::move(found);
+        outcome.mie = mieCache_->second;
+    } catch (const std::exception& error) {
+        outcome.mieNote = std::string("Mie theory failed: ") + error.what();
+    }
+}
+
 // On the worker thread: nothing here may escape, or std::thread would call std::terminate.
 void TraceJob::run(Scene scene, const TraceSettings& settings, const std::optional<WavelengthBins>& wavelengths) {
     TraceOutcome outcome;
     try {
-        const OpticalScene optical(scene);
+        // Mie theory beside the photons: both use the cores, and neither waits for the other to start.
+        auto mie = std::async(std::launch::async, [&] { solveMie(scene, outcome); });
+        struct JoinMie {
+            std::future<void>& future;
+            ~JoinMie() {
+                if (future.valid()) future.wait();
+            }
+        } joinMie{mie};
+        const OpticalScene optical(scene, settings.transport.diffraction != DiffractionModel::None);
         const TallySet tallies = appTallies(scene, settings.transport.polarisation, wavelengths);
         buildingOctree_.store(false, std::memory_order_relaxed);
         const auto start = std::chrono::steady_clock::now();
@@ -134,6 +176,7 @@ void TraceJob::run(Scene scene, const TraceSettings& settings, const std::option
         }
         total.partial = total.photons < settings.photons;
         total.seconds = elapsed();
+        mie.get();
     } catch (const std::exception& error) {
         outcome.error = error.what();
     } catch (...) {

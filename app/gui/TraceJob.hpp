@@ -3,6 +3,7 @@
 #include "run/TraceRun.hpp"
 #include "scene/Scene.hpp"
 #include "tally/SpectralAngularTally.hpp"
+#include "wave/SceneMie.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -19,6 +20,11 @@ struct TraceOutcome {
     TraceResult result;
     Scene scene;
     std::optional<std::string> error;
+    // Lorenz-Mie theory of the scene's spheres when it is one sphere or a cloud of spheres (sphereSceneMie, in the
+    // angular bins of the trace), computed beside the trace; otherwise why not, in `mieNote`.
+    std::optional<SphereSceneMie> mieSpheres = std::nullopt;
+    std::optional<MieResult> mie = std::nullopt;
+    std::string mieNote = {};
 };
 
 // How far the current run is. Named apart from the engine's TraceProgress, which it extends with the
@@ -82,6 +88,9 @@ public:
 private:
     void run(Scene scene, const TraceSettings& settings, const std::optional<WavelengthBins>& wavelengths);
     void joinWorker();
+    // The Mie theory of the scene's spheres, computed once for the same spheres (live traces of an unchanged
+    // droplet set reuse it). Touched by the worker only, one at a time.
+    void solveMie(const Scene& scene, TraceOutcome& outcome);
 
     std::thread worker_;
     std::optional<TraceOutcome> outcome_;  // written by the worker, read after joining it
@@ -93,6 +102,7 @@ private:
     std::atomic<std::uint64_t> done_{0};
     std::atomic<std::uint64_t> total_{0};
     std::atomic<double> seconds_{0.0};
+    std::optional<std::pair<SphereSceneMie, MieResult>> mieCache_;
 };
 
 }  // namespace dropscope::gui

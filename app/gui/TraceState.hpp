@@ -23,7 +23,9 @@ struct FireSettings {
     PolarisationModel polarisation = PolarisationModel::Stokes;
     // Equal wavelength bands over the sources' range, each with its angular distribution (Results); 1: none.
     int wavelengthBins = 1;
-    bool live = true;  // trace again when the scene, the polarisation model or the bands change
+    // Fraunhofer diffraction by spheres and ellipsoids (trace --diffraction fraunhofer); off: ray optics only.
+    bool diffraction = false;
+    bool live = true;  // trace again when the scene, the polarisation model, the bands or diffraction change
 };
 
 // What "live" traces again for when it changes: the document's revision, the polarisation model and the
@@ -32,6 +34,7 @@ struct TracedWith {
     std::uint64_t revision = 0;
     PolarisationModel polarisation = PolarisationModel::Stokes;
     int wavelengthBins = 1;
+    bool diffraction = false;
 
     bool operator==(const TracedWith&) const = default;
 };

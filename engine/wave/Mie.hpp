@@ -89,6 +89,10 @@ MieResult mieAverageOverSizeParameter(std::complex<double> m, double xLo, double
 // least 1 and at most 1000 (docs/mie.md, "Averages").
 std::size_t defaultSizeParameterCount(double xLo, double xHi);
 
+// Over droplets of the given size parameters, one droplet each (a cloud's droplets, or a sample of them; at least
+// one, each in the valid range): weighted as above. One size gives exactly mieSphere.
+MieResult mieAverageOverSizes(std::complex<double> m, const std::vector<double>& sizes, std::size_t bins);
+
 // Over a cloud's radius distribution (by count), with x = wavenumber * r (wavenumber = 2 pi n_ambient /
 // lambda in the radii's unit), sampled at probability midpoints through RadiusDistribution::quantile: one
 // per 0.1 of x between its 1e-3 and 1 - 1e-3 quantiles, at least 32; a fixed distribution is one size, exactly

@@ -100,6 +100,12 @@ MieResult mieAverageOverSizeParameter(std::complex<double> m, double xLo, double
     return averageOverSizes(m, sizes, bins);
 }
 
+MieResult mieAverageOverSizes(std::complex<double> m, const std::vector<double>& sizes, std::size_t bins) {
+    if (sizes.empty()) throw std::invalid_argument("an average over sizes needs at least one size");
+    for (double x : sizes) requireSizeParameter(x, "size parameter x");
+    return averageOverSizes(m, sizes, bins);
+}
+
 std::size_t defaultSizeParameterCount(double xLo, double xHi) {
     const double width = std::abs(xHi - xLo);
     if (!(width >= 0.0) || !std::isfinite(width)) return 1;

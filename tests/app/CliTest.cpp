@@ -33,7 +33,7 @@ TEST(Cli, UnknownCommandIsNamed) {
     expectOneLineFailure(run);
     EXPECT_EQ(
         run.err,
-        "dropscope: unknown command \"render\" (known: inspect, query, trace, snapshot) (see dropscope --help)\n");
+        "dropscope: unknown command \"render\" (known: inspect, query, trace, snapshot, mie) (see dropscope --help)\n");
 }
 
 TEST(Cli, NoCommandPrintsHelpAndExitsTwo) {
