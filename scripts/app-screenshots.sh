@@ -131,3 +131,14 @@ shot app-detectors-paths "$sky" "mousemove 318 300" "click 1" "sleep 0.3" "mouse
     "mousemove 990 523" "click 1" "sleep 0.5" "mousemove 990 612" "click 1" "sleep 0.5" "mousemove 1110 523" "click 1" \
     "sleep 0.5" "mousemove 1110 578" "click 1" "sleep 0.5" "mousemove 1100 547" "click 1" "mousemove 640 60" \
     "key Right" "key Right"
+# Mie theory (docs/gui.md, "Mie theory"): one water droplet of x = 1200 in a beam 1.5 times as wide,
+# diffraction switched on (the Fire panel), 1,000,000 photons; the Results panel moved up and enlarged, its band
+# table unfolded, its plot opened, moved and narrowed, the mouse on the polarisation beyond the bow (140 degrees).
+mie="$root/assets/scenes/mie-droplet.json"
+shot app-mie "$mie" "mousemove 966 425" "click 1" "mousemove 1040 310" "click 1" "key ctrl+a" "type 1000000" \
+    "key Return" "mousemove 640 60" "key space" "sleep 10" "mousemove 100 624" "mousedown 1" "mousemove 100 500" \
+    "mousemove 100 330" "mouseup 1" "sleep 0.5" "mousemove 325 475" "mousedown 1" "mousemove 380 600" \
+    "mousemove 405 770" "mouseup 1" "sleep 0.5" "mousemove 20 458" "click 1" "sleep 0.5" "mousemove 35 408" "click 1" \
+    "sleep 1" "mousemove 420 189" "mousedown 1" "mousemove 460 220" "mousemove 498 258" "mouseup 1" "sleep 0.5" \
+    "mousemove 1025 686" "mousedown 1" "mousemove 980 700" "mousemove 945 740" "mouseup 1" "sleep 0.5" \
+    "mousemove 811 560" "sleep 0.5"

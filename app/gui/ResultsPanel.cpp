@@ -138,7 +138,9 @@ constexpr std::array<std::array<double, 2>, 8> kMieBands{
 // for any beam; a cloud's multiple scattering is in the traced light and not in Mie's.
 void drawMieComparison(const TraceOutcome& outcome, const ItemProbe& probe) {
     if (!outcome.mie || !outcome.mieSpheres) {
-        if (!outcome.mieNote.empty()) probedText(probe, "mie summary", "Mie theory: none (" + outcome.mieNote + ")");
+        if (!outcome.mieNote.empty()) {
+            probedText(probe, "mie summary", "Mie theory: none (" + outcome.mieNote + ")", true);
+        }
         return;
     }
     const MieResult& mie = *outcome.mie;
@@ -153,19 +155,21 @@ void drawMieComparison(const TraceOutcome& outcome, const ItemProbe& probe) {
             traced[bin] * std::cos(std::numbers::pi * (static_cast<double>(bin) + 0.5) / static_cast<double>(bins));
     }
     const SphereSceneMie& spheres = *outcome.mieSpheres;
-    char text[200];
-    const double x = mie.xMean;
-    std::snprintf(text, sizeof text, "Mie: %s, x %.4g, m %.4g%+.2gi; Q_sca %.4f, g %.4f (traced %.4f)",
-                  spheres.spheres == 1 ? "one sphere" : (std::to_string(spheres.spheres) + " spheres").c_str(), x,
-                  spheres.m.real(), spheres.m.imag(), mie.efficiencies.qsca, mie.efficiencies.g,
-                  tracedTotal > 0.0 ? tracedCos / tracedTotal : std::nan(""));
+    char text[160];
+    std::snprintf(text, sizeof text, "Mie: %s, x %.4g, m %.4g%+.2gi",
+                  spheres.spheres == 1 ? "one sphere" : (std::to_string(spheres.spheres) + " spheres").c_str(),
+                  mie.xMean, spheres.m.real(), spheres.m.imag());
     probedText(probe, "mie summary", text);
-    if (!ImGui::TreeNode("traced / Mie by band")) return;
+    std::snprintf(text, sizeof text, "  Q_sca %.4f, g %.4f (traced %.4f)", mie.efficiencies.qsca, mie.efficiencies.g,
+                  tracedTotal > 0.0 ? tracedCos / tracedTotal : std::nan(""));
+    probedText(probe, "mie efficiencies", text);
+    const bool unfolded = ImGui::TreeNode("traced / Mie by band");
+    reportItemRect(probe, "mie bands");
+    if (!unfolded) return;
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg;
     if (ImGui::BeginTable("mie bands", 4, flags)) {
         for (const char* header : {"band (deg)", "traced", "Mie", "traced / Mie"}) ImGui::TableSetupColumn(header);
         ImGui::TableHeadersRow();
-        std::string ratios;
         for (const auto& band : kMieBands) {
             double tracedShare = 0.0;
             double mieShare = 0.0;
@@ -185,13 +189,13 @@ void drawMieComparison(const TraceOutcome& outcome, const ItemProbe& probe) {
             ImGui::TableNextColumn();
             ImGui::Text("%.5f", mieShare);
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", tracedShare / mieShare);
             char ratio[32];
-            std::snprintf(ratio, sizeof ratio, "%s%.3f", ratios.empty() ? "" : " ", tracedShare / mieShare);
-            ratios += ratio;
+            std::snprintf(ratio, sizeof ratio, "%.3f", tracedShare / mieShare);
+            char name[48];
+            std::snprintf(name, sizeof name, "mie ratio %g-%g", band[0], band[1]);
+            probedText(probe, name, ratio);
         }
         ImGui::EndTable();
-        probedText(probe, "mie band ratios", ratios);
     }
     ImGui::TreePop();
 }
