@@ -1,6 +1,7 @@
 #include "cli/MieCommand.hpp"
 
 #include "cli/BadInput.hpp"
+#include "cli/OutputDirectory.hpp"
 #include "cli/WholeNumberOption.hpp"
 #include "geometry/Sphere.hpp"
 #include "results/AtomicFile.hpp"
@@ -254,19 +255,9 @@ CLI::App* addMieCommand(CLI::App& app, MieOptions& options) {
 
 int runMieCommand(const MieOptions& options, std::ostream& out) {
     const fs::path directory = options.outDir;
-    std::error_code error;
-    if (fs::exists(directory, error) && !fs::is_directory(directory, error)) {
-        throw BadInputError(directory.string() + ": exists and is not a directory");
-    }
-    for (const char* name : {"mie.csv", "summary.json"}) {
-        const fs::file_status file = fs::symlink_status(directory / name, error);
-        if (fs::exists(file) && !fs::is_regular_file(file)) {
-            throw BadInputError((directory / name).string() + ": exists and is not a regular file");
-        }
-    }
+    checkOutputDirectory(directory, {"mie.csv", "summary.json"});
     MieProblem problem = problemOf(options);
-    fs::create_directories(directory, error);
-    if (error) throw BadInputError(directory.string() + ": cannot create the output directory: " + error.message());
+    createOutputDirectory(directory);
 
     const auto start = std::chrono::steady_clock::now();
     const MieResult result = solve(problem, static_cast<std::size_t>(options.bins));

@@ -3,6 +3,7 @@
 #include "cli/BadInput.hpp"
 #include "cli/Cli.hpp"
 #include "cli/InterruptGuard.hpp"
+#include "cli/OutputDirectory.hpp"
 #include "cli/ProgressLine.hpp"
 #include "cli/WholeNumberOption.hpp"
 #include "results/TraceFiles.hpp"
@@ -37,28 +38,6 @@ constexpr std::uint64_t kMaxPaths = 1'000'000;  // every event kept in memory: ~
 // kMaxBins * kMaxWavelengthBins counters would not fit, so the product is bounded too.
 constexpr std::uint64_t kMaxWavelengthBins = 10'000;
 constexpr std::uint64_t kMaxSpectralCells = 10'000'000;  // 80 MB of counters per thread at most
-
-// Refuses an --out that names something other than a folder, or holds an output name that is not a
-// regular file, before any work is done.
-void checkOutputPath(const fs::path& directory, const std::vector<std::string>& fileNames) {
-    std::error_code error;
-    const fs::file_status status = fs::status(directory, error);
-    if (fs::exists(status) && !fs::is_directory(status)) {
-        throw BadInputError(directory.string() + ": exists and is not a directory");
-    }
-    for (const std::string& name : fileNames) {
-        const fs::file_status file = fs::symlink_status(directory / name, error);
-        if (fs::exists(file) && !fs::is_regular_file(file)) {
-            throw BadInputError((directory / name).string() + ": exists and is not a regular file");
-        }
-    }
-}
-
-void createOutputDirectory(const fs::path& directory) {
-    std::error_code error;
-    fs::create_directories(directory, error);
-    if (error) throw BadInputError(directory.string() + ": cannot create the output directory: " + error.message());
-}
 
 // --polarisation, default stokes; Schlick's approximation is unpolarised, so with --fresnel schlick the
 // default is none and an explicit stokes is refused.
@@ -180,8 +159,8 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
                             std::to_string(kMaxSpectralCells) + " cells in angular_spectral.csv");
     }
     // The file names do not depend on the bins: checked before the scene is read.
-    checkOutputPath(directory, traceFileNames(standardTallies(options.bins, settings.transport.polarisation,
-                                                              WavelengthBins{1, 1.0, 1.0})));
+    checkOutputDirectory(directory, traceFileNames(standardTallies(options.bins, settings.transport.polarisation,
+                                                                   WavelengthBins{1, 1.0, 1.0})));
     // The text read once: results.h5 keeps exactly what was traced.
     const std::string sceneJson = readJsonFileText(options.scenePath);
     const Scene scene = parseScene(sceneJson, options.scenePath);
@@ -200,7 +179,7 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
     }
     addDetectorTallies(tallies, scene, settings.transport.polarisation);
     // The detectors' files are named after them: checked now that they are known.
-    checkOutputPath(directory, traceFileNames(tallies));
+    checkOutputDirectory(directory, traceFileNames(tallies));
     const OpticalScene opticalScene(scene, settings.transport.diffraction != DiffractionModel::None);
     createOutputDirectory(directory);
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +17,18 @@ struct CliRun {
     std::string out;
     std::string err;
 };
+
+// An empty folder of the running test's own ("dropscope-PREFIX-SEED-TEST" in the temporary directory): CTest
+// runs tests in parallel, so no two share one.
+inline std::filesystem::path freshTestDirectory(const std::string& prefix) {
+    const auto* test = ::testing::UnitTest::GetInstance();
+    const std::filesystem::path directory =
+        std::filesystem::temp_directory_path() /
+        ("dropscope-" + prefix + "-" + std::to_string(test->random_seed()) + "-" + test->current_test_info()->name());
+    std::filesystem::remove_all(directory);
+    std::filesystem::create_directories(directory);
+    return directory;
+}
 
 // Runs `dropscope ARGUMENTS...` in-process through runCli.
 inline CliRun runDropscope(const std::vector<std::string>& arguments) {

@@ -27,13 +27,7 @@ using Json = nlohmann::ordered_json;
 
 class MieCommand : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* test = ::testing::UnitTest::GetInstance();
-        dir_ = fs::temp_directory_path() /
-               ("dropscope-mie-" + std::to_string(test->random_seed()) + "-" + test->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
+    void SetUp() override { dir_ = test::freshTestDirectory("mie"); }
     void TearDown() override { fs::remove_all(dir_); }
 
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
