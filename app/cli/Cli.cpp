@@ -80,7 +80,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         if (query->parsed()) return runQuery(queryOptions, out, err);
         if (trace->parsed()) return runTraceCommand(traceOptions, out, err);
         if (snapshot->parsed()) return runSnapshotCommand(snapshotOptions, out, err);
-        if (mie->parsed()) return runMieCommand(mieOptions, out);
+        if (mie->parsed()) return runMieCommand(mieOptions, out, err);
         // No subcommand (main.cpp opens the app when there are no arguments at all).
         out << app.help();
         err << "dropscope: no command given (see the commands above)\n";

@@ -34,8 +34,11 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::uint64_t kMaxBins = 100'000;  // as trace's --bins
-// Sizes of one --x-range: each is a full Mie computation (0.1 s at x = 1000 with 180 bins).
+// Sizes of one --x-range: each is a full Mie computation (15 ms at x = 1000 with 180 bins).
 constexpr std::uint64_t kMaxSizeCount = 100'000;
+// A range expected to take longer than kAnnouncedSeconds is announced on stderr with its estimate.
+constexpr double kSecondsPerSizeAtX1000 = 0.015;
+constexpr double kAnnouncedSeconds = 5.0;
 
 std::string formatNumber(double value) {
     char text[40];
@@ -253,11 +256,23 @@ CLI::App* addMieCommand(CLI::App& app, MieOptions& options) {
     return command;
 }
 
-int runMieCommand(const MieOptions& options, std::ostream& out) {
+int runMieCommand(const MieOptions& options, std::ostream& out, std::ostream& err) {
     const fs::path directory = options.outDir;
     checkOutputDirectory(directory, {"mie.csv", "summary.json"});
     MieProblem problem = problemOf(options);
     createOutputDirectory(directory);
+    if (problem.sizes == MieProblem::Sizes::Range) {
+        // A long average says so first (docs/performance.md, "Mie": 15 ms per size of x = 1000 with 180 bins on one
+        // core, growing as x^2).
+        const double perSize = kSecondsPerSizeAtX1000 * (problem.xHi / 1000.0) * (problem.xHi / 1000.0);
+        const double estimate = perSize * static_cast<double>(problem.count);
+        if (estimate > kAnnouncedSeconds) {
+            char line[160];
+            std::snprintf(line, sizeof line, "mie: %zu sizes up to x = %.6g: about %.0f s on one core\n", problem.count,
+                          problem.xHi, estimate);
+            err << line << std::flush;
+        }
+    }
 
     const auto start = std::chrono::steady_clock::now();
     const MieResult result = solve(problem, static_cast<std::size_t>(options.bins));

@@ -31,8 +31,9 @@ CLI::App* addMieCommand(CLI::App& app, MieOptions& options);
 
 // Lorenz-Mie theory for one sphere, a uniform range of size parameters, or a scene's sphere or droplet cloud:
 // DIR/mie.csv (the angular distribution in --bins bins, with the polarisation ratios) and DIR/summary.json (the
-// efficiencies and g), written whole or not at all; one line on `out`. Bad input throws BadInputError or
-// SceneError, which runCli reports with exit status 2.
-int runMieCommand(const MieOptions& options, std::ostream& out);
+// efficiencies and g), written whole or not at all; one line on `out`; a range of sizes expected to take more than
+// a few seconds is announced on `err` with its estimate. Bad input throws BadInputError or SceneError, which
+// runCli reports with exit status 2.
+int runMieCommand(const MieOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace dropscope
