@@ -59,12 +59,12 @@ struct MieProblem {
     ResultReport context;     // the summary's keys that describe the input
 };
 
-void checkRelativeIndex(double index, double kappa, const std::string& where) {
+void checkRelativeIndex(double index, double kappa) {
     if (!(std::isfinite(index) && index > 0.0)) {
-        throw BadInputError(where + ": the relative index must be a finite number > 0, not " + formatNumber(index));
+        throw BadInputError("--index: the relative index must be a finite number > 0, not " + formatNumber(index));
     }
     if (!(std::isfinite(kappa) && kappa >= 0.0)) {
-        throw BadInputError(where + ": kappa must be a finite number >= 0, not " + formatNumber(kappa));
+        throw BadInputError("--kappa: must be a finite number >= 0, not " + formatNumber(kappa));
     }
 }
 
@@ -112,8 +112,9 @@ MieProblem sceneProblem(const MieOptions& options) {
     if (shapeId) {
         if (*shapeId >= scene.shapes.size()) {
             throw BadInputError("--shape " + std::to_string(*shapeId) + ": " + file + " has " +
-                                std::to_string(scene.shapes.size()) + " shapes (ids 0 to " +
-                                std::to_string(scene.shapes.size() - 1) + ")");
+                                (scene.shapes.empty() ? std::string("no shapes")
+                                                      : std::to_string(scene.shapes.size()) + " shapes (ids 0 to " +
+                                                            std::to_string(scene.shapes.size() - 1) + ")"));
         }
         const Shape& shape = *scene.shapes[*shapeId];
         if (shape.kind() != ShapeKind::Sphere) {
@@ -168,7 +169,7 @@ MieProblem problemOf(const MieOptions& options) {
         return sceneProblem(options);
     }
     if (!options.index) throw BadInputError("--index: required (the sphere's index relative to the ambient)");
-    checkRelativeIndex(*options.index, options.kappa.value_or(0.0), options.kappa ? "--kappa" : "--index");
+    checkRelativeIndex(*options.index, options.kappa.value_or(0.0));
     MieProblem problem;
     problem.m = {*options.index, options.kappa.value_or(0.0)};
     if (options.x) {
@@ -260,7 +261,6 @@ int runMieCommand(const MieOptions& options, std::ostream& out, std::ostream& er
     const fs::path directory = options.outDir;
     checkOutputDirectory(directory, {"mie.csv", "summary.json"});
     MieProblem problem = problemOf(options);
-    createOutputDirectory(directory);
     if (problem.sizes == MieProblem::Sizes::Range) {
         // A long average says so first (docs/performance.md, "Mie": 15 ms per size of x = 1000 with 180 bins on one
         // core, growing as x^2).
@@ -277,6 +277,9 @@ int runMieCommand(const MieOptions& options, std::ostream& out, std::ostream& er
     const auto start = std::chrono::steady_clock::now();
     const MieResult result = solve(problem, static_cast<std::size_t>(options.bins));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // Only now: sizes a scene's cloud gives outside the valid range are found by the computation, and bad input
+    // leaves nothing behind.
+    createOutputDirectory(directory);
 
     ResultReport& report = problem.context;
     const MieEfficiencies& q = result.efficiencies;

@@ -225,6 +225,7 @@ plot::Figure ordersFigure(const OrderTally& orders) {
         subPlot.curves.push_back({orderName(static_cast<int>(p)), centres, perSteradian(orders.order(p))});
     }
     subPlot.curves.push_back({"multiple", centres, perSteradian(orders.multiple())});
+    if (orders.withDiffraction()) subPlot.curves.push_back({"diffraction", centres, perSteradian(orders.diffracted())});
     return {"Ray orders", "scattering angle (deg)", plot::AxisRange{0.0, 180.0}, {std::move(subPlot)}};
 }
 

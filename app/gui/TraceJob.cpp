@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <future>
 #include <utility>
@@ -30,6 +31,8 @@ constexpr int kAngularBins = 180;
 constexpr double kMieSeconds = 0.5;
 constexpr double kMieSecondsAtX1000 = 0.015;
 constexpr std::size_t kMaxMieSizes = 200;
+// Beyond this x one sphere alone takes more than kMieSeconds: the app leaves it to dropscope mie.
+constexpr double kMaxAppSizeParameter = 6000.0;
 
 // How many of the cloud's sizes (largest x `largest`) the app averages Mie theory over.
 std::size_t mieSizeBudget(double largest) {
@@ -38,9 +41,11 @@ std::size_t mieSizeBudget(double largest) {
 }
 
 // What the app counts: standardTallies, the ray orders and the scene's detectors with the energy budget.
-TallySet appTallies(const Scene& scene, PolarisationModel polarisation, const std::optional<WavelengthBins>& bands) {
+TallySet appTallies(const Scene& scene, const TransportSettings& transport,
+                    const std::optional<WavelengthBins>& bands) {
+    const PolarisationModel polarisation = transport.polarisation;
     TallySet tallies = standardTallies(kAngularBins, polarisation, bands);
-    tallies.add(std::make_unique<OrderTally>(kAngularBins));
+    tallies.add(std::make_unique<OrderTally>(kAngularBins, transport.diffraction != DiffractionModel::None));
     addDetectorTallies(tallies, scene, polarisation);
     return tallies;
 }
@@ -114,6 +119,32 @@ void TraceJob::solveMie(const Scene& scene, TraceOutcome& outcome) {
             return;
         }
         SphereSceneMie& found = std::get<SphereSceneMie>(spheres);
+        // Compared only where the trace is what Mie theory describes: light of the scene wavelength along one axis.
+        for (const Source& source : scene.sources) {
+            if (source.spectrum &&
+                !(source.spectrum->kind() == Spectrum::Kind::Lines && source.spectrum->pointsNm().size() == 1 &&
+                  source.spectrum->pointsNm().front().first == scene.wavelengthNm)) {
+                outcome.mieNote = "a source has a spectrum; Mie theory here is for the scene wavelength alone";
+                return;
+            }
+            if (source.divergenceDeg > 0.0) {
+                outcome.mieNote = "a source diverges; Mie theory here is for a plane wave";
+                return;
+            }
+            if (source.type == SourceType::PointSource) {
+                outcome.mieNote = "a point source's light is not a plane wave";
+                return;
+            }
+        }
+        if (found.sizes.back() > kMaxAppSizeParameter) {
+            char note[160];
+            std::snprintf(note, sizeof note,
+                          "x = %.6g is more than the app computes beside a trace (%.0f); dropscope "
+                          "mie --scene does",
+                          found.sizes.back(), kMaxAppSizeParameter);
+            outcome.mieNote = note;
+            return;
+        }
         found.sizes = sizeSample(found.sizes, mieSizeBudget(found.sizes.back()));
         if (!mieCache_ || mieCache_->first.m != found.m || mieCache_->first.sizes != found.sizes) {
             mieCache_.reset();
@@ -139,7 +170,7 @@ void TraceJob::run(Scene scene, const TraceSettings& settings, const std::option
             }
         } joinMie{mie};
         const OpticalScene optical(scene, settings.transport.diffraction != DiffractionModel::None);
-        const TallySet tallies = appTallies(scene, settings.transport.polarisation, wavelengths);
+        const TallySet tallies = appTallies(scene, settings.transport, wavelengths);
         buildingOctree_.store(false, std::memory_order_relaxed);
         const auto start = std::chrono::steady_clock::now();
         const auto elapsed = [&] {

@@ -58,7 +58,8 @@ struct TracePartial {
 // (tests/gui/TraceJobTest.cpp prints them): 2-20 ms on assets/scenes/cloud.json, whose octree of
 // 20,000 droplets takes 55-85 ms to build. The worst case is 256 photons all trapped until the event
 // cap (10,000 events each, in a glass cube): 0.3-0.6 s a chunk on one thread, and the run ended
-// 0.6-1.2 s after cancel(). It grows with TransportSettings::maxEvents.
+// 0.6-1.2 s after cancel(). It grows with TransportSettings::maxEvents. A run also waits for the Mie theory it
+// computes beside the photons (TraceOutcome::mie), which is kept to about half a second (TraceJob.cpp).
 class TraceJob {
 public:
     TraceJob() = default;

@@ -64,7 +64,7 @@ void OrderTally::score(const Event& event, const TallyContext& photon) {
 void OrderTally::merge(const Tally& other) {
     const OrderTally& more = sameTally(*this, other);
     if (more.bins() != bins() || more.withDiffraction_ != withDiffraction_)
-        throw std::logic_error("merging order tallies of different bins");
+        throw std::logic_error("merging order tallies of different bins or diffraction");
     photons_ += more.photons_;
     for (std::size_t p = 0; p < kOrderColumns; ++p) {
         for (std::size_t b = 0; b < multiple_.size(); ++b) orders_[p][b] += more.orders_[p][b];

@@ -57,6 +57,7 @@ public:
     const std::vector<std::uint64_t>& order(std::size_t p) const { return orders_[p]; }
     const std::vector<std::uint64_t>& multiple() const { return multiple_; }
     const std::vector<std::uint64_t>& diffracted() const { return diffracted_; }
+    bool withDiffraction() const { return withDiffraction_; }
     std::uint64_t singleTotal() const;
     std::uint64_t multipleTotal() const;
 

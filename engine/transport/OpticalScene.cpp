@@ -69,9 +69,12 @@ std::optional<OpticalScene::HaloPass> OpticalScene::firstHaloPass(const Point& p
     // halo's surface it finds that halo's far side when entering it and the next surface when leaving.
     Point at = p;
     double travelled = 0.0;
+    // The nearest middle so far: haloes overlap, and one entered later may have its middle nearer.
+    std::optional<HaloPass> nearest;
     for (std::size_t step = 0; step < 2 * haloOwners_.size() + 2; ++step) {
+        const double limit = nearest ? std::min(length, nearest->distance) : length;
         const RayHit hit = haloes_->firstHit(at, d);
-        if (!hit || travelled + hit.distance >= length) return std::nullopt;
+        if (!hit || travelled + hit.distance >= limit) break;
         travelled += hit.distance;
         at = p + travelled * d.vector();
         const Shape& halo = *haloes_->shape(hit.shape);
@@ -82,10 +85,9 @@ std::optional<OpticalScene::HaloPass> OpticalScene::firstHaloPass(const Point& p
         const double chord = halo.distanceToSurface(at, d);
         if (!(chord > 0.0) || !std::isnan(octree_.shape(droplet)->distanceToSurface(at, d))) continue;
         const double middle = travelled + 0.5 * chord;
-        if (middle < length) return HaloPass{droplet, middle};
-        return std::nullopt;
+        if (middle < limit) nearest = HaloPass{droplet, middle};
     }
-    return std::nullopt;
+    return nearest;
 }
 
 std::optional<OpticalScene::PlaneHit> OpticalScene::firstAbsorbingPlane(const Point& p, const Direction& d,
@@ -144,13 +146,12 @@ ShapeId OpticalScene::regionAt(const Point& p, const Direction& d) const {
 
 double OpticalScene::approachDistance(const Point& p, const Direction& d, bool haloes) const {
     const std::optional<std::pair<double, double>> span = octree_.rootSpan(p, d);
-    double approach = span ? span->first : 0.0;
-    // The haloes reach beyond the shapes: a photon must not start its first flight inside one.
-    if (haloes && haloes_) {
-        const std::optional<std::pair<double, double>> haloSpan = haloes_->rootSpan(p, d);
-        if (haloSpan) approach = std::min(approach, haloSpan->first);
-    }
-    return approach;
+    if (!haloes || !haloes_) return span ? span->first : 0.0;
+    // The haloes reach beyond the shapes: the first flight must start before the nearer of the two roots.
+    const std::optional<std::pair<double, double>> haloSpan = haloes_->rootSpan(p, d);
+    if (span && haloSpan) return std::min(span->first, haloSpan->first);
+    if (span) return span->first;
+    return haloSpan ? haloSpan->first : 0.0;
 }
 
 }  // namespace dropscope

@@ -63,8 +63,9 @@ public:
     // Diffraction (docs/transport.md, "Diffraction"): a droplet's halo is its body scaled by sqrt 2 about its
     // centre, so the ring between outline and halo outline is as large as the outline, whatever the direction.
     // A flight through that ring passes the droplet and is diffracted by it, at the middle of its chord through the
-    // halo. The nearest such pass within (0, length) of a flight from p along d in `region` (only droplets whose
-    // outside is `region` count, and only haloes the flight enters, not one it starts in), if any. Needs haloes.
+    // halo. The nearest such pass (by its middle) within (0, length) of a flight from p along d in `region` (only
+    // droplets whose outside is `region` count, and only haloes the flight enters, not one it starts in), if any. Needs
+    // haloes.
     struct HaloPass {
         ShapeId droplet;
         double distance;

@@ -9,6 +9,12 @@
 
 namespace dropscope {
 
+namespace {
+// Draws of a diffracted direction before one into the droplet is kept: at x = 1 about half the pattern points into
+// it from the ring's inner edge, so 64 tries fail with probability ~1e-19.
+constexpr int kMaxDiffractionDraws = 64;
+}  // namespace
+
 std::string_view photonFateName(PhotonFate fate) {
     switch (fate) {
     case PhotonFate::Escaped: return "escaped";
@@ -114,8 +120,15 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         const Shape& droplet = *scene.octree().shape(dropletId);
         const double wavelength = wavelengthInUnits(state.wavelengthNm, scene.unitInMetres());
         const double wavenumber = 2.0 * std::numbers::pi * optics[scene.mediumIdOf(region)].n / wavelength;
-        const Direction turned = diffractedDirection(direction, *projectedOutline(droplet, direction), wavenumber,
-                                                     [&] { return random.uniform(); });
+        const ProjectedEllipse outline = *projectedOutline(droplet, direction);
+        const auto draw = [&] { return random.uniform(); };
+        // A turn into the droplet it passes is drawn again (docs/transport.md: wider than acos(r / b), so only for
+        // small droplets or the ring's inner edge); after kMaxDiffractionDraws the last one stands.
+        Direction turned = diffractedDirection(direction, outline, wavenumber, draw);
+        for (int redraw = 1; redraw < kMaxDiffractionDraws && !std::isnan(droplet.distanceToSurface(position, turned));
+             ++redraw) {
+            turned = diffractedDirection(direction, outline, wavenumber, draw);
+        }
         if (light) light->reference = turnedReference(light->reference, direction, turned);
         direction = turned;
         outcome.metSurface = state.metSurface = true;

@@ -21,6 +21,8 @@ void addScaled(std::vector<double>& sum, const std::vector<double>& values, doub
 // depend on the thread count.
 MieResult averageOverSizes(std::complex<double> m, const std::vector<double>& sizes, std::size_t bins) {
     if (sizes.size() == 1) return mieSphere(m, sizes.front(), bins);  // exactly the sphere, not x^2 Q / x^2
+    // Checked here, not in the threads: an exception must not leave an OpenMP region.
+    mieCoefficients(m, sizes.front());
     std::vector<MieResult> each(sizes.size());
     const auto count = static_cast<std::ptrdiff_t>(sizes.size());
 #pragma omp parallel for schedule(dynamic)

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace dropscope::gui::testing {
@@ -47,10 +49,20 @@ TEST(MieUi, OneDropletsTraceIsComparedWithMieTheory) {
         ASSERT_TRUE(ratio) << band;
         EXPECT_NEAR(std::stod(ratio->text), 1.0, 0.05) << band;
     }
-    // The plot's Mie curves are over the traced ones.
+    // The plot's Mie curves are over the traced ones: its export has them beside the traced columns.
     ASSERT_TRUE(harness.clickItem("results plot"));
     harness.frames(2);
-    EXPECT_TRUE(harness.state().ui.panels.angularPlot.open);
+    ASSERT_TRUE(harness.state().ui.panels.angularPlot.open);
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() /
+        ("dropscope-mie-ui-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".csv");
+    harness.state().ui.panels.angularPlot.exportPath = file.string();
+    ASSERT_TRUE(harness.clickItem("Angular distribution export"));
+    std::ifstream in(file);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header, "scattering angle (deg),fraction per sr,Mie theory,DoLP,-P12/P11,Mie -P12/P11");
+    std::filesystem::remove(file);
 }
 
 TEST(MieUi, ASceneOfOtherShapesSaysWhyThereIsNoComparison) {
@@ -64,6 +76,32 @@ TEST(MieUi, ASceneOfOtherShapesSaysWhyThereIsNoComparison) {
     ASSERT_TRUE(summary);
     EXPECT_EQ(summary->text, "Mie theory: none (shape 0 is a box: Mie theory is for spheres)");
     EXPECT_FALSE(harness.state().traces.trace->outcome.mie);
+}
+
+TEST(MieUi, ADivergentBeamIsNotComparedWithAPlaneWavesTheory) {
+    AppHarness divergent(R"({"dropscope": 1, "unit": "um", "wavelength_nm": 532, "ambient": "air",
+      "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 25, "medium": "water"}],
+      "sources": [{"type": "beam", "origin": [0, 0, -100], "direction": [0, 0, 1], "radius": 38, "divergence_deg": 0.3}]})",
+                         kWidth, kHeight);
+    fire(divergent, 1000, 10);
+    divergent.frames(2);
+    EXPECT_EQ(divergent.item("mie summary")->text,
+              "Mie theory: none (a source diverges; Mie theory here is for a plane wave)");
+}
+
+// One app at a time (ImGui's context is global).
+TEST(MieUi, ALargeDropletIsLeftToTheCommandLine) {
+    // x = 11810: more than half a second of Mie theory beside each trace.
+    AppHarness large(R"({"dropscope": 1, "unit": "mm", "wavelength_nm": 532, "ambient": "air",
+      "media": {"air": {"n": 1}, "water": {"n": 1.3337}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"}],
+      "sources": [{"type": "beam", "origin": [0, 0, -4], "direction": [0, 0, 1], "radius": 1}]})",
+                     kWidth, kHeight);
+    fire(large, 1000, 10);
+    large.frames(2);
+    EXPECT_NE(large.item("mie summary")->text.find("dropscope mie --scene"), std::string::npos)
+        << large.item("mie summary")->text;
 }
 
 }  // namespace

@@ -72,16 +72,13 @@ TEST_F(PlotUi, TheReadoutGivesTheBinUnderTheMouse) {
     // nearest to the last bin's centre, 179.5.
     harness_.moveMouse(frame.minX + 179.7f / 180.0f * (frame.maxX - frame.minX), 0.5f * (frame.minY + frame.maxY));
     ASSERT_TRUE(plotState().hovered);
-    // The traced curve and, the scene being one sphere, Mie theory's over it.
-    ASSERT_EQ(plotState().hovered->samples.size(), 2u);
+    ASSERT_EQ(plotState().hovered->samples.size(), 1u);
     const plot::CurveSample& sample = plotState().hovered->samples[0];
-    EXPECT_EQ(plotState().hovered->samples[1].name, "Mie theory");
-    EXPECT_GT(plotState().hovered->samples[1].y, 0.0);
     EXPECT_EQ(sample.index, 179u);
     EXPECT_EQ(sample.x, 179.5);
     EXPECT_EQ(sample.y, perSteradian.back());
     const std::vector<std::string> lines = plot::readoutLines(*plotState().hovered, "scattering angle (deg)");
-    ASSERT_EQ(lines.size(), 3u);
+    ASSERT_EQ(lines.size(), 2u);
     EXPECT_EQ(lines[0], "scattering angle (deg) = 179.5");
     char value[32];
     std::snprintf(value, sizeof value, "%.6g", perSteradian.back());
@@ -97,7 +94,7 @@ TEST_F(PlotUi, ExportWritesOneRowPerAngularBin) {
         << harness_.state().ui.status.text();
     const std::vector<std::string> lines = linesOf(file);
     ASSERT_EQ(lines.size(), 1u + static_cast<std::size_t>(angular().bins()));
-    EXPECT_EQ(lines[0], "scattering angle (deg),fraction per sr,Mie theory,DoLP,-P12/P11,Mie -P12/P11");
+    EXPECT_EQ(lines[0], "scattering angle (deg),fraction per sr,DoLP,-P12/P11");
     EXPECT_EQ(lines[1].substr(0, 4), "0.5,");
     EXPECT_EQ(lines[180].substr(0, 6), "179.5,");
     std::filesystem::remove(file);

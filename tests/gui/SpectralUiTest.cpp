@@ -220,7 +220,7 @@ TEST(SpectralUi, WithWavelengthBandsTheResultsPlotHasACurvePerBand) {
     std::ifstream in(file);
     std::string header;
     std::getline(in, header);
-    EXPECT_EQ(header.rfind("scattering angle (deg),fraction per sr,Mie theory,380-446.7 nm,446.7-513.3 nm,513.3-580 nm,"
+    EXPECT_EQ(header.rfind("scattering angle (deg),fraction per sr,380-446.7 nm,446.7-513.3 nm,513.3-580 nm,"
                            "580-646.7 nm,646.7-713.3 nm,713.3-780 nm,",
                            0),
               0u)

@@ -186,6 +186,40 @@ TEST(DropletDiffraction, WithoutItTheHaloesChangeNothing) {
     EXPECT_THROW(trace(plain, 1.2 * kRadius, 0, fraunhofer()), std::logic_error);
 }
 
+TEST(DropletDiffraction, OfOverlappingHaloesTheNearestMiddleDiffracts) {
+    // The pencil along z at x = y = 0 enters the halo of drop 0 (r = 1, 1.2 off the line) first, at z = 2.25, but the
+    // middle of its chord through the halo of drop 1 (r = 0.2, 0.25 off the line) comes first: z = 2.6 against 3.
+    const Scene two = sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337})",
+                                    R"({"type": "sphere", "center": [1.2, 0, 3], "radius": 1, "medium": "water"},
+                                       {"type": "sphere", "center": [-0.25, 0, 2.6], "radius": 0.2, "medium": "water"})",
+                                    "");
+    const OpticalScene scene(two, true);
+    std::vector<Event> events;
+    EventRecorder recorder(events);
+    PhotonRandom random(1, 0);
+    tracePhoton(scene, {Point(0, 0, -1), Direction(0, 0, 1)}, random, fraunhofer(), &recorder);
+    ASSERT_GE(events.size(), 2u);
+    EXPECT_EQ(events[1].type, EventType::Diffract);
+    EXPECT_EQ(events[1].shape, 1u);
+    EXPECT_NEAR(events[1].position.z(), 2.6, 1e-12);
+}
+
+TEST(DropletDiffraction, ADiffractedPhotonNeverMeetsItsDroplet) {
+    // x = 2: the Airy pattern is wide, and from just outside the rim half of it points into the drop. Those turns
+    // are drawn again: nothing but the diffraction happens.
+    const Scene small = sceneFromJson(R"("air": {"n": 1}, "water": {"n": 1.3337})",
+                                      R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.000169333,
+                                          "medium": "water"})",
+                                      "");
+    const OpticalScene scene(small, true);
+    for (std::uint64_t i = 0; i < 300; ++i) {
+        PhotonOutcome outcome;
+        const auto events = trace(scene, 1.01 * 0.000169333, i, fraunhofer(), &outcome);
+        EXPECT_EQ(outcome.events.diffract, 1u) << i;
+        EXPECT_EQ(outcome.events.refract + outcome.events.reflect, 0u) << i;
+    }
+}
+
 TEST(DropletDiffraction, BoxesAreNotDiffracted) {
     const Scene box = sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5})",
                                     R"({"type": "box", "min": [-0.05, -0.05, -0.05], "max": [0.05, 0.05, 0.05],
