@@ -20,7 +20,6 @@
 #include <complex>
 #include <cstdio>
 #include <filesystem>
-#include <numbers>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -212,9 +211,7 @@ ResultTable mieTable(const MieAngularBins& bins) {
     for (std::size_t b = 0; b < count; ++b) {
         lo.push_back(angularEdgeDeg(static_cast<int>(b), static_cast<int>(count)));
         hi.push_back(angularEdgeDeg(static_cast<int>(b) + 1, static_cast<int>(count)));
-        const double toRadians = std::numbers::pi / 180.0;
-        const double solidAngle =
-            2.0 * std::numbers::pi * (std::cos(lo.back() * toRadians) - std::cos(hi.back() * toRadians));
+        const double solidAngle = angularBinSolidAngle(static_cast<int>(b), static_cast<int>(count));
         perSr.push_back(bins.fraction[b] / solidAngle);
         const double f = bins.fraction[b];
         p12.push_back(f > 0.0 ? bins.s12[b] / f : std::nan(""));

@@ -67,12 +67,6 @@ std::vector<double> scatteredShares(const TallySet& tallies) {
     return shares;
 }
 
-double solidAngleOfBin(std::size_t bin, std::size_t bins) {
-    const double lo = std::numbers::pi * static_cast<double>(bin) / static_cast<double>(bins);
-    const double hi = std::numbers::pi * static_cast<double>(bin + 1) / static_cast<double>(bins);
-    return 2.0 * std::numbers::pi * (std::cos(lo) - std::cos(hi));
-}
-
 // Mie theory's curves for the angular plot in the traced curve's units: its phase function times the traced
 // share that was scattered (so the two match where ray optics is right), and -P12/P11 (unpolarised light).
 void addMieCurves(plot::Figure& figure, const TallySet& tallies, const MieResult& mie,
@@ -86,7 +80,7 @@ void addMieCurves(plot::Figure& figure, const TallySet& tallies, const MieResult
     std::vector<double> ratio;
     for (std::size_t bin = 0; bin < fraction.size(); ++bin) {
         perSteradian.push_back(fraction[bin] / mie.efficiencies.qsca * scattered /
-                               solidAngleOfBin(bin, fraction.size()));
+                               angularBinSolidAngle(static_cast<int>(bin), static_cast<int>(fraction.size())));
         ratio.push_back(fraction[bin] > 0.0 ? -mie.bins.s12[bin] / fraction[bin] : std::nan(""));
     }
     const std::array<float, 3> mieColour{0.95f, 0.35f, 0.35f};
@@ -206,17 +200,13 @@ plot::Figure ordersFigure(const OrderTally& orders) {
     const int bins = orders.bins();
     const double photons = std::max<double>(static_cast<double>(orders.photons()), 1.0);
     std::vector<double> centres;
-    std::vector<double> solidAngles;
-    for (int bin = 0; bin < bins; ++bin) {
-        const double lo = std::numbers::pi * bin / bins;
-        const double hi = std::numbers::pi * (bin + 1) / bins;
-        centres.push_back(90.0 * (bin + bin + 1) / bins);
-        solidAngles.push_back(2.0 * std::numbers::pi * (std::cos(lo) - std::cos(hi)));
-    }
+    for (int bin = 0; bin < bins; ++bin) centres.push_back(90.0 * (bin + bin + 1) / bins);
     const auto perSteradian = [&](const std::vector<std::uint64_t>& counts) {
         std::vector<double> y;
         for (std::size_t b = 0; b < counts.size(); ++b) {
-            y.push_back(counts[b] > 0 ? static_cast<double>(counts[b]) / photons / solidAngles[b] : std::nan(""));
+            y.push_back(counts[b] > 0
+                            ? static_cast<double>(counts[b]) / photons / angularBinSolidAngle(static_cast<int>(b), bins)
+                            : std::nan(""));
         }
         return y;
     };

@@ -34,6 +34,11 @@ std::size_t angularBinOf(const Direction& direction, const Direction& axis, std:
 
 double angularEdgeDeg(int k, int bins) { return 180.0 * static_cast<double>(k) / static_cast<double>(bins); }
 
+double angularBinSolidAngle(int k, int bins) {
+    return 2.0 * std::numbers::pi *
+           (std::cos(radians(angularEdgeDeg(k, bins))) - std::cos(radians(angularEdgeDeg(k + 1, bins))));
+}
+
 AngularTally::AngularTally(int bins, bool stokes) {
     if (bins < 1) throw std::invalid_argument("the number of angular bins must be at least 1");
     const auto count = static_cast<std::size_t>(bins);
@@ -79,7 +84,7 @@ AngularTally::Columns AngularTally::columns() const {
         const double lo = lowerEdgeDeg(bin);
         const double hi = lowerEdgeDeg(bin + 1);
         const double fraction = share(static_cast<double>(escapes_[b]));
-        const double solidAngle = 2.0 * std::numbers::pi * (std::cos(radians(lo)) - std::cos(radians(hi)));
+        const double solidAngle = angularBinSolidAngle(bin, bins());
         columns.lower.push_back(lo);
         columns.upper.push_back(hi);
         columns.fraction.push_back(fraction);

@@ -13,6 +13,8 @@ namespace dropscope {
 // come out whole). AngularTally, SpectralAngularTally and OrderTally share them.
 std::size_t angularBinOf(const Direction& direction, const Direction& axis, std::size_t bins);
 double angularEdgeDeg(int k, int bins);
+// The solid angle of bin k of `bins` equal bins of theta over 0-180 degrees: 2 pi (cos lo - cos hi), in sr.
+double angularBinSolidAngle(int k, int bins);
 
 // Escapes per equal bin of theta, the angle between a photon's escape direction and its emission
 // direction (0 straight on, 180 degrees straight back): the table "angular" (angular.csv, docs/cli.md).
