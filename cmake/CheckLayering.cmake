@@ -51,6 +51,7 @@ set(forbidden_snapshot "^(GLFW|CLI)/|^imgui")
 set(forbidden_cli "^GLFW/|^imgui")
 set(forbidden_gui "^(GLFW|CLI)/")
 set(forbidden_window "^CLI/")
+set(forbidden_python "^(GL|GLES[0-9]*|EGL|KHR|glad|epoxy|GLFW|glm|CLI|stb)/|^imgui")
 
 # Sets <out_rank> and <out_name> to the layer of `path` (relative to ROOT), or empty.
 function(layer_of path out_rank out_name)
@@ -75,7 +76,7 @@ function(layer_of path out_rank out_name)
 endfunction()
 
 set(patterns "")
-foreach(folder engine app)
+foreach(folder engine app python)
   foreach(extension cpp hpp h cc hh inl ipp)
     list(APPEND patterns "${ROOT}/${folder}/*.${extension}")
   endforeach()

@@ -7,6 +7,7 @@ packages=(
   cmake g++ make pkg-config clang-format
   libeigen3-dev libboost-math-dev nlohmann-json3-dev libcli11-dev librandom123-dev
   libhdf5-dev hdf5-tools python3-h5py
+  pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest
   libgtest-dev libgmock-dev libbenchmark-dev
   libosmesa6-dev libglm-dev libstb-dev
   libglfw3-dev libimgui-dev

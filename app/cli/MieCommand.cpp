@@ -2,6 +2,7 @@
 
 #include "cli/BadInput.hpp"
 #include "cli/OutputDirectory.hpp"
+#include "cli/TraceCommand.hpp"
 #include "cli/WholeNumberOption.hpp"
 #include "geometry/Sphere.hpp"
 #include "results/AtomicFile.hpp"
@@ -25,6 +26,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <variant>
 
 namespace dropscope {
 
@@ -32,9 +34,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::uint64_t kMaxBins = 100'000;  // as trace's --bins
 // Sizes of one --x-range: each is a full Mie computation (15 ms at x = 1000 with 180 bins).
-constexpr std::uint64_t kMaxSizeCount = 100'000;
 // A range expected to take longer than kAnnouncedSeconds is announced on stderr with its estimate.
 constexpr double kSecondsPerSizeAtX1000 = 0.015;
 constexpr double kAnnouncedSeconds = 5.0;
@@ -79,8 +79,7 @@ void checkSizeParameter(double x, const std::string& where) {
 }
 
 // --scene: the sphere or cloud, its medium relative to the ambient, at the scene wavelength.
-MieProblem sceneProblem(const MieOptions& options) {
-    const Scene scene = loadScene(options.scenePath);
+MieProblem sceneProblem(const MieOptions& options, const Scene& scene) {
     const std::string& file = options.scenePath;
     const Medium& ambient = scene.media.at(scene.ambient);
     MieProblem problem;
@@ -152,7 +151,7 @@ MieProblem sceneProblem(const MieOptions& options) {
     return problem;
 }
 
-MieProblem problemOf(const MieOptions& options) {
+MieProblem problemOf(const MieOptions& options, const Scene* scene) {
     const int ways = (options.x ? 1 : 0) + (options.xRange.empty() ? 0 : 1) + (options.scenePath.empty() ? 0 : 1);
     if (ways != 1) throw BadInputError("mie: give exactly one of --x, --x-range and --scene");
     if (options.xCount && options.xRange.empty()) throw BadInputError("--x-count: only with --x-range");
@@ -165,7 +164,8 @@ MieProblem problemOf(const MieOptions& options) {
             throw BadInputError(std::string(options.index ? "--index" : "--kappa") +
                                 ": with --scene the index comes from the shape's medium and the ambient");
         }
-        return sceneProblem(options);
+        if (scene) return sceneProblem(options, *scene);
+        return sceneProblem(options, loadScene(options.scenePath));
     }
     if (!options.index) throw BadInputError("--index: required (the sphere's index relative to the ambient)");
     checkRelativeIndex(*options.index, options.kappa.value_or(0.0));
@@ -249,15 +249,13 @@ CLI::App* addMieCommand(CLI::App& app, MieOptions& options) {
         ->transform(wholeNumberIn(0, kNoUpperBound));
     command->add_option("--bins", options.bins, "Angular bins over 0-180 degrees in mie.csv")
         ->capture_default_str()
-        ->transform(wholeNumberIn(1, kMaxBins));
+        ->transform(wholeNumberIn(1, kMaxTraceBins));
     command->add_option("--out", options.outDir, "Output folder (created): mie.csv, summary.json")->required();
     return command;
 }
 
-int runMieCommand(const MieOptions& options, std::ostream& out, std::ostream& err) {
-    const fs::path directory = options.outDir;
-    checkOutputDirectory(directory, {"mie.csv", "summary.json"});
-    MieProblem problem = problemOf(options);
+MieRun computeMie(const MieOptions& options, std::ostream& err, const Scene* scene) {
+    MieProblem problem = problemOf(options, scene);
     if (problem.sizes == MieProblem::Sizes::Range) {
         // A long average says so first (docs/performance.md, "Mie": 15 ms per size of x = 1000 with 180 bins on one
         // core, growing as x^2).
@@ -274,11 +272,9 @@ int runMieCommand(const MieOptions& options, std::ostream& out, std::ostream& er
     const auto start = std::chrono::steady_clock::now();
     const MieResult result = solve(problem, static_cast<std::size_t>(options.bins));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // Only now: sizes a scene's cloud gives outside the valid range are found by the computation, and bad input
-    // leaves nothing behind.
-    createOutputDirectory(directory);
 
-    ResultReport& report = problem.context;
+    MieRun run{std::move(problem.context), mieTable(result.bins), result.sizes, seconds};
+    ResultReport& report = run.summary;
     const MieEfficiencies& q = result.efficiencies;
     report.set({"qext"}, q.qext);
     report.set({"qsca"}, q.qsca);
@@ -296,18 +292,36 @@ int runMieCommand(const MieOptions& options, std::ostream& out, std::ostream& er
     report.set({"bins"}, options.bins);
     report.set({"seconds"}, seconds);
     report.set({"version"}, std::string(dropscopeVersion()));
-    const ResultTable table = mieTable(result.bins);
+    return run;
+}
+
+void writeMieSummary(const ResultReport& summary, std::ostream& out) {
     static const std::vector<std::string_view> kKeyOrder{
         "qext",   "qsca",    "qabs",          "qback",         "g",       "x",      "index",  "kappa",
         "x_lo",   "x_hi",    "sizes",         "bins",          "scene",   "shape",  "radius", "generator",
         "medium", "ambient", "ambient_index", "wavelength_nm", "seconds", "version"};
+    writeSummaryJson(summary, kKeyOrder, out);
+}
+
+void writeMieFiles(const std::filesystem::path& directory, const MieRun& run) {
     writeFilesAtomically(
-        {{directory / "mie.csv", [&](std::ostream& file) { writeTableCsv(table, file); }},
-         {directory / "summary.json", [&](std::ostream& file) { writeSummaryJson(report, kKeyOrder, file); }}});
+        {{directory / "mie.csv", [&](std::ostream& file) { writeTableCsv(run.table, file); }},
+         {directory / "summary.json", [&](std::ostream& file) { writeMieSummary(run.summary, file); }}});
+}
+
+int runMieCommand(const MieOptions& options, std::ostream& out, std::ostream& err) {
+    const fs::path directory = options.outDir;
+    checkOutputDirectory(directory, {"mie.csv", "summary.json"});
+    const MieRun run = computeMie(options, err);
+    // Only now: sizes a scene's cloud gives outside the valid range are found by the computation, and bad input
+    // leaves nothing behind.
+    createOutputDirectory(directory);
+    writeMieFiles(directory, run);
+    const auto number = [&](const char* key) { return std::get<double>(*run.summary.find({key})); };
     char line[256];
     std::snprintf(line, sizeof line, "mie: %zu size%s, %llu bins in %.3f s: Q_ext %.6g, Q_sca %.6g, g %.6g\n",
-                  result.sizes, result.sizes == 1 ? "" : "s", static_cast<unsigned long long>(options.bins), seconds,
-                  q.qext, q.qsca, q.g);
+                  run.sizes, run.sizes == 1 ? "" : "s", static_cast<unsigned long long>(options.bins), run.seconds,
+                  number("qext"), number("qsca"), number("g"));
     out << line << "  wrote mie.csv, summary.json in " << directory.string() << '\n';
     return 0;
 }

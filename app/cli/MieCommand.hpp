@@ -1,6 +1,10 @@
 #pragma once
 
+#include "scene/Scene.hpp"
+#include "tally/ResultReport.hpp"
+
 #include <cstdint>
+#include <filesystem>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -24,6 +28,26 @@ struct MieOptions {
     std::uint64_t bins = 180;
     std::string outDir;
 };
+
+// Sizes of one --x-range: each is a full Mie computation (15 ms at x = 1000 with 180 bins).
+inline constexpr std::uint64_t kMaxSizeCount = 100'000;
+
+// What `dropscope mie` computes: summary.json's values and mie.csv's table.
+struct MieRun {
+    ResultReport summary;
+    ResultTable table;
+    std::size_t sizes = 1;
+    double seconds = 0.0;
+};
+
+// Computes what runMieCommand writes (options.outDir unused); a long range is announced on `err`. With `scene`,
+// that is the scene of --scene, already read (options.scenePath names it in the summary and in messages).
+// Throws BadInputError or SceneError for bad input.
+MieRun computeMie(const MieOptions& options, std::ostream& err, const Scene* scene = nullptr);
+// summary.json alone, keys in docs/cli.md's order.
+void writeMieSummary(const ResultReport& summary, std::ostream& out);
+// DIR/mie.csv and DIR/summary.json, both or neither (DIR exists).
+void writeMieFiles(const std::filesystem::path& directory, const MieRun& run);
 
 // Registers `dropscope mie --index N [--kappa K] (--x X | --x-range LO HI [--x-count C] | --scene SCENE
 // [--shape ID | --generator I]) [--bins B] --out DIR` (docs/cli.md, "dropscope mie").

@@ -12,14 +12,11 @@
 #include <cmath>
 #include <ostream>
 #include <sstream>
+#include <utility>
 
 namespace dropscope {
 
 namespace {
-
-constexpr int kMaxPixels = 8192;
-constexpr std::uint64_t kMaxDrawnPaths = 100000;
-constexpr std::uint64_t kMaxSnapshotPhotons = 100'000'000;  // a picture, not a study: seconds, not hours
 
 // "x,y,z": three finite numbers.
 Point parsePoint(const std::string& option, const std::string& text) {
@@ -137,10 +134,10 @@ CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options) {
     command->add_option("--out", options.outPath, "PNG file to write")->required();
     command->add_option("--width", options.render.width, "Image width in pixels")
         ->capture_default_str()
-        ->check(CLI::Range(16, kMaxPixels));
+        ->check(CLI::Range(kMinSnapshotPixels, kMaxSnapshotPixels));
     command->add_option("--height", options.render.height, "Image height in pixels")
         ->capture_default_str()
-        ->check(CLI::Range(16, kMaxPixels));
+        ->check(CLI::Range(kMinSnapshotPixels, kMaxSnapshotPixels));
     command->add_option("--eye", options.eye, "Camera position x,y,z (default: the scene's view, else fitted)");
     command->add_option("--target", options.target, "Point looked at x,y,z (default: the view's, else the centre)");
     command->add_option("--fov-deg", options.fovDeg, "Vertical field of view in degrees")
@@ -159,7 +156,10 @@ CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options) {
     return command;
 }
 
-int runSnapshotCommand(SnapshotCommandOptions options, std::ostream& out, std::ostream&) {
+namespace {
+
+// The options with every check that needs no scene done: the camera and the layers resolved.
+SnapshotCommandOptions resolvedOptions(SnapshotCommandOptions options) {
     if (options.eye) options.render.eye = parsePoint("--eye", *options.eye);
     if (options.target) options.render.target = parsePoint("--target", *options.target);
     if (options.fovDeg > 0.0) options.render.fovDeg = options.fovDeg;
@@ -168,17 +168,28 @@ int runSnapshotCommand(SnapshotCommandOptions options, std::ostream& out, std::o
         throw BadInputError("--eye and --target must differ");
     }
     applyLayerOptions(options);
-    const Scene scene = loadScene(options.scenePath);
+    return options;
+}
+
+}  // namespace
+
+snapshot::Image renderSnapshotImage(SnapshotCommandOptions given, const Scene& scene) {
+    SnapshotCommandOptions options = resolvedOptions(std::move(given));
     checkAgainstScene(options, scene);
     if (options.select >= 0) options.render.layers.selected = static_cast<ShapeId>(options.select);
-    snapshot::Image image;
     try {
-        image = snapshot::renderSnapshot(scene, options.render);
+        return snapshot::renderSnapshot(scene, options.render);
     } catch (const std::invalid_argument& error) {
         throw BadInputError(error.what());
     } catch (const render::RenderError& error) {
         throw std::runtime_error(std::string("rendering failed: ") + error.what());
     }
+}
+
+int runSnapshotCommand(SnapshotCommandOptions options, std::ostream& out, std::ostream&) {
+    resolvedOptions(options);  // bad options are refused before the scene is read
+    const Scene scene = loadScene(options.scenePath);
+    const snapshot::Image image = renderSnapshotImage(options, scene);
     const std::string png = snapshot::encodePng(image);
     try {
         writeFileAtomically(options.outPath, [&](std::ostream& file) { file << png; });

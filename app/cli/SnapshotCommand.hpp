@@ -1,5 +1,7 @@
 #pragma once
 
+#include "scene/Scene.hpp"
+#include "snapshot/Image.hpp"
 #include "snapshot/Snapshot.hpp"
 
 #include <cstdint>
@@ -36,6 +38,16 @@ struct SnapshotCommandOptions {
 // [--detectors] [--axes] [--grid]
 // [--no-shapes] [--translucent] [--select ID].
 CLI::App* addSnapshotCommand(CLI::App& app, SnapshotCommandOptions& options);
+
+// The bounds of snapshot's options, shared with the Python module.
+inline constexpr int kMinSnapshotPixels = 16;
+inline constexpr int kMaxSnapshotPixels = 8192;
+inline constexpr std::uint64_t kMaxDrawnPaths = 100000;
+inline constexpr std::uint64_t kMaxSnapshotPhotons = 100'000'000;  // a picture, not a study: seconds, not hours
+
+// The picture runSnapshotCommand writes, of `scene` (options.scenePath and outPath unused): the layer switches
+// checked against each other and the scene (BadInputError, SceneError), then rendered headless.
+snapshot::Image renderSnapshotImage(SnapshotCommandOptions options, const Scene& scene);
 
 // Renders the scene headless (OSMesa) and writes the PNG whole or not at all.
 int runSnapshotCommand(SnapshotCommandOptions options, std::ostream& out, std::ostream& err);

@@ -31,14 +31,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::uint64_t kMaxBins = 100'000;     // 0.0018 degrees; a tally per thread: 0.8 MB each at most
-constexpr std::uint64_t kMaxThreads = 1024;     // beyond any machine we run on; a typo otherwise
-constexpr std::uint64_t kMaxPaths = 1'000'000;  // every event kept in memory: ~1 KB per photon
-// Bins of angular_spectral.csv: K wavelength bands times --bins angles, a tally per thread of up to
-// kMaxBins * kMaxWavelengthBins counters would not fit, so the product is bounded too.
-constexpr std::uint64_t kMaxWavelengthBins = 10'000;
-constexpr std::uint64_t kMaxSpectralCells = 10'000'000;  // 80 MB of counters per thread at most
-
 // --polarisation, default stokes; Schlick's approximation is unpolarised, so with --fresnel schlick the
 // default is none and an explicit stokes is refused.
 PolarisationModel polarisationModel(const TraceOptions& options) {
@@ -108,13 +100,13 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
         ->transform(wholeNumberIn(0, kNoUpperBound));
     command->add_option("--bins", options.bins, "Angular bins over 0-180 degrees in angular.csv")
         ->capture_default_str()
-        ->transform(wholeNumberIn(1, kMaxBins));
+        ->transform(wholeNumberIn(1, kMaxTraceBins));
     command->add_option("--threads", options.threads, "Threads; 0: all the machine has")
         ->capture_default_str()
-        ->transform(wholeNumberIn(0, kMaxThreads));
+        ->transform(wholeNumberIn(0, kMaxTraceThreads));
     command->add_option("--paths", options.paths, "Record every event of the first K photons in paths.jsonl")
         ->capture_default_str()
-        ->transform(wholeNumberIn(0, kMaxPaths));
+        ->transform(wholeNumberIn(0, kMaxTracePaths));
     command->add_option("--max-events", options.maxEvents, "Surface events before a photon is counted lost")
         ->capture_default_str()
         ->transform(wholeNumberIn(1, std::numeric_limits<std::uint32_t>::max()));
@@ -149,21 +141,19 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
     return command;
 }
 
-int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err) {
-    const fs::path directory = options.outDir;
-    const TraceSettings settings = traceSettings(options);
+TraceSettings checkedTraceSettings(const TraceOptions& options) {
     if (static_cast<std::uint64_t>(options.bins) * static_cast<std::uint64_t>(options.wavelengthBins) >
         kMaxSpectralCells) {
         throw BadInputError("--bins " + std::to_string(options.bins) + " with --wavelength-bins " +
                             std::to_string(options.wavelengthBins) + ": more than " +
                             std::to_string(kMaxSpectralCells) + " cells in angular_spectral.csv");
     }
-    // The file names do not depend on the bins: checked before the scene is read.
-    checkOutputDirectory(directory, traceFileNames(standardTallies(options.bins, settings.transport.polarisation,
-                                                                   WavelengthBins{1, 1.0, 1.0})));
-    // The text read once: results.h5 keeps exactly what was traced.
-    const std::string sceneJson = readJsonFileText(options.scenePath);
-    const Scene scene = parseScene(sceneJson, options.scenePath);
+    return traceSettings(options);
+}
+
+PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene) {
+    PreparedTrace prepared{checkedTraceSettings(options), {}};
+    const TraceSettings& settings = prepared.settings;
     if (scene.sources.empty()) throw SceneError(scene.origin, "sources", "the scene has no light sources to trace");
     const auto [lo, hi] = wavelengthRangeNm(scene.sources, scene.wavelengthNm);
     const WavelengthBins wavelengths{options.wavelengthBins, lo, hi};
@@ -172,12 +162,27 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
     } catch (const std::invalid_argument& error) {
         throw BadInputError("--wavelength-bins " + std::to_string(options.wavelengthBins) + ": " + error.what());
     }
-    TallySet tallies = standardTallies(options.bins, settings.transport.polarisation, wavelengths);
+    prepared.tallies = standardTallies(options.bins, settings.transport.polarisation, wavelengths);
     if (options.orders) {
-        tallies.add(
+        prepared.tallies.add(
             std::make_unique<OrderTally>(options.bins, settings.transport.diffraction != DiffractionModel::None));
     }
-    addDetectorTallies(tallies, scene, settings.transport.polarisation);
+    addDetectorTallies(prepared.tallies, scene, settings.transport.polarisation);
+    return prepared;
+}
+
+int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err) {
+    const fs::path directory = options.outDir;
+    const PolarisationModel polarisation = checkedTraceSettings(options).transport.polarisation;
+    // The file names do not depend on the bins: checked before the scene is read.
+    checkOutputDirectory(directory,
+                         traceFileNames(standardTallies(options.bins, polarisation, WavelengthBins{1, 1.0, 1.0})));
+    // The text read once: results.h5 keeps exactly what was traced.
+    const std::string sceneJson = readJsonFileText(options.scenePath);
+    const Scene scene = parseScene(sceneJson, options.scenePath);
+    PreparedTrace prepared = prepareTrace(options, scene);
+    const TraceSettings& settings = prepared.settings;
+    TallySet& tallies = prepared.tallies;
     // The detectors' files are named after them: checked now that they are known.
     checkOutputDirectory(directory, traceFileNames(tallies));
     const OpticalScene opticalScene(scene, settings.transport.diffraction != DiffractionModel::None);

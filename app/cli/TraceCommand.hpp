@@ -1,5 +1,9 @@
 #pragma once
 
+#include "run/TraceRun.hpp"
+#include "scene/Scene.hpp"
+#include "tally/TallySet.hpp"
+
 #include <cstdint>
 #include <iosfwd>
 #include <string>
@@ -25,6 +29,26 @@ struct TraceOptions {
     bool orders = false;
     std::string outDir;
 };
+
+// The bounds of trace's options, shared with the Python module.
+inline constexpr std::uint64_t kMaxTraceBins = 100'000;      // 0.0018 degrees; a tally per thread: 0.8 MB each
+inline constexpr std::uint64_t kMaxTraceThreads = 1024;      // beyond any machine we run on; a typo otherwise
+inline constexpr std::uint64_t kMaxTracePaths = 1'000'000;   // every event kept in memory: ~1 KB per photon
+inline constexpr std::uint64_t kMaxWavelengthBins = 10'000;  // angular_spectral.csv's bands
+// Bins of angular_spectral.csv: K wavelength bands times --bins angles, a tally per thread of up to
+// kMaxTraceBins * kMaxWavelengthBins counters would not fit, so the product is bounded too.
+inline constexpr std::uint64_t kMaxSpectralCells = 10'000'000;  // 80 MB of counters per thread at most
+
+// What a trace of `scene` with these options runs: the settings and the unscored tallies (standard, orders,
+// detectors), checked. The CLI and the Python module both trace through it, so the same options give the same
+// files. Throws BadInputError (options) or SceneError (a scene without sources).
+struct PreparedTrace {
+    TraceSettings settings;
+    TallySet tallies;
+};
+PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene);
+// The settings alone, with the checks that need no scene (BadInputError): what trace refuses before reading it.
+TraceSettings checkedTraceSettings(const TraceOptions& options);
 
 // Registers `dropscope trace SCENE --photons N [--seed S] [--bins B] [--threads T] [--paths K]
 // [--max-events M] [--fresnel exact|schlick] [--polarisation stokes|none] [--wavelength-bins K] [--diffraction

@@ -1,0 +1,41 @@
+// The compiled half of the Python package `dropscope` (docs/python.md); dropscope/__init__.py is the API.
+#include "PythonScene.hpp"
+
+#include "cli/BadInput.hpp"
+#include "cli/MieCommand.hpp"
+#include "cli/SnapshotCommand.hpp"
+#include "cli/TraceCommand.hpp"
+#include "results/Version.hpp"
+#include "scene/SceneLoader.hpp"
+
+#include <pybind11/pybind11.h>
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_dropscope, module) {
+    using namespace dropscope;
+    module.doc() = "dropscope's engine (the API is the package dropscope, docs/python.md)";
+    module.attr("__version__") = std::string(dropscopeVersion());
+    // A bad scene is a ValueError whose text is the CLI's "FILE: JSON.PATH: message"; other bad input (an
+    // option out of range, an output folder that cannot be used) a plain ValueError with the CLI's text.
+    py::register_exception<SceneError>(module, "SceneError", PyExc_ValueError);
+    py::register_exception<BadInputError>(module, "BadInputError", PyExc_ValueError);
+
+    py::dict limits;
+    limits["trace_bins"] = kMaxTraceBins;
+    limits["trace_threads"] = kMaxTraceThreads;
+    limits["trace_paths"] = kMaxTracePaths;
+    limits["wavelength_bins"] = kMaxWavelengthBins;
+    limits["mie_sizes"] = kMaxSizeCount;
+    limits["snapshot_pixels_min"] = kMinSnapshotPixels;
+    limits["snapshot_pixels_max"] = kMaxSnapshotPixels;
+    limits["snapshot_paths"] = kMaxDrawnPaths;
+    limits["snapshot_photons"] = kMaxSnapshotPhotons;
+    module.attr("limits") = limits;
+
+    python::bindScene(module);
+    python::bindQuery(module);
+    python::bindTrace(module);
+    python::bindMie(module);
+    python::bindSnapshot(module);
+}

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "scene/Scene.hpp"
+#include "tree/Octree.hpp"
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace dropscope::python {
+
+// The scene behind a Python `dropscope.Scene`: the JSON text it was read from (a file's, or the dict's as
+// json.dumps wrote it), the origin that names it in messages and results ("scene.json", "<dict>"), and the
+// parsed Scene. An edit replaces the text and parses it again, all or nothing: the loader's rules, overlaps
+// included, hold for every state a Python scene can be in. Traces keep the Scene they started with.
+class PythonScene {
+public:
+    // Throws SceneError as the loader does.
+    PythonScene(std::string text, std::string origin);
+
+    const std::string& text() const { return text_; }
+    const std::string& origin() const { return origin_; }
+    const Scene& scene() const { return *scene_; }
+    std::shared_ptr<const Scene> shared() const { return scene_; }
+
+    // Parses `text` as the scene's new state (same origin); on SceneError nothing changes.
+    void replace(std::string text);
+
+    // The octree of `dropscope query`: the shapes with the scene's octree settings, built at the first query
+    // after each change (the caller holds the GIL).
+    std::shared_ptr<const Octree> octree() const;
+
+private:
+    std::string text_;
+    std::string origin_;
+    std::shared_ptr<const Scene> scene_;
+    mutable std::shared_ptr<const Octree> octree_;
+};
+
+void bindScene(pybind11::module_& module);
+void bindQuery(pybind11::module_& module);
+void bindTrace(pybind11::module_& module);
+void bindMie(pybind11::module_& module);
+void bindSnapshot(pybind11::module_& module);
+
+}  // namespace dropscope::python
