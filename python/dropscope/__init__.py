@@ -17,10 +17,21 @@ import math
 import numbers
 import os
 
-import numpy as np
+from ._build import PYTHON as _BUILT_FOR
+from ._build import PYTHON_VERSION as _BUILT_FOR_VERSION
 
-from . import _dropscope as _core
-from ._dropscope import SceneError
+try:
+    import numpy as np
+    from . import _dropscope as _core
+except ImportError as _error:
+    import sys as _sys
+
+    raise ImportError(
+        f"dropscope: {_error}. The module was built for {_BUILT_FOR} (Python {_BUILT_FOR_VERSION}) and needs numpy; "
+        f"this is {_sys.executable} (Python {_sys.version.split()[0]}). Run it with {_BUILT_FOR}, or build for this "
+        "interpreter with -DPython3_EXECUTABLE (docs/python.md)") from None
+
+from ._dropscope import SceneError  # noqa: E402
 
 __all__ = [
     "Scene",

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `cmake --install` of a build into a fresh prefix, then used from there alone, as a user would:
-#   - the Python package: imported from the prefix (not the build tree), a trace of the default scene whose
+#   - the Python package: imported from the prefix (not the build tree), a trace of an absorbing sphere whose
 #     counts equal `dropscope trace`'s;
 #   - the C++ package: a tiny project (tests/install/consumer) configured with find_package(dropscope) against the
 #     prefix, built, and run on the same scene: the same counts again.
@@ -10,7 +10,8 @@ build="$1"
 work="$2"
 python="$3"
 source="$4"
-scene="$source/assets/scenes/default.json"
+# Photons end in every fate there: escaped (some unscattered) and absorbed.
+scene="$source/assets/scenes/validation/opaque-sphere.json"
 rm -rf "$work"
 mkdir -p "$work"
 prefix="$work/prefix"
@@ -20,7 +21,7 @@ cmake --install "$build" --prefix "$prefix" >"$work/install.log"
 expected=$("$python" -c 'import json, sys
 s = json.load(open(sys.argv[1]))
 c = s["counts"]
-print(s["photons"], c["escaped"], c["absorbed"], c["lost"])' "$work/cli/summary.json")
+print(s["photons"], c["escaped"], c["absorbed"], c["lost"], c["unscattered"])' "$work/cli/summary.json")
 echo "dropscope trace: $expected"
 
 site=$(echo "$prefix"/lib/python3*/dist-packages)
@@ -30,7 +31,7 @@ got=$(env -u PYTHONPATH PYTHONPATH="$site" PYTHONDONTWRITEBYTECODE=1 "$python" -
 assert pathlib.Path(dropscope.__file__).resolve().is_relative_to(pathlib.Path(sys.argv[1]).resolve()), dropscope.__file__
 s = dropscope.trace(dropscope.load_scene(sys.argv[2]), 2000, seed=5).summary
 c = s["counts"]
-print(s["photons"], c["escaped"], c["absorbed"], c["lost"])' "$prefix" "$scene")
+print(s["photons"], c["escaped"], c["absorbed"], c["lost"], c["unscattered"])' "$prefix" "$scene")
 echo "installed Python package: $got"
 [[ "$got" == "$expected" ]] || { echo "the installed Python package counts differently"; exit 1; }
 

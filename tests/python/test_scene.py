@@ -98,3 +98,16 @@ def test_removing_a_generated_droplet_makes_every_droplet_explicit():
     after = scene.to_dict()
     assert "generators" not in after and len(after["shapes"]) == 49
     assert scene.inspect()["shapes"][10]["bounds"] == shapes[11]["bounds"]
+
+
+def test_an_interpreter_without_numpy_is_told_which_one_the_module_is_for():
+    import subprocess
+    import sys
+
+    # numpy hidden (None in sys.modules makes its import fail), as on an interpreter that lacks it.
+    done = subprocess.run([sys.executable, "-c", "import sys; sys.modules['numpy'] = None; import dropscope"],
+                          capture_output=True, text=True)
+    assert done.returncode == 1
+    last = done.stderr.strip().splitlines()[-1]
+    assert last.startswith("ImportError: dropscope: ") and "The module was built for " in last
+    assert "needs numpy" in last and "docs/python.md" in last

@@ -1,5 +1,5 @@
 // Traces a scene with the installed engine and prints the photon fates as `dropscope trace` counts them:
-// consumer SCENE PHOTONS SEED prints "photons escaped absorbed lost".
+// consumer SCENE PHOTONS SEED prints "photons escaped absorbed lost unscattered".
 #include "run/TraceRun.hpp"
 #include "scene/SceneLoader.hpp"
 #include "tally/FateTally.hpp"
@@ -25,9 +25,10 @@ int main(int argc, char** argv) {
         const TraceResult result =
             runTrace(optical, scene.sources, settings, standardTallies(180, settings.transport.polarisation));
         const FateTally& fates = result.tallies.get<FateTally>();
-        std::printf("%llu %llu %llu %llu\n", static_cast<unsigned long long>(result.photons),
+        std::printf("%llu %llu %llu %llu %llu\n", static_cast<unsigned long long>(result.photons),
                     static_cast<unsigned long long>(fates.escaped()), static_cast<unsigned long long>(fates.absorbed()),
-                    static_cast<unsigned long long>(fates.lost()));
+                    static_cast<unsigned long long>(fates.lost()),
+                    static_cast<unsigned long long>(fates.unscattered()));
     } catch (const std::exception& error) {
         std::fprintf(stderr, "consumer: %s\n", error.what());
         return 1;
