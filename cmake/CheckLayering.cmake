@@ -26,9 +26,12 @@ set(layers
     "12|cli|app/cli"
     "12|gui|app/gui"
     "13|window|app/gui/window"
-    "14|program|app")
-# Lower layers a layer must still not include: the window is the GUI's, not the command line's.
+    "14|program|app"
+    "13|python|python/module")
+# Lower layers a layer must still not include: the window is the GUI's, not the command line's; the Python
+# module is the command line's sibling, not the GUI's.
 set(unrelated_window cli)
+set(unrelated_python gui window)
 # Include roots: a quoted include "X/..." is looked up under each of these, then beside the file.
 set(include_roots engine app)
 # Libraries a layer must not include (regular expressions on the <...> name), by layer name.

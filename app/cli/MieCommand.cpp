@@ -152,14 +152,15 @@ MieProblem sceneProblem(const MieOptions& options, const Scene& scene) {
 }
 
 MieProblem problemOf(const MieOptions& options, const Scene* scene) {
-    const int ways = (options.x ? 1 : 0) + (options.xRange.empty() ? 0 : 1) + (options.scenePath.empty() ? 0 : 1);
+    const bool sceneGiven = scene != nullptr || !options.scenePath.empty();
+    const int ways = (options.x ? 1 : 0) + (options.xRange.empty() ? 0 : 1) + (sceneGiven ? 1 : 0);
     if (ways != 1) throw BadInputError("mie: give exactly one of --x, --x-range and --scene");
     if (options.xCount && options.xRange.empty()) throw BadInputError("--x-count: only with --x-range");
-    if ((options.shape || options.generator) && options.scenePath.empty()) {
+    if ((options.shape || options.generator) && !sceneGiven) {
         throw BadInputError(options.shape ? "--shape: only with --scene" : "--generator: only with --scene");
     }
     if (options.shape && options.generator) throw BadInputError("--shape and --generator: choose one");
-    if (!options.scenePath.empty()) {
+    if (sceneGiven) {
         if (options.index || options.kappa) {
             throw BadInputError(std::string(options.index ? "--index" : "--kappa") +
                                 ": with --scene the index comes from the shape's medium and the ambient");

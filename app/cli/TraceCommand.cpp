@@ -142,13 +142,14 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
 }
 
 TraceSettings checkedTraceSettings(const TraceOptions& options) {
+    TraceSettings settings = traceSettings(options);  // refuses --polarisation stokes with Schlick first
     if (static_cast<std::uint64_t>(options.bins) * static_cast<std::uint64_t>(options.wavelengthBins) >
         kMaxSpectralCells) {
         throw BadInputError("--bins " + std::to_string(options.bins) + " with --wavelength-bins " +
                             std::to_string(options.wavelengthBins) + ": more than " +
                             std::to_string(kMaxSpectralCells) + " cells in angular_spectral.csv");
     }
-    return traceSettings(options);
+    return settings;
 }
 
 PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene) {

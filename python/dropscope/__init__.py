@@ -51,6 +51,11 @@ __all__ = [
 __version__ = _core.__version__
 # The bounds of the options, as the command-line program's (dict: name -> bound).
 limits = dict(_core.limits)
+_UINT64_MAX = 2**64 - 1  # photons, seeds and ids: the CLI's whole numbers are unsigned 64-bit
+
+# GNU OpenMP cannot start threads in a process forked after it ran some (multiprocessing's default on Linux):
+# such a child computes on one thread instead of hanging (docs/python.md, "Processes and threads").
+os.register_at_fork(after_in_child=_core._after_fork_in_child)
 
 
 def _whole(name, value, lowest, highest=None):
@@ -115,7 +120,8 @@ class Scene:
 
     def to_dict(self):
         """The scene as a dict of the scene format: the file as written (generators kept), with the edits made."""
-        return json.loads(self._core.text)
+        text = self._core.text
+        return json.loads(text[1:] if text.startswith("\ufeff") else text)  # a byte-order mark, as the loader
 
     def add_shape(self, shape):
         """Adds a shape (a dict as in the scene file's "shapes") after the explicit shapes; returns its id.
@@ -138,7 +144,7 @@ class Scene:
         """
         if isinstance(shape, str):
             names = self._core.shape_names
-            if shape not in names:
+            if not shape or shape not in names:  # unnamed shapes have the name ""
                 raise KeyError(f"remove_shape: no shape named {shape!r}")
             index = names.index(shape)
         else:
@@ -154,22 +160,40 @@ class Scene:
         self._core.replace(_dumps(document, self.origin))
 
 
+def _json_value(value):
+    """numpy numbers and arrays in a scene dict, as the numbers and lists they hold."""
+    if isinstance(value, (np.generic, np.ndarray)):
+        return value.tolist()
+    raise TypeError(f"Object of type {type(value).__name__} is not JSON serializable")
+
+
 def _dumps(document, origin):
     try:
-        return json.dumps(document, allow_nan=False)
+        return json.dumps(document, allow_nan=False, default=_json_value)
     except (TypeError, ValueError) as error:
         raise SceneError(f"{origin}: not expressible as JSON: {error}") from None
 
 
+def _path(name, path):
+    text = os.fspath(path)
+    if not isinstance(text, str):
+        text = os.fsdecode(text)
+    if "\0" in text:
+        raise ValueError(f"{name}: a path with a NUL character: {text!r}")
+    return text
+
+
 def load_scene(path):
     """Reads a scene file. Raises SceneError ("FILE: JSON.PATH: message") for a bad one."""
-    return Scene(_core.SceneCore.read(os.fspath(path)))
+    return Scene(_core.SceneCore.read(_path("load_scene", path)))
 
 
 def scene_from_dict(document, origin="<dict>"):
     """A scene from a dict of the scene format; `origin` names it in messages and results."""
     if not isinstance(document, dict):
         raise TypeError(f"scene_from_dict: expected a dict, got {type(document).__name__}")
+    if not isinstance(origin, str) or not origin:
+        raise ValueError("scene_from_dict: origin must be a non-empty name")
     return Scene(_core.SceneCore(_dumps(document, origin), origin))
 
 
@@ -248,27 +272,29 @@ class TraceResult:
 
     def save(self, directory):
         """Writes the files of `dropscope trace --out DIRECTORY` (created), all of them or none."""
-        self._core.save(os.fspath(directory))
+        self._core.save(_path("save", directory))
 
     def __repr__(self):
         summary = self.summary
         return f"<dropscope.TraceResult: {summary['photons']} photons of {summary['scene']!r}>"
 
 
-def trace(scene, photons, seed=1, threads=0, bins=180, polarisation="stokes", diffraction="none",
+def trace(scene, photons, seed=1, threads=0, bins=180, polarisation=None, diffraction="none",
           wavelength_bins=1, orders=False, paths=0, progress=None, fresnel="exact", max_events=10000):
     """Traces photons through the scene, as `dropscope trace` with the same options; returns a TraceResult.
 
-    The same seed gives the same numbers as the command-line program, bit for bit, for any thread count.
+    polarisation: "stokes" or "none"; None (the default) is the CLI's default, "stokes", or "none" with
+    fresnel="schlick". The same seed gives the same numbers as the command-line program, bit for bit, for any
+    thread count.
     progress, when given, is called as progress(done, total) about four times a second and once at the end.
     Ctrl-C stops the run cleanly and raises KeyboardInterrupt. The GIL is released while tracing.
     """
     core = _scene_core(scene)
-    photons = _whole("photons", photons, 1)
-    seed = _whole("seed", seed, 0)
+    photons = _whole("photons", photons, 1, _UINT64_MAX)
+    seed = _whole("seed", seed, 0, _UINT64_MAX)
     threads = _whole("threads", threads, 0, limits["trace_threads"])
     bins = _whole("bins", bins, 1, limits["trace_bins"])
-    polarisation = _choice("polarisation", polarisation, ("stokes", "none"))
+    polarisation = "" if polarisation is None else _choice("polarisation", polarisation, ("stokes", "none"))
     diffraction = _choice("diffraction", diffraction, ("none", "fraunhofer"))
     wavelength_bins = _whole("wavelength_bins", wavelength_bins, 1, limits["wavelength_bins"])
     paths = _whole("paths", paths, 0, limits["trace_paths"])
@@ -299,7 +325,7 @@ class MieResult:
 
     def save(self, directory):
         """Writes mie.csv and summary.json into the folder (created), both or neither."""
-        self._core.save(os.fspath(directory))
+        self._core.save(_path("save", directory))
 
     def __repr__(self):
         s = self.summary
@@ -322,8 +348,8 @@ def mie(index=None, kappa=None, x=None, x_range=None, x_count=None, scene=None, 
         _number("index", index), _number("kappa", kappa), _number("x", x), x_range_values,
         None if x_count is None else _whole("x_count", x_count, 1, limits["mie_sizes"]),
         None if scene is None else _scene_core(scene),
-        None if shape is None else _whole("shape", shape, 0),
-        None if generator is None else _whole("generator", generator, 0),
+        None if shape is None else _whole("shape", shape, 0, _UINT64_MAX),
+        None if generator is None else _whole("generator", generator, 0, _UINT64_MAX),
         _whole("bins", bins, 1, limits["trace_bins"])))
 
 
@@ -373,9 +399,9 @@ def snapshot(scene, width=800, height=600, **options):
         elif name == "photons":
             given[name] = _whole(name, value, 0, limits["snapshot_photons"])
         elif name == "seed":
-            given[name] = _whole(name, value, 0)
+            given[name] = _whole(name, value, 0, _UINT64_MAX)
         elif name == "select":
-            given[name] = _whole(name, value, 0)
+            given[name] = _whole(name, value, 0, limits["snapshot_select"])
         elif name in _SNAPSHOT_SWITCHES:
             given[name] = bool(value)
         else:

@@ -7,7 +7,9 @@
 #include "cli/TraceCommand.hpp"
 #include "results/Version.hpp"
 #include "scene/SceneLoader.hpp"
+#include "tree/RayHit.hpp"
 
+#include <omp.h>
 #include <pybind11/pybind11.h>
 
 namespace py = pybind11;
@@ -31,7 +33,16 @@ PYBIND11_MODULE(_dropscope, module) {
     limits["snapshot_pixels_max"] = kMaxSnapshotPixels;
     limits["snapshot_paths"] = kMaxDrawnPaths;
     limits["snapshot_photons"] = kMaxSnapshotPhotons;
+    limits["snapshot_select"] = std::uint64_t{RayHit::kNone} - 1;
     module.attr("limits") = limits;
+
+    // GNU OpenMP cannot start threads in a child forked after the parent ran them (multiprocessing's default
+    // start method on Linux): its first parallel region would wait forever. dropscope/__init__.py calls this
+    // after every fork (os.register_at_fork); the child then runs everything on one thread.
+    module.def("_after_fork_in_child", [] {
+        python::forkedChild = true;
+        omp_set_num_threads(1);
+    });
 
     python::bindScene(module);
     python::bindQuery(module);

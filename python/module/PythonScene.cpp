@@ -8,6 +8,7 @@
 
 #include <pybind11/stl.h>
 
+#include <filesystem>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -16,13 +17,14 @@ namespace py = pybind11;
 
 namespace dropscope::python {
 
-PythonScene::PythonScene(std::string text, std::string origin)
+PythonScene::PythonScene(std::string text, std::string origin, std::string base)
     : text_(std::move(text)),
       origin_(std::move(origin)),
+      base_(std::move(base)),
       scene_(std::make_shared<const Scene>(parseScene(text_, origin_))) {}
 
 void PythonScene::replace(std::string text) {
-    auto scene = std::make_shared<const Scene>(parseScene(text, origin_));
+    auto scene = std::make_shared<const Scene>(parseScene(text, base_.empty() ? origin_ : base_));
     text_ = std::move(text);
     scene_ = std::move(scene);
     octree_.reset();
@@ -42,7 +44,11 @@ void bindScene(py::module_& module) {
     py::class_<PythonScene>(module, "SceneCore")
         .def(py::init<std::string, std::string>(), py::arg("text"), py::arg("origin"))
         .def_static(
-            "read", [](const std::string& path) { return PythonScene(readJsonFileText(path), path); }, py::arg("path"))
+            "read",
+            [](const std::string& path) {
+                return PythonScene(readJsonFileText(path), path, std::filesystem::absolute(path).string());
+            },
+            py::arg("path"))
         .def_property_readonly("text", &PythonScene::text)
         .def_property_readonly("origin", &PythonScene::origin)
         .def("replace", &PythonScene::replace, py::arg("text"))

@@ -17,8 +17,9 @@ namespace dropscope::python {
 // included, hold for every state a Python scene can be in. Traces keep the Scene they started with.
 class PythonScene {
 public:
-    // Throws SceneError as the loader does.
-    PythonScene(std::string text, std::string origin);
+    // Throws SceneError as the loader does. `base`, when not empty, is the file's absolute path: edits parse
+    // the scene again under it, so files the scene refers to (Bezier patches) are found after a chdir.
+    PythonScene(std::string text, std::string origin, std::string base = {});
 
     const std::string& text() const { return text_; }
     const std::string& origin() const { return origin_; }
@@ -35,9 +36,13 @@ public:
 private:
     std::string text_;
     std::string origin_;
+    std::string base_;
     std::shared_ptr<const Scene> scene_;
     mutable std::shared_ptr<const Octree> octree_;
 };
+
+// Set in a process forked from one that had loaded the module: it traces on one thread (Module.cpp).
+inline bool forkedChild = false;
 
 void bindScene(pybind11::module_& module);
 void bindQuery(pybind11::module_& module);

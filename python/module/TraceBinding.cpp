@@ -88,7 +88,7 @@ TraceOptions traceOptions(const PythonScene& scene, std::uint64_t photons, std::
     options.scenePath = scene.origin();
     options.photons = photons;
     options.seed = seed;
-    options.threads = threads;
+    options.threads = forkedChild ? 1 : threads;  // see forkedChild
     options.bins = bins;
     options.polarisation = polarisation;
     options.diffraction = diffraction;
@@ -121,6 +121,12 @@ std::shared_ptr<TraceRunCore> trace(const PythonScene& pythonScene, std::uint64_
     TraceControl control;
     control.stop = &stop;
     control.onProgress = [&](const TraceProgress& now) {
+        // A daemon thread still tracing when the interpreter exits: taking the GIL would end the thread inside
+        // the OpenMP region. Stop instead; the interpreter is going away.
+        if (_Py_IsFinalizing()) {
+            stop = true;
+            return;
+        }
         py::gil_scoped_acquire acquire;
         if (raised) return;
         try {

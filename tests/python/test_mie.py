@@ -80,3 +80,13 @@ def test_a_scene_without_a_sphere_names_it():
     scene = dropscope.load_scene(SOURCE_DIR / "assets/scenes/shapes_gallery.json")
     with pytest.raises(ValueError, match=r"shapes_gallery\.json: .*--shape ID or --generator I"):
         dropscope.mie(scene=scene)
+
+
+def test_a_scene_is_a_scene_whatever_its_name():
+    scene = dropscope.load_scene(SOURCE_DIR / "assets/scenes/mie-droplet.json")
+    with pytest.raises(ValueError, match="give exactly one of --x, --x-range and --scene"):
+        dropscope.mie(scene=scene, x=5, index=1.33)
+    with pytest.raises(ValueError, match="--shape: only with --scene"):
+        dropscope.mie(index=1.33, x=5, shape=0)
+    with pytest.raises(ValueError, match=r"shape: must be a whole number from 0 to 18446744073709551615"):
+        dropscope.mie(scene=scene, shape=2**64)

@@ -111,3 +111,33 @@ def test_an_interpreter_without_numpy_is_told_which_one_the_module_is_for():
     last = done.stderr.strip().splitlines()[-1]
     assert last.startswith("ImportError: dropscope: ") and "The module was built for " in last
     assert "needs numpy" in last and "docs/python.md" in last
+
+
+
+def test_awkward_names_paths_and_values(tmp_path, monkeypatch):
+    document = json.loads((SOURCE_DIR / "assets/scenes/cloud.json").read_text())
+    document["generators"][0]["count"] = 5
+    scene = dropscope.scene_from_dict(document)
+    with pytest.raises(KeyError):
+        scene.remove_shape("")  # unnamed shapes have no name to be removed by
+    assert len(scene) == 5
+    with pytest.raises(ValueError, match="origin must be a non-empty name"):
+        dropscope.scene_from_dict(document, origin="")
+    with pytest.raises(ValueError, match="NUL"):
+        dropscope.load_scene(str(DEFAULT) + "\0zzz")
+    import numpy as np
+
+    document["generators"][0]["count"] = np.int64(7)  # numpy numbers are numbers
+    document["sources"][0]["origin"] = np.array([0.0, 0.0, -20.0])
+    assert len(dropscope.scene_from_dict(document)) == 7
+    bom = tmp_path / "bom.json"
+    bom.write_bytes(b"\xef\xbb\xbf" + DEFAULT.read_bytes())
+    assert dropscope.load_scene(bom).to_dict() == json.loads(DEFAULT.read_text())
+
+
+def test_a_scene_read_by_a_relative_path_can_be_edited_after_a_chdir(monkeypatch):
+    monkeypatch.chdir(SOURCE_DIR / "assets/scenes")
+    scene = dropscope.load_scene("shapes_gallery.json")  # its Bezier patches are in a file beside it
+    monkeypatch.chdir("/")
+    scene.remove_shape(len(scene) - 1)
+    assert scene.origin == "shapes_gallery.json"

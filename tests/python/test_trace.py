@@ -44,6 +44,23 @@ def traced(tmp_path_factory):
     return folder, result, calls
 
 
+def h5_items(path):
+    """Every dataset and attribute of an HDF5 file by path, the run's seconds left out."""
+    import h5py
+
+    items = {}
+    with h5py.File(path, "r") as file:
+        def visit(name, node):
+            for key, value in node.attrs.items():
+                items[f"{name}@{key}"] = np.asarray(value).tolist()
+            if isinstance(node, h5py.Dataset):
+                items[name] = np.asarray(node[()]).tolist()
+        file.visititems(visit)
+        for key, value in file.attrs.items():
+            items[f"@{key}"] = np.asarray(value).tolist()
+    return {key: value for key, value in items.items() if "seconds" not in key and "summary_json" not in key}
+
+
 def test_save_writes_the_cli_files_byte_for_byte(traced):
     folder, result, _ = traced
     cli, python = folder / "cli", folder / "python"
@@ -55,6 +72,8 @@ def test_save_writes_the_cli_files_byte_for_byte(traced):
         if name in ("summary.json", "results.h5"):  # both record the run's seconds
             continue
         assert (cli / name).read_bytes() == (python / name).read_bytes(), name
+    cli_items, python_items = h5_items(cli / "results.h5"), h5_items(python / "results.h5")
+    assert len(cli_items) > 20 and cli_items == python_items  # the scene's JSON text and every table
     cli_summary = json.loads((cli / "summary.json").read_text())
     assert without_timing(cli_summary) == without_timing(json.loads((python / "summary.json").read_text()))
     assert without_timing(result.summary) == without_timing(cli_summary)
@@ -135,7 +154,7 @@ def test_the_thread_count_does_not_change_the_numbers():
 
 def test_bad_options_raise_value_error_and_save_refuses_a_file(tmp_path):
     scene = dropscope.scene_from_dict(DETECTOR_SCENE)
-    with pytest.raises(ValueError, match=r"photons: must be a whole number >= 1, not 0"):
+    with pytest.raises(ValueError, match=r"photons: must be a whole number from 1 to \d+, not 0"):
         dropscope.trace(scene, 0)
     with pytest.raises(ValueError, match=r"photons: expected a whole number, got 1\.5"):
         dropscope.trace(scene, 1.5)
@@ -144,7 +163,13 @@ def test_bad_options_raise_value_error_and_save_refuses_a_file(tmp_path):
     with pytest.raises(ValueError, match=r"polarisation: must be one of 'stokes', 'none', not 'circular'"):
         dropscope.trace(scene, 10, polarisation="circular")
     with pytest.raises(ValueError, match=r"--polarisation stokes: needs --fresnel exact"):
-        dropscope.trace(scene, 10, fresnel="schlick")
+        dropscope.trace(scene, 10, fresnel="schlick", polarisation="stokes")
+    assert dropscope.trace(scene, 10, fresnel="schlick").summary["polarisation"] == "none"  # as the CLI's default
+    with pytest.raises(ValueError, match=r"photons: must be a whole number from 1 to 18446744073709551615"):
+        dropscope.trace(scene, 2**64)
+    with pytest.raises(ValueError, match=r"seed: must be a whole number from 0 to 18446744073709551615"):
+        dropscope.trace(scene, 10, seed=1e20)
+    assert dropscope.trace(scene, np.int64(10), seed=2**64 - 1).summary["seed"] == 2**64 - 1
     with pytest.raises(ValueError, match=r"more than 10000000 cells"):
         dropscope.trace(scene, 10, bins=100000, wavelength_bins=1000)
     no_sources = dropscope.load_scene(SOURCE_DIR / "tests/data/scenes/no_sources.json")
@@ -220,3 +245,25 @@ def test_ctrl_c_stops_the_run_and_raises_keyboard_interrupt(detector_scene_file)
         process.kill()
         raise
     assert process.returncode == 7 and "KeyboardInterrupt" in out
+
+
+FORK_SCRIPT = """
+import multiprocessing, sys, dropscope
+scene = dropscope.load_scene(sys.argv[1])
+def child(_):
+    r = dropscope.trace(scene, 2000, threads=2, seed=4)
+    return r.summary["threads"], r.summary["counts"]["escaped"], dropscope.mie(index=1.33, x=30).summary["qext"]
+parent = dropscope.trace(scene, 2000, threads=2, seed=4)
+with multiprocessing.get_context("fork").Pool(1) as pool:
+    threads, escaped, qext = pool.map(child, [0])[0]
+assert threads == 1 and escaped == parent.summary["counts"]["escaped"], (threads, escaped)
+assert qext == dropscope.mie(index=1.33, x=30).summary["qext"]
+print("forked child traced on one thread")
+"""
+
+
+def test_a_forked_child_traces_on_one_thread_instead_of_hanging(detector_scene_file):
+    done = subprocess.run([sys.executable, "-c", FORK_SCRIPT, str(detector_scene_file)], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "forked child traced on one thread" in done.stdout
