@@ -213,16 +213,25 @@ def query(scene, origins, directions, brute=False):
                        np.asarray(directions, dtype=np.float64), bool(brute))
 
 
-class TraceResult:
-    """What `trace` returns: the run's files as Python objects (docs/python.md)."""
+class _RunResult:
+    """A finished run of the engine (its core object) with its summary and its files."""
 
     def __init__(self, core):
         self._core = core
 
     @functools.cached_property
     def summary(self):
-        """The dict of summary.json."""
+        """The dict of the run's summary.json."""
         return json.loads(self._core.summary_json())
+
+    def save(self, directory):
+        """Writes the command's files into the folder (created), all of them or none."""
+        self._core.save(_path("save", directory))
+
+
+class TraceResult(_RunResult):
+    """What `trace` returns: the files of `dropscope trace` as Python objects (docs/python.md); save(dir) writes
+    them as the CLI does."""
 
     @functools.cached_property
     def tables(self):
@@ -270,10 +279,6 @@ class TraceResult:
         """The recorded photons (trace with paths=K) as the dicts of paths.jsonl."""
         return [json.loads(line) for line in self._core.paths_jsonl().splitlines()]
 
-    def save(self, directory):
-        """Writes the files of `dropscope trace --out DIRECTORY` (created), all of them or none."""
-        self._core.save(_path("save", directory))
-
     def __repr__(self):
         summary = self.summary
         return f"<dropscope.TraceResult: {summary['photons']} photons of {summary['scene']!r}>"
@@ -306,26 +311,15 @@ def trace(scene, photons, seed=1, threads=0, bins=180, polarisation=None, diffra
                                    bool(orders), paths, progress, fresnel, max_events))
 
 
-class MieResult:
-    """What `mie` returns: mie.csv's columns and summary.json's dict."""
-
-    def __init__(self, core):
-        self._core = core
-
-    @functools.cached_property
-    def summary(self):
-        """The dict of the mie command's summary.json (qext, qsca, qabs, qback, g, x, index, kappa, ...)."""
-        return json.loads(self._core.summary_json())
+class MieResult(_RunResult):
+    """What `mie` returns: mie.csv's columns (.angular) and summary.json's dict (.summary: qext, qsca, qabs,
+    qback, g, x, index, kappa, ...); save(dir) writes both files as `dropscope mie` does."""
 
     @functools.cached_property
     def angular(self):
         """mie.csv: theta_lo_deg, theta_hi_deg, fraction, fraction_per_sr, p12_over_p11, p33_over_p11,
         p34_over_p11 as numpy arrays."""
         return dict(self._core.columns())
-
-    def save(self, directory):
-        """Writes mie.csv and summary.json into the folder (created), both or neither."""
-        self._core.save(_path("save", directory))
 
     def __repr__(self):
         s = self.summary
