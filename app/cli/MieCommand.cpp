@@ -34,7 +34,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Sizes of one --x-range: each is a full Mie computation (15 ms at x = 1000 with 180 bins).
 // A range expected to take longer than kAnnouncedSeconds is announced on stderr with its estimate.
 constexpr double kSecondsPerSizeAtX1000 = 0.015;
 constexpr double kAnnouncedSeconds = 5.0;

@@ -1,9 +1,7 @@
 // dropscope.mie: `dropscope mie` in-process (computeMie), its table and summary for Python.
 #include "PythonScene.hpp"
 
-#include "cli/BadInput.hpp"
 #include "cli/MieCommand.hpp"
-#include "cli/OutputDirectory.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -58,13 +56,7 @@ void bindMie(py::module_& module) {
         .def(
             "save",
             [](const MieRun& self, const std::string& directory) {
-                checkOutputDirectory(directory, {"mie.csv", "summary.json"});
-                createOutputDirectory(directory);
-                try {
-                    writeMieFiles(directory, self);
-                } catch (const std::runtime_error& error) {
-                    throw BadInputError(error.what());
-                }
+                saveRunFiles(directory, {"mie.csv", "summary.json"}, [&] { writeMieFiles(directory, self); });
             },
             py::arg("directory"));
     module.def(

@@ -1,6 +1,8 @@
 #include "PythonScene.hpp"
 
+#include "cli/BadInput.hpp"
 #include "cli/InspectReport.hpp"
+#include "cli/OutputDirectory.hpp"
 #include "cli/SceneSummary.hpp"
 #include "scene/JsonDocument.hpp"
 #include "scene/SceneLoader.hpp"
@@ -10,6 +12,7 @@
 
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -38,6 +41,17 @@ std::shared_ptr<const Octree> PythonScene::octree() const {
         octree_ = std::make_shared<const Octree>(std::move(shapes), scene_->octree);
     }
     return octree_;
+}
+
+void saveRunFiles(const std::string& directory, const std::vector<std::string>& fileNames,
+                  const std::function<void()>& write) {
+    checkOutputDirectory(directory, fileNames);
+    createOutputDirectory(directory);
+    try {
+        write();
+    } catch (const std::runtime_error& error) {
+        throw BadInputError(error.what());
+    }
 }
 
 void bindScene(py::module_& module) {

@@ -5,9 +5,11 @@
 
 #include <pybind11/pybind11.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace dropscope::python {
 
@@ -43,6 +45,11 @@ private:
 
 // Set in a process forked from one that had loaded the module: it traces on one thread (Module.cpp).
 inline bool forkedChild = false;
+
+// A run's save(dir): `directory` checked for `fileNames` and created, then `write` writes them into it (all or
+// none); an unusable folder is BadInputError, as in the CLI.
+void saveRunFiles(const std::string& directory, const std::vector<std::string>& fileNames,
+                  const std::function<void()>& write);
 
 void bindScene(pybind11::module_& module);
 void bindQuery(pybind11::module_& module);

@@ -2,8 +2,6 @@
 // dropscope.TraceResult) and, on request, as the CLI's files.
 #include "PythonScene.hpp"
 
-#include "cli/BadInput.hpp"
-#include "cli/OutputDirectory.hpp"
 #include "cli/TraceCommand.hpp"
 #include "results/PathsJsonl.hpp"
 #include "results/TraceFiles.hpp"
@@ -170,13 +168,8 @@ void bindTrace(py::module_& module) {
         .def(
             "save",
             [](const TraceRunCore& self, const std::string& directory) {
-                checkOutputDirectory(directory, traceFileNames(self.result.tallies));
-                createOutputDirectory(directory);
-                try {
-                    writeTraceFiles(directory, self.result, self.info, self.media);
-                } catch (const std::runtime_error& error) {
-                    throw BadInputError(error.what());
-                }
+                saveRunFiles(directory, traceFileNames(self.result.tallies),
+                             [&] { writeTraceFiles(directory, self.result, self.info, self.media); });
             },
             py::arg("directory"));
     module.def("trace", &trace, py::arg("scene"), py::arg("photons"), py::arg("seed"), py::arg("threads"),
