@@ -13,6 +13,7 @@ packages=(
   libglfw3-dev libimgui-dev
   xvfb xauth xdotool imagemagick
   libembree-dev libtbb-dev
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()

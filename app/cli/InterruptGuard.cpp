@@ -12,18 +12,27 @@ extern "C" void onInterrupt(int) { interruptRequested.store(true); }
 
 }  // namespace
 
-InterruptGuard::InterruptGuard() {
+InterruptGuard::InterruptGuard(Signals signals) {
     interruptRequested.store(false);
-    if (::sigaction(SIGINT, nullptr, &previous_) != 0 || previous_.sa_handler == SIG_IGN) return;
-    struct sigaction action {};
-    action.sa_handler = onInterrupt;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESETHAND;  // the next SIGINT gets the default action: kill
-    installed_ = ::sigaction(SIGINT, &action, nullptr) == 0;
+    handled_[0].signal = SIGINT;
+    handled_[1].signal = signals == kAlsoTerminate ? SIGTERM : 0;
+    for (Handled& handled : handled_) {
+        if (handled.signal == 0) continue;
+        if (::sigaction(handled.signal, nullptr, &handled.previous) != 0 || handled.previous.sa_handler == SIG_IGN) {
+            continue;
+        }
+        struct sigaction action {};
+        action.sa_handler = onInterrupt;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = SA_RESETHAND;  // the next such signal gets the default action: kill
+        handled.installed = ::sigaction(handled.signal, &action, nullptr) == 0;
+    }
 }
 
 InterruptGuard::~InterruptGuard() {
-    if (installed_) ::sigaction(SIGINT, &previous_, nullptr);
+    for (Handled& handled : handled_) {
+        if (handled.installed) ::sigaction(handled.signal, &handled.previous, nullptr);
+    }
 }
 
 const std::atomic<bool>& InterruptGuard::flag() const { return interruptRequested; }

@@ -40,17 +40,25 @@ std::string formatProgress(const TraceProgress& progress) {
 }
 
 void ProgressLine::update(const TraceProgress& progress) {
-    if (progress.seconds >= kQuietSeconds) show(progress);
+    if (progress.seconds < kQuietSeconds) return;
+    if (style_ == Style::Lines && shown_ && progress.seconds - lastShown_ < kLineSeconds) return;
+    show(progress);
 }
 
 void ProgressLine::finish(const TraceProgress& progress) {
     if (!shown_) return;
     show(progress);
-    terminal_ << '\n' << std::flush;
+    if (style_ == Style::InPlace) terminal_ << '\n' << std::flush;
 }
 
 void ProgressLine::show(const TraceProgress& progress) {
     const std::string line = formatProgress(progress);
+    if (style_ == Style::Lines) {
+        terminal_ << line << '\n' << std::flush;
+        lastShown_ = progress.seconds;
+        shown_ = true;
+        return;
+    }
     terminal_ << '\r' << line;
     if (line.size() < width_) terminal_ << std::string(width_ - line.size(), ' ');
     terminal_ << std::flush;

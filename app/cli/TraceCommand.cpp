@@ -5,6 +5,8 @@
 #include "cli/InterruptGuard.hpp"
 #include "cli/OutputDirectory.hpp"
 #include "cli/ProgressLine.hpp"
+#include "cli/RankTrace.hpp"
+#include "cli/Ranks.hpp"
 #include "cli/WholeNumberOption.hpp"
 #include "results/TraceFiles.hpp"
 #include "run/TraceRun.hpp"
@@ -76,8 +78,14 @@ void printSummary(const TraceResult& result, const fs::path& directory, std::ost
         std::snprintf(line, sizeof line, "trace: %llu photons", static_cast<unsigned long long>(result.photons));
     }
     out << line;
-    std::snprintf(line, sizeof line, " in %.3f s (%.0f photons/s, %d threads)\n", result.seconds,
+    std::snprintf(line, sizeof line, " in %.3f s (%.0f photons/s, %d threads", result.seconds,
                   result.seconds > 0.0 ? photons / result.seconds : 0.0, result.threads);
+    out << line;
+    if (result.ranks > 1) {
+        std::snprintf(line, sizeof line, " in each of %d ranks", result.ranks);
+        out << line;
+    }
+    std::snprintf(line, sizeof line, ")\n");
     out << line;
     std::snprintf(line, sizeof line, "  escaped %.6g (unscattered %.6g), absorbed %.6g, lost %.6g\n",
                   share(fates.escaped()), share(fates.unscattered()), share(fates.absorbed()), share(fates.lost()));
@@ -172,37 +180,64 @@ PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene) {
     return prepared;
 }
 
-int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err) {
+namespace {
+
+// Everything a trace does before its photons, on every rank: the checks, the scene, the tallies. Only rank 0
+// writes, so only it checks and creates the output folder.
+struct TraceSetup {
+    std::string sceneJson;
+    Scene scene;
+    PreparedTrace prepared;
+    std::optional<OpticalScene> optical;
+};
+
+void prepareTraceSetup(const TraceOptions& options, bool writes, TraceSetup& setup) {
     const fs::path directory = options.outDir;
     const PolarisationModel polarisation = checkedTraceSettings(options).transport.polarisation;
     // The file names do not depend on the bins: checked before the scene is read.
-    checkOutputDirectory(directory,
-                         traceFileNames(standardTallies(options.bins, polarisation, WavelengthBins{1, 1.0, 1.0})));
+    if (writes) {
+        checkOutputDirectory(directory,
+                             traceFileNames(standardTallies(options.bins, polarisation, WavelengthBins{1, 1.0, 1.0})));
+    }
     // The text read once: results.h5 keeps exactly what was traced.
-    const std::string sceneJson = readJsonFileText(options.scenePath);
-    const Scene scene = parseScene(sceneJson, options.scenePath);
-    PreparedTrace prepared = prepareTrace(options, scene);
-    const TraceSettings& settings = prepared.settings;
-    TallySet& tallies = prepared.tallies;
+    setup.sceneJson = readJsonFileText(options.scenePath);
+    setup.scene = parseScene(setup.sceneJson, options.scenePath);
+    setup.prepared = prepareTrace(options, setup.scene);
     // The detectors' files are named after them: checked now that they are known.
-    checkOutputDirectory(directory, traceFileNames(tallies));
-    const OpticalScene opticalScene(scene, settings.transport.diffraction != DiffractionModel::None);
-    createOutputDirectory(directory);
+    if (writes) checkOutputDirectory(directory, traceFileNames(setup.prepared.tallies));
+    setup.optical.emplace(setup.scene, setup.prepared.settings.transport.diffraction != DiffractionModel::None);
+}
+
+int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream& out, std::ostream& err) {
+    const fs::path directory = options.outDir;
+    TraceSetup setup;
+    ranks.together([&] { prepareTraceSetup(options, ranks.root(), setup); });
+    ranks.together([&] {
+        if (ranks.root()) createOutputDirectory(directory);
+    });
+    const Scene& scene = setup.scene;
+    const TraceSettings& settings = setup.prepared.settings;
 
     TraceRunInfo info{options.scenePath, scene.sources.size(), settings, scene.wavelengthNm, scene.sources};
-    info.sceneJson = sceneJson;
-    // Alive until the files are written: a first Ctrl-C while writing them is absorbed, not fatal.
-    const InterruptGuard interrupt;
+    info.sceneJson = setup.sceneJson;
+    // Alive until the files are written: a first Ctrl-C while writing them is absorbed, not fatal. mpirun
+    // turns a Ctrl-C into SIGTERM to every rank, so a rank of an MPI run takes that as its Ctrl-C.
+    const InterruptGuard interrupt(ranks.parallel() ? InterruptGuard::kAlsoTerminate : InterruptGuard::kInterruptOnly);
     std::optional<ProgressLine> progress;
-    if (isTerminal(err)) progress.emplace(err);
+    if (ranks.root() && (isTerminal(err) || ranks.parallel())) {
+        // A rank's stderr is a pipe to mpirun, which may be a terminal or a batch job's log: whole lines.
+        progress.emplace(err, ranks.parallel() ? ProgressLine::Style::Lines : ProgressLine::Style::InPlace);
+    }
     TraceControl control;
     control.stop = &interrupt.flag();
     if (progress) control.onProgress = [&](const TraceProgress& now) { progress->update(now); };
-    const TraceResult result = runTrace(opticalScene, scene.sources, info.settings, tallies, control);
+    const TraceResult result =
+        traceOnRanks(ranks, *setup.optical, scene.sources, info.settings, setup.prepared.tallies, control);
+    if (!ranks.root()) return result.partial ? kExitInterrupted : kExitSuccess;
     if (progress) progress->finish({result.photons, result.requested, result.seconds});
 
     try {
-        writeTraceFiles(directory, result, info, opticalScene.media());
+        writeTraceFiles(directory, result, info, setup.optical->media());
     } catch (const std::runtime_error& error) {
         throw BadInputError(error.what());
     }
@@ -211,6 +246,17 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
     err << "dropscope: trace interrupted: " << result.photons << " of " << result.requested
         << " photons traced, partial results in " << directory.string() << '\n';
     return kExitInterrupted;
+}
+
+}  // namespace
+
+int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream& err) {
+    const Ranks ranks;
+    try {
+        return traceAndWrite(options, ranks, out, err);
+    } catch (const RankFailed& failed) {
+        return failed.status;  // the lower rank that failed has said why
+    }
 }
 
 }  // namespace dropscope

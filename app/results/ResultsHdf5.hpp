@@ -14,8 +14,9 @@ struct ResultsFileInfo {
     std::string version;    // the root attribute dropscope_version (dropscopeVersion())
     std::string sceneJson;  // the dataset /scene_json: the scene the run traced, as JSON text
     // Summary keys (and groups of keys) left out of /summary: values that differ between runs of the same
-    // scene, seed and photon count, which would make their files differ. summary.json keeps them.
-    std::vector<std::vector<std::string>> omittedSummaryKeys = {{"seconds"}, {"threads"}};
+    // scene, seed and photon count (on more threads or ranks), which would make their files differ. summary.json
+    // keeps them.
+    std::vector<std::vector<std::string>> omittedSummaryKeys = {{"seconds"}, {"threads"}, {"ranks"}};
 };
 
 // results.h5 (docs/results-format.md): the report's summary, tables and images, the version, seed, photon count

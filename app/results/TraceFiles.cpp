@@ -16,6 +16,7 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
     ResultReport report;
     report.set({"photons"}, result.photons);
     report.set({"seed"}, info.settings.seed);
+    report.set({"ranks"}, static_cast<std::uint64_t>(result.ranks));
     report.set({"threads"}, static_cast<std::uint64_t>(result.threads));
     report.set({"seconds"}, result.seconds);
     report.set({"photons_requested"}, result.requested);
@@ -54,6 +55,7 @@ void writeTraceSummary(const ResultReport& report, std::ostream& out) {
     // docs/cli.md's order: scripts that diff summaries across versions see the same file.
     static const std::vector<std::string_view> kKeyOrder{"photons",
                                                          "seed",
+                                                         "ranks",
                                                          "threads",
                                                          "seconds",
                                                          "fractions",

@@ -19,6 +19,9 @@ public:
     UnitVector3d(double x, double y, double z) : UnitVector3d(Eigen::Vector3d(x, y, z)) {}
 
     static UnitVector3d invalid() { return UnitVector3d(); }
+    // The direction whose vector() was `components`, taken as is (not normalised again, which could move a
+    // last bit): for a direction copied through bytes, e.g. between the processes of one run.
+    static UnitVector3d restored(const Eigen::Vector3d& components) { return fromUnit(components); }
 
     explicit operator bool() const { return !std::isnan(v_.x()); }
 

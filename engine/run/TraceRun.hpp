@@ -38,7 +38,8 @@ struct TraceResult {
     std::vector<PhotonPath> paths;  // the recorded photons that were traced, by photon index
     std::uint64_t requested = 0;
     bool partial = false;  // stopped before every requested photon was traced
-    int threads = 1;
+    int threads = 1;       // in each process
+    int ranks = 1;         // processes the run was split across (MPI, docs/scaling.md)
     double seconds = 0.0;
 };
 

@@ -74,6 +74,18 @@ void AngularTally::merge(const Tally& other) {
     }
 }
 
+void AngularTally::writeScores(ScoreWriter& out) const {
+    out.word(photons_);
+    out.words(escapes_);
+    for (const auto* column : {&stokesQ_, &stokesU_, &stokesV_}) out.sums(*column);
+}
+
+void AngularTally::readScores(ScoreReader& in) {
+    photons_ = in.word();
+    in.words(escapes_);
+    for (auto* column : {&stokesQ_, &stokesU_, &stokesV_}) in.sums(*column);
+}
+
 double AngularTally::lowerEdgeDeg(int bin) const { return angularEdgeDeg(bin, bins()); }
 
 AngularTally::Columns AngularTally::columns() const {

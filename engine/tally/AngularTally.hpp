@@ -30,6 +30,8 @@ public:
     std::unique_ptr<Tally> clone() const override { return std::make_unique<AngularTally>(*this); }
     void score(const Event& event, const TallyContext& photon) override;
     void merge(const Tally& other) override;
+    void writeScores(ScoreWriter& out) const override;
+    void readScores(ScoreReader& in) override;
     // Summary "bins"; table "angular": theta_lo_deg, theta_hi_deg, fraction (of the photons traced),
     // fraction_per_sr (over the bin's solid angle 2 pi (cos lo - cos hi)); NaN when no photon was traced.
     // With stokes: stokes_q, stokes_u, stokes_v (sums over the bin as shares of the emitted power, like

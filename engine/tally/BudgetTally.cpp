@@ -56,6 +56,20 @@ void BudgetTally::merge(const Tally& other) {
     for (std::size_t i = 0; i < lostBy_.size(); ++i) lostBy_[i] += more.lostBy_[i];
 }
 
+void BudgetTally::writeScores(ScoreWriter& out) const {
+    out.word(photons_);
+    out.word(escapedElsewhere_);
+    for (const auto* counts : {&escapedInto_, &absorbedBy_, &detectedBy_}) out.words(*counts);
+    out.words(lostBy_);
+}
+
+void BudgetTally::readScores(ScoreReader& in) {
+    photons_ = in.word();
+    escapedElsewhere_ = in.word();
+    for (auto* counts : {&escapedInto_, &absorbedBy_, &detectedBy_}) in.words(*counts);
+    in.words(lostBy_);
+}
+
 void BudgetTally::report(ResultReport& report) const {
     const auto put = [&](std::vector<std::string> path, std::uint64_t count) {
         path.insert(path.begin(), "budget");

@@ -23,6 +23,8 @@ public:
     std::unique_ptr<Tally> clone() const override { return std::make_unique<BudgetTally>(*this); }
     void score(const Event& event, const TallyContext& photon) override;
     void merge(const Tally& other) override;
+    void writeScores(ScoreWriter& out) const override;
+    void readScores(ScoreReader& in) override;
     void report(ResultReport& report) const override;
 
     std::uint64_t photons() const { return photons_; }

@@ -79,6 +79,38 @@ void HitRecords::merge(const HitRecords& other) {
     hits_ = std::move(merged);
 }
 
+void HitRecords::writeScores(ScoreWriter& out) const {
+    out.word(hits_.size());
+    for (const DetectorHit& hit : hits_) {
+        out.word(hit.photon);
+        out.word(hit.sequence);
+        for (int i = 0; i < 3; ++i) out.real(hit.position[i]);
+        for (int i = 0; i < 3; ++i) out.real(hit.direction[i]);
+        out.real(hit.weight);
+        out.real(hit.wavelengthNm);
+        for (int i = 0; i < 4; ++i) out.real(hit.stokes[i]);
+        out.word(hit.events);
+        out.real(hit.pathLength);
+    }
+}
+
+void HitRecords::readScores(ScoreReader& in) {
+    const std::uint64_t count = in.word();
+    if (count > capacity_) throw std::runtime_error("tally scores: more detector records than the detector keeps");
+    hits_.assign(count, DetectorHit{});
+    for (DetectorHit& hit : hits_) {
+        hit.photon = in.word();
+        hit.sequence = in.word();
+        for (int i = 0; i < 3; ++i) hit.position[i] = in.real();
+        for (int i = 0; i < 3; ++i) hit.direction[i] = in.real();
+        hit.weight = in.real();
+        hit.wavelengthNm = in.real();
+        for (int i = 0; i < 4; ++i) hit.stokes[i] = in.real();
+        hit.events = in.word();
+        hit.pathLength = in.real();
+    }
+}
+
 ResultTable HitRecords::table(const std::string& name, bool stokes) const {
     std::vector<std::uint64_t> photon, events;
     std::vector<double> x, y, z, dx, dy, dz, weight, wavelength, pathLength;
@@ -153,6 +185,18 @@ void DetectorTally::mergeCommon(const DetectorTally& other) {
     records_.merge(other.records_);
 }
 
+void DetectorTally::writeCommonScores(ScoreWriter& out) const {
+    out.word(photons_);
+    out.word(hits_);
+    records_.writeScores(out);
+}
+
+void DetectorTally::readCommonScores(ScoreReader& in) {
+    photons_ = in.word();
+    hits_ = in.word();
+    records_.readScores(in);
+}
+
 double DetectorTally::share(double count) const {
     return photons_ > 0 ? count / static_cast<double>(photons_) : std::nan("");
 }
@@ -223,6 +267,18 @@ void PlaneDetectorTally::merge(const Tally& other) {
     addAll(stokesQ_, more.stokesQ_);
     addAll(stokesU_, more.stokesU_);
     addAll(stokesV_, more.stokesV_);
+}
+
+void PlaneDetectorTally::writeScores(ScoreWriter& out) const {
+    writeCommonScores(out);
+    out.words(counts_);
+    for (const auto* column : {&stokesQ_, &stokesU_, &stokesV_}) out.sums(*column);
+}
+
+void PlaneDetectorTally::readScores(ScoreReader& in) {
+    readCommonScores(in);
+    in.words(counts_);
+    for (auto* column : {&stokesQ_, &stokesU_, &stokesV_}) in.sums(*column);
 }
 
 void PlaneDetectorTally::report(ResultReport& report) const {
@@ -310,6 +366,18 @@ void FarFieldTally::merge(const Tally& other) {
     addAll(cieX_, more.cieX_);
     addAll(cieY_, more.cieY_);
     addAll(cieZ_, more.cieZ_);
+}
+
+void FarFieldTally::writeScores(ScoreWriter& out) const {
+    writeCommonScores(out);
+    out.words(counts_);
+    for (const auto* column : {&stokesQ_, &stokesU_, &stokesV_, &cieX_, &cieY_, &cieZ_}) out.sums(*column);
+}
+
+void FarFieldTally::readScores(ScoreReader& in) {
+    readCommonScores(in);
+    in.words(counts_);
+    for (auto* column : {&stokesQ_, &stokesU_, &stokesV_, &cieX_, &cieY_, &cieZ_}) in.sums(*column);
 }
 
 void FarFieldTally::report(ResultReport& report) const {
@@ -421,6 +489,18 @@ void ShapeAbsorptionTally::merge(const Tally& other) {
     mergeCommon(more);
     addAll(absorbed_, more.absorbed_);
     ambient_ += more.ambient_;
+}
+
+void ShapeAbsorptionTally::writeScores(ScoreWriter& out) const {
+    writeCommonScores(out);
+    out.words(absorbed_);
+    out.word(ambient_);
+}
+
+void ShapeAbsorptionTally::readScores(ScoreReader& in) {
+    readCommonScores(in);
+    in.words(absorbed_);
+    ambient_ = in.word();
 }
 
 void ShapeAbsorptionTally::report(ResultReport& report) const {

@@ -33,6 +33,8 @@ public:
     bool wants(std::uint64_t photon) const;
     void offer(const DetectorHit& hit);
     void merge(const HitRecords& other);
+    void writeScores(ScoreWriter& out) const;
+    void readScores(ScoreReader& in);
     const std::vector<DetectorHit>& hits() const { return hits_; }
     // Table `name`: photon, x, y, z, dx, dy, dz, weight, wavelength_nm, [stokes_i, stokes_q, stokes_u,
     // stokes_v,] events, path_length.
@@ -65,6 +67,8 @@ protected:
     void countHit(const TallyContext& photon, const Point& position, const Eigen::Vector3d& direction,
                   const StokesVector& stokes, double pathLength);
     void mergeCommon(const DetectorTally& other);
+    void writeCommonScores(ScoreWriter& out) const;
+    void readCommonScores(ScoreReader& in);
     // The summary's detectors.NAME values and the records table, if any.
     void reportCommon(ResultReport& report) const;
     double share(double count) const;
@@ -93,6 +97,8 @@ public:
     void scoreFlight(const Flight& flight, const TallyContext& photon) override;
     bool scoresFlights() const override { return !detector().absorbing; }
     void merge(const Tally& other) override;
+    void writeScores(ScoreWriter& out) const override;
+    void readScores(ScoreReader& in) override;
     void report(ResultReport& report) const override;
     const std::vector<std::uint64_t>& counts() const { return counts_; }
 
@@ -117,6 +123,8 @@ public:
     std::unique_ptr<Tally> clone() const override { return std::make_unique<FarFieldTally>(*this); }
     void score(const Event& event, const TallyContext& photon) override;
     void merge(const Tally& other) override;
+    void writeScores(ScoreWriter& out) const override;
+    void readScores(ScoreReader& in) override;
     void report(ResultReport& report) const override;
     const std::vector<std::uint64_t>& counts() const { return counts_; }
     const FarFieldCamera& camera() const { return camera_; }
@@ -139,6 +147,8 @@ public:
     std::unique_ptr<Tally> clone() const override { return std::make_unique<ShapeAbsorptionTally>(*this); }
     void score(const Event& event, const TallyContext& photon) override;
     void merge(const Tally& other) override;
+    void writeScores(ScoreWriter& out) const override;
+    void readScores(ScoreReader& in) override;
     void report(ResultReport& report) const override;
     const std::vector<std::uint64_t>& absorbed() const { return absorbed_; }
     std::uint64_t ambient() const { return ambient_; }

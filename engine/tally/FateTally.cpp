@@ -29,6 +29,25 @@ void FateTally::score(const Event& event, const TallyContext& photon) {
     }
 }
 
+void FateTally::writeScores(ScoreWriter& out) const {
+    for (const std::uint64_t count : {photons_, escaped_, absorbed_, lost_, detected_, unscattered_}) out.word(count);
+    out.words(lostReasons_);
+    for (const std::uint64_t count :
+         {events_.reflect, events_.refract, events_.tir, events_.absorb, events_.diffract}) {
+        out.word(count);
+    }
+}
+
+void FateTally::readScores(ScoreReader& in) {
+    for (std::uint64_t* count : {&photons_, &escaped_, &absorbed_, &lost_, &detected_, &unscattered_})
+        *count = in.word();
+    in.words(lostReasons_);
+    for (std::uint64_t* count :
+         {&events_.reflect, &events_.refract, &events_.tir, &events_.absorb, &events_.diffract}) {
+        *count = in.word();
+    }
+}
+
 void FateTally::merge(const Tally& other) {
     const FateTally& more = sameTally(*this, other);
     photons_ += more.photons_;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 
 namespace dropscope {
 
@@ -33,8 +34,22 @@ public:
 
     friend bool operator==(const FixedPointSum&, const FixedPointSum&) = default;
 
+    // The sum's 128 bits as two words (low, high), and back: how it travels between processes
+    // (tally/ScoreBytes.hpp). fromBits throws std::overflow_error for bits no sum can have.
+    std::pair<std::uint64_t, std::uint64_t> bits() const {
+        const auto word = static_cast<UnsignedUnits>(units_);
+        return {static_cast<std::uint64_t>(word), static_cast<std::uint64_t>(word >> 64)};
+    }
+    static FixedPointSum fromBits(std::uint64_t low, std::uint64_t high) {
+        const auto word = (static_cast<UnsignedUnits>(high) << 64) | low;
+        FixedPointSum sum;
+        sum.addUnits(static_cast<Units>(word));
+        return sum;
+    }
+
 private:
     __extension__ typedef __int128 Units;  // __extension__: GCC and Clang have it, ISO C++ has not
+    __extension__ typedef unsigned __int128 UnsignedUnits;
     static constexpr Units kMaxUnits = static_cast<Units>(1) << (62 + kFractionBits);
 
     // Both terms are below 2^126 in magnitude, so their sum cannot overflow the 128 bits.

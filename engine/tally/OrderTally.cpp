@@ -75,6 +75,20 @@ void OrderTally::merge(const Tally& other) {
     }
 }
 
+void OrderTally::writeScores(ScoreWriter& out) const {
+    out.word(photons_);
+    for (const std::vector<std::uint64_t>& column : orders_) out.words(column);
+    out.words(multiple_);
+    out.words(diffracted_);
+}
+
+void OrderTally::readScores(ScoreReader& in) {
+    photons_ = in.word();
+    for (std::vector<std::uint64_t>& column : orders_) in.words(column);
+    in.words(multiple_);
+    in.words(diffracted_);
+}
+
 std::uint64_t OrderTally::singleTotal() const {
     std::uint64_t total = 0;
     for (const auto& column : orders_) {

@@ -49,6 +49,8 @@ public:
     std::unique_ptr<Tally> clone() const override { return std::make_unique<OrderTally>(*this); }
     void score(const Event& event, const TallyContext& photon) override;
     void merge(const Tally& other) override;
+    void writeScores(ScoreWriter& out) const override;
+    void readScores(ScoreReader& in) override;
     void report(ResultReport& report) const override;
 
     int bins() const { return static_cast<int>(multiple_.size()); }

@@ -55,6 +55,14 @@ void SpectralAngularTally::merge(const Tally& other) {
     for (std::size_t k = 0; k < bands_.size(); ++k) bands_[k].merge(more.bands_[k]);
 }
 
+void SpectralAngularTally::writeScores(ScoreWriter& out) const {
+    for (const AngularTally& band : bands_) band.writeScores(out);
+}
+
+void SpectralAngularTally::readScores(ScoreReader& in) {
+    for (AngularTally& band : bands_) band.readScores(in);
+}
+
 void SpectralAngularTally::report(ResultReport& report) const {
     report.set({"wavelength_bins"}, static_cast<std::uint64_t>(bands_.size()));
     std::vector<double> lo, hi;

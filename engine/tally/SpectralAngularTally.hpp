@@ -33,6 +33,8 @@ public:
     std::unique_ptr<Tally> clone() const override { return std::make_unique<SpectralAngularTally>(*this); }
     void score(const Event& event, const TallyContext& photon) override;
     void merge(const Tally& other) override;
+    void writeScores(ScoreWriter& out) const override;
+    void readScores(ScoreReader& in) override;
     // Summary "wavelength_bins"; table "angular_spectral": wavelength_lo_nm, wavelength_hi_nm, then the columns
     // of AngularTally's table, band after band.
     void report(ResultReport& report) const override;

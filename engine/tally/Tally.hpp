@@ -1,6 +1,7 @@
 #pragma once
 
 #include "tally/ResultReport.hpp"
+#include "tally/ScoreBytes.hpp"
 #include "transport/PhotonObserver.hpp"
 
 #include <cstddef>
@@ -41,6 +42,10 @@ public:
 
     // Adds the scores of `other`, an emptyCopy() of this tally that was scored separately.
     virtual void merge(const Tally& other) = 0;
+    // The scores alone (not the bins or filters), for a run split across processes: readScores on an
+    // emptyCopy() of the same tally in another process restores them exactly, and merge() adds them there.
+    virtual void writeScores(ScoreWriter& out) const = 0;
+    virtual void readScores(ScoreReader& in) = 0;
 
     virtual void report(ResultReport& report) const = 0;
 };

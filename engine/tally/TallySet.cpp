@@ -35,6 +35,16 @@ void TallySet::merge(const TallySet& other) {
     for (std::size_t i = 0; i < tallies_.size(); ++i) tallies_[i]->merge(*other.tallies_[i]);
 }
 
+void TallySet::writeScores(ScoreWriter& out) const {
+    out.word(tallies_.size());
+    for (const auto& tally : tallies_) tally->writeScores(out);
+}
+
+void TallySet::readScores(ScoreReader& in) {
+    if (in.word() != tallies_.size()) throw std::runtime_error("tally scores: another run's set of tallies");
+    for (const auto& tally : tallies_) tally->readScores(in);
+}
+
 void TallySet::report(ResultReport& report) const {
     for (const auto& tally : tallies_) tally->report(report);
 }

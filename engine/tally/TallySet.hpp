@@ -55,6 +55,9 @@ public:
     bool scoresFlights() const { return !flightTallies_.empty(); }
     // Merges each tally of `other` (an emptyCopy() of this set) into its own.
     void merge(const TallySet& other);
+    // Every tally's scores in order (Tally::writeScores); readScores into an emptyCopy() of the same set.
+    void writeScores(ScoreWriter& out) const;
+    void readScores(ScoreReader& in);
     // Every tally's report, in order.
     void report(ResultReport& report) const;
 

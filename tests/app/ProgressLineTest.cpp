@@ -51,6 +51,22 @@ TEST(ProgressLine, AShorterLineBlanksTheRestOfTheLongerOne) {
     EXPECT_TRUE(second.ends_with(" ")) << text;
 }
 
+TEST(ProgressLine, LinesStyleWritesWholeLinesAtMostEveryTenSeconds) {
+    std::ostringstream log;
+    ProgressLine line(log, ProgressLine::Style::Lines);
+    line.update({10, 1000, 0.5});    // quiet
+    line.update({20, 1000, 1.0});    // shown
+    line.update({100, 1000, 10.9});  // too soon after the last
+    line.update({110, 1000, 11.0});  // shown
+    line.finish({1000, 1000, 12.0});
+    const std::string text = log.str();
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\r'), 0) << text;
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;
+    EXPECT_TRUE(text.starts_with("trace: 20 / 1000 photons")) << text;
+    EXPECT_NE(text.find("\ntrace: 110 / 1000 photons"), std::string::npos) << text;
+    EXPECT_TRUE(text.ends_with("trace: 1000 / 1000 photons (100.0%), 83 photons/s, 0 s left\n")) << text;
+}
+
 TEST(ProgressLine, AStringStreamIsNoTerminal) {
     std::ostringstream err;
     EXPECT_FALSE(isTerminal(err));

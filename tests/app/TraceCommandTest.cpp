@@ -108,13 +108,12 @@ TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
     EXPECT_NE(run.out.find(path("out")), std::string::npos) << run.out;
 
     const Json s = summary();
-    EXPECT_EQ(
-        keysOf(s),
-        (std::vector<std::string>{
-            "photons", "seed",   "threads",      "seconds", "fractions",     "events",          "photons_requested",
-            "partial", "scene",  "bins",         "fresnel", "polarisation",  "diffraction",     "max_events",
-            "paths",   "counts", "lost_reasons", "sources", "wavelength_nm", "wavelength_bins", "spectra",
-            "budget",  "version"}));
+    EXPECT_EQ(keysOf(s), (std::vector<std::string>{"photons",         "seed",         "ranks",      "threads",
+                                                   "seconds",         "fractions",    "events",     "photons_requested",
+                                                   "partial",         "scene",        "bins",       "fresnel",
+                                                   "polarisation",    "diffraction",  "max_events", "paths",
+                                                   "counts",          "lost_reasons", "sources",    "wavelength_nm",
+                                                   "wavelength_bins", "spectra",      "budget",     "version"}));
     EXPECT_EQ(s["version"], "0.1.0");
     EXPECT_EQ(keysOf(s["fractions"]),
               (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered", "detected"}));
@@ -140,6 +139,7 @@ TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
     EXPECT_EQ(s["paths"], 3);
     EXPECT_EQ(s["sources"], 1);
     EXPECT_GE(s["threads"].get<int>(), 1);
+    EXPECT_EQ(s["ranks"], 1);  // not started by mpirun
     EXPECT_GT(s["events"]["refract"].get<std::uint64_t>(), 0u);
 
     const std::vector<AngularRow> rows = angular();

@@ -31,6 +31,7 @@ TEST(TraceFiles, NoPhotonTracedGivesNullFractionsAndAPartialSummary) {
     result.requested = 1000;
     result.partial = true;
     result.threads = 3;
+    result.ranks = 4;
     TraceRunInfo info{"scene.json", 2, {}};
     const ResultReport report = traceReport(result, info);
     std::ostringstream summary;
@@ -40,6 +41,7 @@ TEST(TraceFiles, NoPhotonTracedGivesNullFractionsAndAPartialSummary) {
     EXPECT_EQ(s["photons_requested"], 1000);
     EXPECT_EQ(s["partial"], true);
     EXPECT_EQ(s["threads"], 3);
+    EXPECT_EQ(s["ranks"], 4);
     EXPECT_EQ(s["sources"], 2);
     EXPECT_EQ(s["bins"], 4);
     for (const char* fate : {"escaped", "absorbed", "lost", "unscattered"}) EXPECT_TRUE(s["fractions"][fate].is_null());
@@ -73,9 +75,9 @@ TEST(TraceFiles, SummaryKeysComeInTheDocumentedOrder) {
     const nlohmann::ordered_json json = nlohmann::ordered_json::parse(summary.str());
     for (const auto& item : json.items()) keys.push_back(item.key());
     const std::vector<std::string> documented{
-        "photons", "seed",   "threads",      "seconds", "fractions",    "events",      "photons_requested",
-        "partial", "scene",  "bins",         "fresnel", "polarisation", "diffraction", "max_events",
-        "paths",   "counts", "lost_reasons", "sources", "version"};
+        "photons",           "seed",    "ranks",  "threads",      "seconds", "fractions",    "events",
+        "photons_requested", "partial", "scene",  "bins",         "fresnel", "polarisation", "diffraction",
+        "max_events",        "paths",   "counts", "lost_reasons", "sources", "version"};
     EXPECT_EQ(keys, documented);
 }
 

@@ -31,6 +31,16 @@ public:
         escapeFlights_ += more.escapeFlights_;
         length_ += more.length_;
     }
+    void writeScores(ScoreWriter& out) const override {
+        out.word(photons_);
+        out.word(escapeFlights_);
+        out.sum(length_);
+    }
+    void readScores(ScoreReader& in) override {
+        photons_ = in.word();
+        escapeFlights_ = in.word();
+        length_ = in.sum();
+    }
     void report(ResultReport& report) const override { report.set({"track_length"}, length_.value()); }
 
     std::uint64_t photons() const { return photons_; }

@@ -1,6 +1,7 @@
 // FixedPointSum: the same bits for any order and grouping of the same values, within its resolution
 // of the exact sum, and refusing what it cannot hold.
 #include "tally/FixedPointSum.hpp"
+#include "tally/ScoreBytes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -84,6 +85,38 @@ TEST(FixedPointSum, RefusesValuesAndSumsOutOfRange) {
     FixedPointSum other;
     other.add(0x1p61);
     EXPECT_THROW(sum += other, std::overflow_error);
+}
+
+TEST(FixedPointSum, TravelsAsTwoWordsBitForBit) {
+    for (const double value : {0.0, 1.0, -1.0, 0x1p-64, -0x1p-64, 0.1, -3.7e17, 0x1p61}) {
+        FixedPointSum sum;
+        sum.add(value);
+        sum.add(value / 3.0);
+        const auto [low, high] = sum.bits();
+        EXPECT_EQ(FixedPointSum::fromBits(low, high), sum) << value;
+        std::vector<std::byte> bytes;
+        ScoreWriter out(bytes);
+        out.sum(sum);
+        ScoreReader in(bytes);
+        EXPECT_EQ(in.sum(), sum) << value;
+        EXPECT_TRUE(in.atEnd());
+    }
+    // 2^126 units (2^62) is beyond any sum's range.
+    EXPECT_THROW(FixedPointSum::fromBits(0, std::uint64_t{1} << 62), std::overflow_error);
+}
+
+TEST(ScoreBytes, ALengthOfAnotherTallyOrTooFewBytesIsRefused) {
+    std::vector<std::byte> bytes;
+    ScoreWriter out(bytes);
+    out.words(std::vector<std::uint64_t>{1, 2, 3});
+    std::vector<std::uint64_t> four(4);
+    ScoreReader wrongLength(bytes);
+    EXPECT_THROW(wrongLength.words(four), std::runtime_error);
+    std::vector<std::uint64_t> three(3);
+    ScoreReader right(bytes);
+    right.words(three);
+    EXPECT_EQ(three, (std::vector<std::uint64_t>{1, 2, 3}));
+    EXPECT_THROW(right.word(), std::runtime_error);
 }
 
 }  // namespace

@@ -43,6 +43,20 @@ public:
         squares_ += more.squares_;
         backscattered_ += more.backscattered_;
     }
+    void writeScores(ScoreWriter& out) const override {
+        out.words(orders_);
+        out.word(escaped_);
+        out.sum(cosines_);
+        out.sum(squares_);
+        out.word(backscattered_);
+    }
+    void readScores(ScoreReader& in) override {
+        in.words(orders_);
+        escaped_ = in.word();
+        cosines_ = in.sum();
+        squares_ = in.sum();
+        backscattered_ = in.word();
+    }
     void report(ResultReport&) const override {}
 
     const std::vector<std::uint64_t>& orders() const { return orders_; }

@@ -66,6 +66,14 @@ public:
             secondary_[k] = std::max(secondary_[k], more.secondary_[k]);
         }
     }
+    void writeScores(ScoreWriter& out) const override {
+        for (const double edge : primary_) out.real(edge);
+        for (const double edge : secondary_) out.real(edge);
+    }
+    void readScores(ScoreReader& in) override {
+        for (double& edge : primary_) edge = in.real();
+        for (double& edge : secondary_) edge = in.real();
+    }
     void report(ResultReport&) const override {}
 
     const std::vector<double>& primary() const { return primary_; }

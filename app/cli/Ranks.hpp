@@ -1,0 +1,40 @@
+#pragma once
+
+#include <exception>
+#include <functional>
+
+namespace dropscope {
+
+// The processes of one `dropscope trace` started by an MPI launcher (mpirun, srun: docs/scaling.md). MPI is
+// initialised only when the program was built with it (DROPSCOPE_WITH_MPI) and the environment shows such a
+// launch; otherwise this is the one rank 0 of 1, and nothing here talks to anyone. One at a time per process.
+class Ranks {
+public:
+    Ranks();
+    ~Ranks();
+    Ranks(const Ranks&) = delete;
+    Ranks& operator=(const Ranks&) = delete;
+
+    int rank() const { return rank_; }
+    int size() const { return size_; }
+    bool root() const { return rank_ == 0; }
+    bool parallel() const { return size_ > 1; }
+
+    // Runs `step` on every rank, then all learn whether it threw anywhere: on the lowest rank whose step
+    // threw the exception is rethrown (so its message is printed once), every other rank then throws
+    // RankFailed. A failure of one rank can then never leave the others waiting for it.
+    void together(const std::function<void()>& step) const;
+
+private:
+    int rank_ = 0;
+    int size_ = 1;
+    bool initialised_ = false;
+};
+
+// Thrown by Ranks::together on the ranks whose own step went well (or failed after a lower rank's): the
+// lower rank has said what went wrong, so this rank ends quietly with `status`.
+struct RankFailed {
+    int status;
+};
+
+}  // namespace dropscope

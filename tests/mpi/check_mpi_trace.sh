@@ -1,0 +1,71 @@
+#!/bin/bash
+# `mpirun -np 3 dropscope trace` against one process (docs/scaling.md): the same files, byte for byte, for
+# every tally (angular, spectral, orders, detector images and records, paths, results.h5), summary.json equal but
+# for seconds, threads and ranks ("ranks": 3 against 1), one summary on stdout; and bad input refused once, exit 2.
+# Usage: check_mpi_trace.sh DROPSCOPE MPIEXEC SOURCE_DIR WORK_DIR
+set -euo pipefail
+dropscope=$1
+mpiexec=$2
+source_dir=$3
+work=$4
+python=/usr/bin/python3
+rm -rf "$work"
+mkdir -p "$work"
+# As root, Open MPI wants --allow-run-as-root; a 2-core machine needs --oversubscribe for 3 ranks.
+launch=("$mpiexec" --allow-run-as-root --oversubscribe -np 3)
+
+fail() {
+    echo "FAIL: $*" >&2
+    exit 1
+}
+
+compare_runs() {
+    local name=$1 one=$2 three=$3
+    local files_one files_three
+    files_one=$(cd "$one" && ls)
+    files_three=$(cd "$three" && ls)
+    [ "$files_one" = "$files_three" ] || fail "$name: different files: [$files_one] against [$files_three]"
+    for file in $files_one; do
+        [ "$file" = summary.json ] && continue
+        cmp -s "$one/$file" "$three/$file" || fail "$name: $file differs between 1 process and 3 ranks"
+    done
+    "$python" - "$one/summary.json" "$three/summary.json" "$name" <<'PY'
+import json, sys
+one, three = (json.load(open(path)) for path in sys.argv[1:3])
+name = sys.argv[3]
+assert one["ranks"] == 1, (name, one["ranks"])
+assert three["ranks"] == 3, (name, three["ranks"])
+assert three["threads"] == 1, (name, three["threads"])
+for summary in (one, three):
+    for key in ("seconds", "threads", "ranks"):
+        del summary[key]
+assert one == three, f"{name}: summary.json differs beyond seconds, threads and ranks"
+PY
+    echo "$name: $(echo "$files_one" | wc -w) files identical"
+}
+
+run_case() {
+    local name=$1 scene=$2
+    shift 2
+    "$dropscope" trace "$scene" "$@" --threads 2 --out "$work/$name-one" > "$work/$name-one.out"
+    "${launch[@]}" "$dropscope" trace "$scene" "$@" --threads 1 --out "$work/$name-three" \
+        > "$work/$name-three.out" 2> "$work/$name-three.err" || fail "$name: mpirun failed: $(cat "$work/$name-three.err")"
+    [ "$(grep -c '^trace: ' "$work/$name-three.out")" = 1 ] || fail "$name: not one summary: $(cat "$work/$name-three.out")"
+    compare_runs "$name" "$work/$name-one" "$work/$name-three"
+}
+
+# Polarised, with diffraction, ray orders, paths of photons on two ranks, and every detector type with records.
+run_case detectors "$source_dir/tests/data/scenes/detectors_recorded.json" --photons 20000 --seed 5 --bins 90 \
+    --paths 7000 --orders --diffraction fraunhofer
+# Sunlight in wavelength bands, a far-field sky, unpolarised.
+run_case sky "$source_dir/assets/scenes/rainbow-sky.json" --photons 20000 --seed 9 --bins 60 --wavelength-bins 5 \
+    --polarisation none
+
+# Bad input: said once (by rank 0), exit 2 from mpirun.
+status=0
+"${launch[@]}" "$dropscope" trace "$work/no-such-scene.json" --photons 10 --out "$work/bad" \
+    > "$work/bad.out" 2> "$work/bad.err" || status=$?
+[ "$status" = 2 ] || fail "bad scene: exit $status, not 2: $(cat "$work/bad.err")"
+[ "$(grep -c 'no-such-scene.json' "$work/bad.err")" = 1 ] || fail "bad scene: not said once: $(cat "$work/bad.err")"
+[ ! -e "$work/bad" ] || fail "bad scene: the output folder was created"
+echo "bad input: exit 2, said once"
