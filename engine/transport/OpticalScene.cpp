@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <typeinfo>
 
 namespace dropscope {
 
@@ -22,16 +23,32 @@ std::vector<std::unique_ptr<Shape>> cloneShapes(const Scene& scene) {
 
 }  // namespace
 
+Direction OpticalScene::normalOf(ShapeId shape, const Point& p) const {
+    const ShapeFacts& facts = facts_[shape];
+    if (!facts.isSphere) return octree_.shape(shape)->normal(p);
+    // Sphere::normal, on the packed copy of its geometry.
+    if (facts.sphere.locate(p) != PointLocation::OnSurface) return Direction::invalid();
+    return Direction(p - facts.sphere.center);
+}
+
 OpticalScene::OpticalScene(const Scene& scene, bool haloes)
     : media_(scene.media),
       wavelengthNm_(scene.wavelengthNm),
       unitInMetres_(scene.unitInMetres),
       ambient_(scene.ambient),
       octree_(cloneShapes(scene), scene.octree),
-      parents_(octree_.slotCount(), kAmbient) {
+      facts_(octree_.slotCount()) {
     for (ShapeId id = 0; id < octree_.slotCount(); ++id) {
         const Shape* inner = octree_.shape(id);
-        if (inner) parents_[id] = smallestContainer(*inner, id);
+        if (!inner) continue;
+        ShapeFacts& facts = facts_[id];
+        facts.parent = smallestContainer(*inner, id);
+        facts.medium = inner->mediumId();
+        // Exactly a Sphere (not a type derived from it, which could answer normal() otherwise).
+        if (typeid(*inner) == typeid(Sphere)) {
+            facts.sphere = static_cast<const Sphere&>(*inner).geometry();
+            facts.isSphere = true;
+        }
     }
     // The numbers the scene already holds: the light of the scene wavelength is traced exactly as before.
     for (const Medium& medium : media_) sceneOptics_.push_back({medium.n, medium.absorptionPerUnit});
@@ -80,7 +97,7 @@ std::optional<OpticalScene::HaloPass> OpticalScene::firstHaloPass(const Point& p
         const Shape& halo = *haloes_->shape(hit.shape);
         const ShapeId droplet = haloOwners_[hit.shape];
         const Direction normal = halo.normal(at);
-        if (!normal || d.dot(normal) >= 0.0 || parents_[droplet] != region) continue;
+        if (!normal || d.dot(normal) >= 0.0 || facts_[droplet].parent != region) continue;
         // Entering the halo: a pass when the flight then misses the droplet itself.
         const double chord = halo.distanceToSurface(at, d);
         if (!(chord > 0.0) || !std::isnan(octree_.shape(droplet)->distanceToSurface(at, d))) continue;

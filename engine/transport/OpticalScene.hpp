@@ -41,10 +41,10 @@ public:
     // every halo (for diffraction; the scene must have them).
     double approachDistance(const Point& p, const Direction& d, bool haloes = false) const;
     // The region on the outside of `shape`'s surface.
-    ShapeId parentOf(ShapeId shape) const { return parents_[shape]; }
-    MediumId mediumIdOf(ShapeId region) const {
-        return region == kAmbient ? ambient_ : octree_.shape(region)->mediumId();
-    }
+    ShapeId parentOf(ShapeId shape) const { return facts_[shape].parent; }
+    MediumId mediumIdOf(ShapeId region) const { return region == kAmbient ? ambient_ : facts_[region].medium; }
+    // Shape::normal of `shape` at p (the same bits), without reading a sphere's Shape object.
+    Direction normalOf(ShapeId shape, const Point& p) const;
     const Medium& mediumOf(ShapeId region) const { return media_[mediumIdOf(region)]; }
 
     // The scene's absorbing plane detectors, which end the photons they count (docs/detectors.md).
@@ -82,7 +82,16 @@ private:
     std::vector<MediumOptics> sceneOptics_;
     MediumId ambient_;
     Octree octree_;
-    std::vector<ShapeId> parents_;
+    // What a photon's surface crossing reads of a shape, by shape id in one record: without it each crossing
+    // made three dependent loads (the octree's Shape pointer, the object, its vtable) into memory laid out
+    // unrelated to space (docs/performance.md, "Photon transport").
+    struct ShapeFacts {
+        SphereGeometry sphere;  // when isSphere
+        MediumId medium = 0;
+        ShapeId parent = kAmbient;
+        bool isSphere = false;
+    };
+    std::vector<ShapeFacts> facts_;
     std::vector<AbsorbingPlane> absorbingPlanes_;
     std::optional<Octree> haloes_;
     std::vector<ShapeId> haloOwners_;  // the droplet of each halo, by halo id

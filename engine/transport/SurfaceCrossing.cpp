@@ -15,7 +15,7 @@ SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId 
                              const Direction& direction, FresnelModel fresnel, bool unpolarisedReflectance,
                              std::span<const MediumOptics> optics) {
     SurfaceCrossing crossing;
-    const Direction normal = scene.octree().shape(shape)->normal(point);
+    const Direction normal = scene.normalOf(shape, point);
     if (!normal) {
         crossing.lostReason = LostReason::UndefinedNormal;
         return crossing;
