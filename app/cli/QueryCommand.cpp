@@ -1,6 +1,7 @@
 #include "cli/QueryCommand.hpp"
 
 #include "cli/Cli.hpp"
+#include "cli/HitCsv.hpp"
 #include "cli/RayCsv.hpp"
 #include "results/AtomicFile.hpp"
 #include "scene/SceneLoader.hpp"
@@ -20,19 +21,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-void writeHits(const std::vector<RayHit>& hits, std::ostream& out) {
-    out << "ray,shape,distance\n";
-    char distance[32];
-    for (std::size_t i = 0; i < hits.size(); ++i) {
-        if (hits[i]) {
-            std::snprintf(distance, sizeof distance, "%.17g", hits[i].distance);
-            out << i << ',' << hits[i].shape << ',' << distance << '\n';
-        } else {
-            out << i << ",-1,nan\n";
-        }
-    }
-}
-
 }  // namespace
 
 CLI::App* addQueryCommand(CLI::App& app, QueryOptions& options) {
@@ -46,7 +34,9 @@ CLI::App* addQueryCommand(CLI::App& app, QueryOptions& options) {
 
 int runQuery(const QueryOptions& options, std::ostream&, std::ostream& err) {
     Scene scene = loadScene(options.scenePath);
+    const Clock::time_point readStart = Clock::now();
     const std::vector<CsvRay> rays = readRayCsv(options.raysPath);
+    const double readSeconds = secondsSince(readStart);
 
     const std::size_t shapeCount = scene.shapes.size();
     std::vector<RayHit> hits(rays.size());
@@ -64,16 +54,22 @@ int runQuery(const QueryOptions& options, std::ostream&, std::ostream& err) {
     }
     const double querySeconds = secondsSince(queryStart);
 
+    const Clock::time_point writeStart = Clock::now();
     try {
-        writeFileAtomically(options.outPath, [&](std::ostream& out) { writeHits(hits, out); });
+        writeFileAtomically(options.outPath, [&](std::ostream& out) { writeHitCsv(hits, out); });
     } catch (const std::runtime_error& error) {
         err << error.what() << '\n';
         return kExitBadInput;
     }
+    const double writeSeconds = secondsSince(writeStart);
     const double rate = querySeconds > 0.0 ? static_cast<double>(rays.size()) / querySeconds : 0.0;
-    char summary[256];
-    std::snprintf(summary, sizeof summary, "query: %zu shapes, %zu rays, %s, build %.3f s, query %.3f s, %.0f rays/s\n",
-                  shapeCount, rays.size(), options.brute ? "brute force" : "octree", buildSeconds, querySeconds, rate);
+    // Scripts parse the summary up to "rays/s" (bench/python_bench.py): new figures go after it.
+    char summary[320];
+    std::snprintf(
+        summary, sizeof summary,
+        "query: %zu shapes, %zu rays, %s, build %.3f s, query %.3f s, %.0f rays/s, read %.3f s, write %.3f s\n",
+        shapeCount, rays.size(), options.brute ? "brute force" : "octree", buildSeconds, querySeconds, rate,
+        readSeconds, writeSeconds);
     err << summary;
     return kExitSuccess;
 }

@@ -21,7 +21,8 @@ CLI::App* addQueryCommand(CLI::App& app, QueryOptions& options);
 
 // First hit of every ray: HITS.csv gets `ray,shape,distance`, one line per ray in input order,
 // `-1,nan` for a miss, distances to 17 significant digits; written whole or not at all. The summary
-// (shapes, rays, build and query seconds, rays per second) goes to `err`. A bad scene or rays file
+// (shapes, rays, build and query seconds, rays per second, then the seconds reading RAYS.csv and writing
+// HITS.csv) goes to `err`. A bad scene or rays file
 // throws (SceneError, RayCsvError), which runCli reports.
 int runQuery(const QueryOptions& options, std::ostream& out, std::ostream& err);
 

@@ -1,15 +1,23 @@
 #include "cli/RayCsv.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
-#include <sstream>
 
 namespace dropscope {
 
 namespace {
 
 constexpr std::string_view kHeader = "ox,oy,oz,dx,dy,dz";
+
+// The block a file is read through: large enough that a read costs little against parsing what it brings,
+// small enough to stay in the processor's cache (the whole file in memory would cost a page fault per 4 KiB).
+constexpr std::size_t kBlockBytes = std::size_t{1} << 20;
+
+// The part of a text whose lines are counted to reserve room for its rays.
+constexpr std::size_t kSampleBytes = kBlockBytes;
 
 std::string_view trimmed(std::string_view s) {
     while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
@@ -54,35 +62,118 @@ CsvRay parseLine(std::string_view text, const std::string& origin, std::size_t l
     return {Point(values[0], values[1], values[2]), direction};
 }
 
-}  // namespace
-
-std::vector<CsvRay> parseRayCsv(const std::string& text, const std::string& origin) {
-    std::vector<CsvRay> rays;
-    std::istringstream in(text);
-    std::string raw;
-    std::size_t line = 0;
-    bool headerSeen = false;
-    while (std::getline(in, raw)) {
-        ++line;
-        const std::string_view content = trimmed(raw);
-        if (content.empty()) continue;
-        if (!headerSeen) {
-            if (content != kHeader) fail(origin, line, "expected the header \"" + std::string(kHeader) + "\"");
-            headerSeen = true;
-            continue;
+// The common line, six numbers between single commas with nothing around them, read without splitting it
+// first: each std::from_chars stops at the comma that ends its number. True, with `ray`, for such a line with
+// finite numbers and a non-zero direction, which parseLine would read alike; anything else (spaces, a missing
+// or extra field, a bad number) is left to parseLine, which knows every rule and error.
+bool parsePlainLine(std::string_view text, CsvRay& ray) {
+    double values[6];
+    const char* at = text.data();
+    const char* const end = at + text.size();
+    for (int column = 0; column < 6; ++column) {
+        const auto [next, status] = std::from_chars(at, end, values[column]);
+        if (status != std::errc() || !std::isfinite(values[column])) return false;
+        if (column == 5) {
+            if (next != end) return false;
+        } else {
+            if (next == end || *next != ',') return false;
+            at = next + 1;
         }
-        rays.push_back(parseLine(content, origin, line));
     }
-    if (!headerSeen) throw RayCsvError(origin + ": empty file (expected the header \"" + std::string(kHeader) + "\")");
-    return rays;
+    const Direction direction(values[3], values[4], values[5]);
+    if (!direction) return false;
+    ray = {Point(values[0], values[1], values[2]), direction};
+    return true;
 }
 
+// The rays of one file, fed one line at a time (its text without the '\n') as std::getline splits them: the
+// line numbers of the errors count every line, blank ones too.
+class RayLines {
+public:
+    explicit RayLines(const std::string& origin) : origin_(origin) {}
+
+    // Room for the rays of `totalBytes` of text whose first part is `sample` (more are added if later lines
+    // are shorter). Room reserved and never used costs address space only.
+    void reserveLike(std::string_view sample, std::size_t totalBytes) {
+        const auto sampleLines = static_cast<std::size_t>(std::count(sample.begin(), sample.end(), '\n')) + 1;
+        const std::size_t restBytes = std::max(totalBytes, sample.size()) - sample.size();
+        rays_.reserve(sampleLines + sampleLines * restBytes / std::max<std::size_t>(sample.size(), 1));
+    }
+
+    void add(std::string_view raw) {
+        ++line_;
+        const std::string_view content = trimmed(raw);
+        if (content.empty()) return;
+        if (!headerSeen_) {
+            if (content != kHeader) fail(origin_, line_, "expected the header \"" + std::string(kHeader) + "\"");
+            headerSeen_ = true;
+            return;
+        }
+        CsvRay ray;
+        rays_.push_back(parsePlainLine(content, ray) ? ray : parseLine(content, origin_, line_));
+    }
+
+    // Every line up to the last '\n' of [begin, end); returns where the rest (a line not yet ended) starts.
+    const char* addEndedLines(const char* begin, const char* end) {
+        while (const void* newline = std::memchr(begin, '\n', static_cast<std::size_t>(end - begin))) {
+            const char* lineEnd = static_cast<const char*>(newline);
+            add(std::string_view(begin, static_cast<std::size_t>(lineEnd - begin)));
+            begin = lineEnd + 1;
+        }
+        return begin;
+    }
+
+    std::vector<CsvRay> finish() {
+        if (!headerSeen_) {
+            throw RayCsvError(origin_ + ": empty file (expected the header \"" + std::string(kHeader) + "\")");
+        }
+        return std::move(rays_);
+    }
+
+private:
+    const std::string& origin_;
+    std::size_t line_ = 0;
+    bool headerSeen_ = false;
+    std::vector<CsvRay> rays_;
+};
+
+}  // namespace
+
+std::vector<CsvRay> parseRayCsv(std::string_view text, const std::string& origin) {
+    RayLines lines(origin);
+    lines.reserveLike(text.substr(0, kSampleBytes), text.size());
+    const char* const end = text.data() + text.size();
+    const char* rest = lines.addEndedLines(text.data(), end);
+    if (rest != end) lines.add(std::string_view(rest, static_cast<std::size_t>(end - rest)));  // no final '\n'
+    return lines.finish();
+}
+
+// The file goes through a block of kBlockBytes, reused: a line cut at the end of a block moves to its start and
+// is completed by the next read (the block doubles for a line longer than itself). A read that fails ends the
+// file, as the stream copy this replaced did (a folder reads as empty).
 std::vector<CsvRay> readRayCsv(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw RayCsvError(file.string() + ": cannot open (no such file, or not readable)");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseRayCsv(text.str(), file.string());
+    const std::string origin = file.string();
+    std::error_code error;
+    const std::uintmax_t fileBytes = std::filesystem::file_size(file, error);
+    RayLines lines(origin);
+    std::vector<char> block(kBlockBytes);
+    std::size_t kept = 0;  // bytes of an unfinished line at the start of the block
+    bool first = true;
+    while (in) {
+        if (kept == block.size()) block.resize(2 * block.size());
+        in.read(block.data() + kept, static_cast<std::streamsize>(block.size() - kept));
+        const char* const end = block.data() + kept + static_cast<std::size_t>(in.gcount());
+        if (first && !error)
+            lines.reserveLike(std::string_view(block.data(), static_cast<std::size_t>(end - block.data())), fileBytes);
+        first = false;
+        const char* rest = lines.addEndedLines(block.data(), end);
+        kept = static_cast<std::size_t>(end - rest);
+        std::memmove(block.data(), rest, kept);
+    }
+    if (kept > 0) lines.add(std::string_view(block.data(), kept));  // no final '\n'
+    return lines.finish();
 }
 
 }  // namespace dropscope

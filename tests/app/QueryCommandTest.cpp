@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -75,6 +76,18 @@ TEST_F(QueryCommand, HitsMatchClosedFormsAndMissesAreMinusOneNan) {
     EXPECT_FALSE(std::getline(lines, line));
     EXPECT_NE(run.err.find("query: 1 shapes, 4 rays, octree"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("rays/s"), std::string::npos);
+}
+
+// Scripts read the summary up to "rays/s" (bench/python_bench.py): its text stays, the I/O seconds come after.
+TEST_F(QueryCommand, SummaryKeepsItsTextAndEndsWithReadAndWriteSeconds) {
+    const std::string rays = write("rays.csv", "ox,oy,oz,dx,dy,dz\r\n1,2,-10,0,0,2\r\n\r\n9,9,9,1,0,0");
+    const CliRun run = runDropscope({"query", kOneSphere, "--rays", rays, "--out", path("hits.csv")});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    EXPECT_EQ(read(path("hits.csv")), "ray,shape,distance\n0,0,11\n1,-1,nan\n");
+    const std::regex summary(
+        "query: 1 shapes, 2 rays, octree, build [0-9.]+ s, query [0-9.]+ s, [0-9]+ rays/s, read [0-9.]+ s, "
+        "write [0-9.]+ s\n");
+    EXPECT_TRUE(std::regex_match(run.err, summary)) << run.err;
 }
 
 TEST_F(QueryCommand, OctreeAndBruteForceWriteIdenticalFiles) {
