@@ -74,4 +74,11 @@ void Ranks::together(const std::function<void()>& step) const {
 #endif
 }
 
+void Ranks::abort(int status) const {
+#ifdef DROPSCOPE_WITH_MPI
+    if (initialised_) MPI_Abort(MPI_COMM_WORLD, status);
+#endif
+    std::_Exit(status);
+}
+
 }  // namespace dropscope

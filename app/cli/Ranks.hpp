@@ -24,6 +24,9 @@ public:
     // threw the exception is rethrown (so its message is printed once), every other rank then throws
     // RankFailed. A failure of one rank can then never leave the others waiting for it.
     void together(const std::function<void()>& step) const;
+    // Ends every rank at once with `status` (MPI_Abort): for a failure of one rank while the others may be
+    // waiting for its messages, which no exit of this rank alone would end. Only when parallel().
+    [[noreturn]] void abort(int status) const;
 
 private:
     int rank_ = 0;

@@ -231,8 +231,14 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
     TraceControl control;
     control.stop = &interrupt.flag();
     if (progress) control.onProgress = [&](const TraceProgress& now) { progress->update(now); };
-    const TraceResult result =
-        traceOnRanks(ranks, *setup.optical, scene.sources, info.settings, setup.prepared.tallies, control);
+    TraceResult result;
+    try {
+        result = traceOnRanks(ranks, *setup.optical, scene.sources, info.settings, setup.prepared.tallies, control);
+    } catch (const std::exception& error) {
+        if (!ranks.parallel()) throw;
+        err << "dropscope: internal error on rank " << ranks.rank() << ": " << error.what() << '\n' << std::flush;
+        ranks.abort(kExitInternalError);  // the other ranks may be waiting for this one's messages
+    }
     if (!ranks.root()) return result.partial ? kExitInterrupted : kExitSuccess;
     if (progress) progress->finish({result.photons, result.requested, result.seconds});
 
