@@ -89,21 +89,48 @@ void Octree::rebuild(const CellBounds& bounds) {
 }
 
 void Octree::freeze() {
+    // Every cell's bounds, by the same halving as the traversal (children come after their parent), so
+    // that both agree on the centre the sphere blocks are relative to.
+    std::vector<CellBounds> bounds(building_.size());
+    bounds[0] = rootBounds_;
+    for (std::size_t index = 0; index < building_.size(); ++index) {
+        if (building_[index].isLeaf()) continue;
+        for (int child = 0; child < 8; ++child)
+            bounds[building_[index].firstChild + static_cast<std::uint32_t>(child)] = childBounds(bounds[index], child);
+    }
     cells_.clear();
-    spheres_.clear();
+    blocks_.clear();
+    sphereIds_.clear();
     others_.clear();
     cells_.reserve(building_.size());
-    for (const Node& node : building_) {
-        cells_.push_back({node.firstChild, static_cast<std::uint32_t>(spheres_.size()),
+    for (std::size_t index = 0; index < building_.size(); ++index) {
+        const Node& node = building_[index];
+        cells_.push_back({node.firstChild, static_cast<std::uint32_t>(blocks_.size()),
                           static_cast<std::uint32_t>(node.sphereIds.size()), static_cast<std::uint32_t>(others_.size()),
                           static_cast<std::uint32_t>(node.otherIds.size())});
-        for (ShapeId id : node.sphereIds) spheres_.push_back({static_cast<const Sphere&>(*shapes_[id]).geometry(), id});
+        const Point centre = bounds[index].center();
+        for (std::size_t k = 0; k < node.sphereIds.size(); k += SphereBlock::kWidth) {
+            SphereBlock& block = blocks_.emplace_back();
+            for (unsigned lane = 0; lane < SphereBlock::kWidth; ++lane) {
+                if (k + lane < node.sphereIds.size()) {
+                    const ShapeId id = node.sphereIds[k + lane];
+                    block.pack(lane, static_cast<const Sphere&>(*shapes_[id]).geometry(), centre);
+                    sphereIds_.push_back(id);
+                } else {
+                    block.clear(lane);
+                    sphereIds_.push_back(RayHit::kNone);
+                }
+            }
+        }
         others_.insert(others_.end(), node.otherIds.begin(), node.otherIds.end());
     }
     cells_.shrink_to_fit();
-    spheres_.shrink_to_fit();
+    blocks_.shrink_to_fit();
+    sphereIds_.shrink_to_fit();
     others_.shrink_to_fit();
     building_ = {};
+    const CellBounds root = inflated(rootBounds_, margin_);
+    coordinateScale_ = std::max(root.min().cwiseAbs().maxCoeff(), root.max().cwiseAbs().maxCoeff());
 }
 
 void Octree::thaw() {
@@ -112,8 +139,8 @@ void Octree::thaw() {
         Node& node = building_[index];
         node.firstChild = cell.firstChild;
         node.level = static_cast<std::uint32_t>(level);
-        for (std::uint32_t k = 0; k < cell.sphereCount; ++k)
-            node.sphereIds.push_back(spheres_[cell.firstSphere + k].id);
+        const ShapeId* ids = sphereIds_.data() + std::size_t{cell.firstBlock} * SphereBlock::kWidth;
+        node.sphereIds.assign(ids, ids + cell.sphereCount);
         node.otherIds.assign(others_.begin() + cell.firstOther, others_.begin() + cell.firstOther + cell.otherCount);
         return true;
     });
@@ -254,7 +281,9 @@ std::vector<LevelStatistics> Octree::statistics() const {
         s.level = level;
         ++s.cells;
         s.shapesStored += cell.size();
-        s.bytes += sizeof(Cell) + cell.sphereCount * sizeof(PackedSphere) + cell.otherCount * sizeof(ShapeId);
+        const std::size_t blocks = (cell.sphereCount + SphereBlock::kWidth - 1) / SphereBlock::kWidth;
+        s.bytes += sizeof(Cell) + blocks * (sizeof(SphereBlock) + SphereBlock::kWidth * sizeof(ShapeId)) +
+                   cell.otherCount * sizeof(ShapeId);
         if (!cell.isLeaf()) return true;
         ++s.leaves;
         if (s.shapesPerLeaf.size() <= cell.size()) s.shapesPerLeaf.resize(cell.size() + 1);
@@ -265,8 +294,9 @@ std::vector<LevelStatistics> Octree::statistics() const {
 }
 
 std::size_t Octree::bytesUsed() const {
-    return sizeof(*this) + cells_.capacity() * sizeof(Cell) + spheres_.capacity() * sizeof(PackedSphere) +
-           others_.capacity() * sizeof(ShapeId) + shapes_.capacity() * sizeof(std::unique_ptr<Shape>);
+    return sizeof(*this) + cells_.capacity() * sizeof(Cell) + blocks_.capacity() * sizeof(SphereBlock) +
+           sphereIds_.capacity() * sizeof(ShapeId) + others_.capacity() * sizeof(ShapeId) +
+           shapes_.capacity() * sizeof(std::unique_ptr<Shape>);
 }
 
 }  // namespace dropscope

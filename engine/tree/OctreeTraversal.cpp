@@ -1,6 +1,8 @@
 // Front-to-back ray traversal of the octree (docs/octree.md, "First hit").
 #include "tree/Octree.hpp"
 
+#include "geometry/Sphere.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -24,18 +26,39 @@ struct Octree::Traversal {
         return d[axis] == 0.0 ? kInfinity : (value - p[axis]) * inverse[axis];
     }
 
-    void testShapes(const Cell& cell) {
-        const PackedSphere* sphere = tree.spheres_.data() + cell.firstSphere;
-        for (std::uint32_t k = 0; k < cell.sphereCount; ++k, ++sphere) {
-            hit.offer(sphere->id, sphere->geometry.distanceToSurface(p, d));
+    double slack;  // the prefilter's, kPrefilterSlackRelative x (|p|_inf + the root's coordinate scale)
+
+    // The exact distance of one shape, offered to the best hit.
+    void testExactly(ShapeId id, double distance) {
+        hit.offer(id, distance);
+        if (record) {
+            record->shapesTested.push_back(id);
+            ++record->distanceEvaluations;
+        }
+    }
+
+    // The cell's spheres through the prefilter, then the exact test on the candidates it lets through;
+    // then every other shape exactly.
+    void testShapes(const Cell& cell, const CellBounds& bounds) {
+        if (cell.sphereCount > 0) {
+            const Point centre = bounds.center();
+            PrefilterRay ray{
+                {p.x() - centre.x(), p.y() - centre.y(), p.z() - centre.z()}, {d.x(), d.y(), d.z()}, slack, 0.0};
+            for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
+                ray.limit = hit.distance + slack;
+                const std::uint32_t block = cell.firstBlock + first / SphereBlock::kWidth;
+                const ShapeId* ids = tree.sphereIds_.data() + std::size_t{block} * SphereBlock::kWidth;
+                for (std::uint64_t candidates = sphereCandidates(
+                         tree.blocks_.data() + block, std::min<std::uint32_t>(cell.sphereCount - first, 64), ray);
+                     candidates != 0; candidates &= candidates - 1) {
+                    const ShapeId id = ids[__builtin_ctzll(candidates)];
+                    testExactly(id, static_cast<const Sphere&>(*tree.shapes_[id]).geometry().distanceToSurface(p, d));
+                }
+            }
         }
         for (std::uint32_t k = 0; k < cell.otherCount; ++k) {
             const ShapeId id = tree.others_[cell.firstOther + k];
-            hit.offer(id, tree.shapes_[id]->distanceToSurface(p, d));
-        }
-        if (record) {
-            tree.forEachShapeIn(cell, [&](ShapeId id) { record->shapesTested.push_back(id); });
-            record->distanceEvaluations += cell.size();
+            testExactly(id, tree.shapes_[id]->distanceToSurface(p, d));
         }
     }
 
@@ -44,7 +67,7 @@ struct Octree::Traversal {
     void visit(std::uint32_t index, const CellBounds& bounds, int level, double tEnter, double tExit) {
         const Cell& cell = tree.cells_[index];
         if (record) record->cells.push_back({index, level, bounds, tEnter, tExit, cell.isLeaf()});
-        testShapes(cell);
+        testShapes(cell, bounds);
         if (cell.isLeaf()) return;
 
         const Point mid = bounds.center();
@@ -78,12 +101,12 @@ struct Octree::Traversal {
             t = next;
         }
         // Memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask for the
-        // children's spheres before testing the first of them.
+        // children's sphere blocks (up to 8 cache lines each) before testing the first of them.
         for (int k = 0; k < count; ++k) {
             const Cell& next = tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])];
-            const char* records = reinterpret_cast<const char*>(tree.spheres_.data() + next.firstSphere);
-            const std::size_t bytes = std::min<std::size_t>(next.sphereCount, 8) * sizeof(PackedSphere);
-            for (std::size_t offset = 0; offset < bytes; offset += 64) __builtin_prefetch(records + offset);
+            const SphereBlock* blocks = tree.blocks_.data() + next.firstBlock;
+            const std::uint32_t blockCount = (std::min<std::uint32_t>(next.sphereCount, 32) + 3) / 4;
+            for (std::uint32_t b = 0; b < blockCount; ++b) __builtin_prefetch(blocks + b);
             if (!next.isLeaf()) __builtin_prefetch(tree.cells_.data() + next.firstChild);
         }
         for (int k = 0; k < count; ++k) {
@@ -96,6 +119,7 @@ struct Octree::Traversal {
     void run() {
         if (!d || !p.allFinite()) return;
         inverse = d.vector().cwiseInverse();
+        slack = kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_);
         const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d);
         if (!span) return;
         visit(0, tree.rootBounds_, 0, span->first, span->second);
@@ -124,14 +148,14 @@ std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const 
 }
 
 RayHit Octree::firstHit(const Point& p, const Direction& d) const {
-    Traversal traversal{*this, p, d, {}, nullptr, {}};
+    Traversal traversal{*this, p, d, {}, nullptr, {}, 0.0};
     traversal.run();
     return traversal.hit;
 }
 
 RayHit Octree::firstHit(const Point& p, const Direction& d, TraversalRecord& record) const {
     record = TraversalRecord{};
-    Traversal traversal{*this, p, d, {}, &record, {}};
+    Traversal traversal{*this, p, d, {}, &record, {}, 0.0};
     traversal.run();
     return traversal.hit;
 }
