@@ -89,46 +89,45 @@ void Octree::rebuild(const CellBounds& bounds) {
 }
 
 void Octree::freeze() {
-    // Every cell's bounds, by the same halving as the traversal (children come after their parent), so
-    // that both agree on the centre the sphere blocks are relative to.
-    std::vector<CellBounds> bounds(building_.size());
-    bounds[0] = rootBounds_;
-    for (std::size_t index = 0; index < building_.size(); ++index) {
-        if (building_[index].isLeaf()) continue;
-        for (int child = 0; child < 8; ++child)
-            bounds[building_[index].firstChild + static_cast<std::uint32_t>(child)] = childBounds(bounds[index], child);
-    }
     cells_.clear();
     blocks_.clear();
     sphereIds_.clear();
     others_.clear();
     cells_.reserve(building_.size());
-    for (std::size_t index = 0; index < building_.size(); ++index) {
-        const Node& node = building_[index];
-        cells_.push_back({node.firstChild, static_cast<std::uint32_t>(blocks_.size()),
-                          static_cast<std::uint32_t>(node.sphereIds.size()), static_cast<std::uint32_t>(others_.size()),
-                          static_cast<std::uint32_t>(node.otherIds.size())});
-        const Point centre = bounds[index].center();
-        for (std::size_t k = 0; k < node.sphereIds.size(); k += SphereBlock::kWidth) {
-            SphereBlock& block = blocks_.emplace_back();
-            for (unsigned lane = 0; lane < SphereBlock::kWidth; ++lane) {
-                if (k + lane < node.sphereIds.size()) {
-                    const ShapeId id = node.sphereIds[k + lane];
-                    block.pack(lane, static_cast<const Sphere&>(*shapes_[id]).geometry(), centre);
-                    sphereIds_.push_back(id);
-                } else {
-                    block.clear(lane);
-                    sphereIds_.push_back(RayHit::kNone);
-                }
+    std::vector<ShapeId> spheres;
+    for (const Node& node : building_) {
+        // A sphere whose band make() would not recompute (none today) is kept with the other shapes.
+        spheres.clear();
+        const auto firstOther = static_cast<std::uint32_t>(others_.size());
+        for (ShapeId id : node.sphereIds) {
+            if (SphereBlock::packable(static_cast<const Sphere&>(*shapes_[id]).geometry())) {
+                spheres.push_back(id);
+            } else {
+                others_.push_back(id);
             }
         }
         others_.insert(others_.end(), node.otherIds.begin(), node.otherIds.end());
+        cells_.push_back({node.firstChild, static_cast<std::uint32_t>(blocks_.size()),
+                          static_cast<std::uint32_t>(spheres.size()), firstOther,
+                          static_cast<std::uint32_t>(others_.size()) - firstOther});
+        for (std::size_t k = 0; k < spheres.size(); k += SphereBlock::kWidth) {
+            SphereBlock& block = blocks_.emplace_back();
+            for (unsigned lane = 0; lane < SphereBlock::kWidth; ++lane) {
+                const bool used = k + lane < spheres.size();
+                if (used)
+                    block.pack(lane, static_cast<const Sphere&>(*shapes_[spheres[k + lane]]).geometry());
+                else
+                    block.clear(lane);
+                sphereIds_.push_back(used ? spheres[k + lane] : RayHit::kNone);
+            }
+        }
     }
     cells_.shrink_to_fit();
     blocks_.shrink_to_fit();
     sphereIds_.shrink_to_fit();
     others_.shrink_to_fit();
     building_ = {};
+    rootHalf_ = 0.5 * rootBounds_.sizes().maxCoeff();
     const CellBounds root = inflated(rootBounds_, margin_);
     coordinateScale_ = std::max(root.min().cwiseAbs().maxCoeff(), root.max().cwiseAbs().maxCoeff());
 }

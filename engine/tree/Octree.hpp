@@ -20,9 +20,9 @@ class BoundingBox;
 // A shape is stored in every child cell it overlaps, with cells inflated by margin() so that rounding
 // can never hide a shape from a ray that grazes a cell boundary; a shape that overlaps all eight
 // children of a cell stays in that cell instead (a glass cell around a whole cloud is then tested
-// once per ray, not in every leaf). A cell's spheres are also packed in single precision, four to a
-// cache line (SphereBlock), for a conservative vectorised prefilter; the few that pass it get the exact
-// SphereGeometry::distanceToSurface of their Sphere, the same code as brute force. Shapes are
+// once per ray, not in every leaf). A cell's spheres are also packed by value, four to a SphereBlock
+// (structure of arrays), for a conservative vectorised prefilter; the few that pass it get the exact
+// SphereGeometry::distanceToSurface, the same code as Sphere itself, so bit-identical. Shapes are
 // placed into growable per-cell lists, which are then frozen into flat arrays for the queries; an
 // insert or remove thaws, edits and refreezes (O(N), a few ms per 1e5 shapes).
 class Octree {
@@ -113,6 +113,13 @@ private:
     bool reaches(const Shape& shape, const CellBounds& extent, const CellBounds& cell) const;
     void unstore(std::uint32_t node, const CellBounds& bounds, ShapeId id);
     CellBounds childBounds(const CellBounds& bounds, int child) const;
+    // The centre of a child of the cube of half-side `half` around `centre` (the traversal's halving).
+    static Point childCentre(const Point& centre, double half, int child) {
+        const double quarter = 0.5 * half;
+        return {centre.x() + ((child & 1) != 0 ? quarter : -quarter),
+                centre.y() + ((child & 2) != 0 ? quarter : -quarter),
+                centre.z() + ((child & 4) != 0 ? quarter : -quarter)};
+    }
     // Calls f(id) for every shape a frozen cell holds, spheres first.
     template <class F>
     void forEachShapeIn(const Cell& cell, F&& f) const;
@@ -130,6 +137,7 @@ private:
     std::vector<SphereBlock> blocks_;  // each cell's spheres, relative to its centre, padded to 4
     std::vector<ShapeId> sphereIds_;   // 4 per block, RayHit::kNone in padding
     std::vector<ShapeId> others_;
+    double rootHalf_ = 0.0;         // half the root's side
     double coordinateScale_ = 0.0;  // largest |coordinate| of the inflated root, for the prefilter's slack
 };
 

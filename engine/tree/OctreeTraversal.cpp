@@ -1,8 +1,6 @@
 // Front-to-back ray traversal of the octree (docs/octree.md, "First hit").
 #include "tree/Octree.hpp"
 
-#include "geometry/Sphere.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -39,11 +37,9 @@ struct Octree::Traversal {
 
     // The cell's spheres through the prefilter, then the exact test on the candidates it lets through;
     // then every other shape exactly.
-    void testShapes(const Cell& cell, const CellBounds& bounds) {
+    void testShapes(const Cell& cell) {
         if (cell.sphereCount > 0) {
-            const Point centre = bounds.center();
-            PrefilterRay ray{
-                {p.x() - centre.x(), p.y() - centre.y(), p.z() - centre.z()}, {d.x(), d.y(), d.z()}, slack, 0.0};
+            PrefilterRay ray{{p.x(), p.y(), p.z()}, {d.x(), d.y(), d.z()}, slack, 0.0};
             for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
                 ray.limit = hit.distance + slack;
                 const std::uint32_t block = cell.firstBlock + first / SphereBlock::kWidth;
@@ -51,8 +47,12 @@ struct Octree::Traversal {
                 for (std::uint64_t candidates = sphereCandidates(
                          tree.blocks_.data() + block, std::min<std::uint32_t>(cell.sphereCount - first, 64), ray);
                      candidates != 0; candidates &= candidates - 1) {
-                    const ShapeId id = ids[__builtin_ctzll(candidates)];
-                    testExactly(id, static_cast<const Sphere&>(*tree.shapes_[id]).geometry().distanceToSurface(p, d));
+                    const int lane = __builtin_ctzll(candidates);
+                    const SphereBlock& candidate =
+                        tree.blocks_[block + static_cast<std::uint32_t>(lane) / SphereBlock::kWidth];
+                    testExactly(
+                        ids[lane],
+                        candidate.geometry(static_cast<unsigned>(lane) % SphereBlock::kWidth).distanceToSurface(p, d));
                 }
             }
         }
@@ -64,13 +64,16 @@ struct Octree::Traversal {
 
     // Visits the cell over [tEnter, tExit], then its children in the order the ray meets them,
     // stopping as soon as the best hit lies before the next child's entry.
-    void visit(std::uint32_t index, const CellBounds& bounds, int level, double tEnter, double tExit) {
+    // The cell is the cube of half-side `half` around `mid`.
+    void visit(std::uint32_t index, const Point& mid, double half, int level, double tEnter, double tExit) {
         const Cell& cell = tree.cells_[index];
-        if (record) record->cells.push_back({index, level, bounds, tEnter, tExit, cell.isLeaf()});
-        testShapes(cell, bounds);
+        if (record) {
+            const CellBounds bounds(mid.array() - half, mid.array() + half);
+            record->cells.push_back({index, level, bounds, tEnter, tExit, cell.isLeaf()});
+        }
+        testShapes(cell);
         if (cell.isLeaf()) return;
 
-        const Point mid = bounds.center();
         double planeCrossing[3];
         int child = 0;
         for (int axis = 0; axis < 3; ++axis) {
@@ -101,18 +104,21 @@ struct Octree::Traversal {
             t = next;
         }
         // Memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask for the
-        // children's sphere blocks (up to 8 cache lines each) before testing the first of them.
+        // children's sphere blocks (up to 16 cache lines each) before testing the first of them.
         for (int k = 0; k < count; ++k) {
             const Cell& next = tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])];
             const SphereBlock* blocks = tree.blocks_.data() + next.firstBlock;
             const std::uint32_t blockCount = (std::min<std::uint32_t>(next.sphereCount, 32) + 3) / 4;
-            for (std::uint32_t b = 0; b < blockCount; ++b) __builtin_prefetch(blocks + b);
+            for (std::uint32_t b = 0; b < blockCount; ++b) {
+                __builtin_prefetch(blocks + b);
+                __builtin_prefetch(reinterpret_cast<const char*>(blocks + b) + 64);
+            }
             if (!next.isLeaf()) __builtin_prefetch(tree.cells_.data() + next.firstChild);
         }
         for (int k = 0; k < count; ++k) {
             if (hit.distance < from[k]) return;  // nothing further on can be nearer
-            visit(cell.firstChild + static_cast<std::uint32_t>(order[k]), tree.childBounds(bounds, order[k]), level + 1,
-                  from[k], to[k]);
+            visit(cell.firstChild + static_cast<std::uint32_t>(order[k]), childCentre(mid, half, order[k]), 0.5 * half,
+                  level + 1, from[k], to[k]);
         }
     }
 
@@ -122,7 +128,7 @@ struct Octree::Traversal {
         slack = kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_);
         const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d);
         if (!span) return;
-        visit(0, tree.rootBounds_, 0, span->first, span->second);
+        visit(0, tree.rootBounds_.center(), tree.rootHalf_, 0, span->first, span->second);
         if (record) record->hit = hit;
     }
 };
