@@ -12,7 +12,7 @@ namespace dropscope {
 // Scene key "octree" (docs/scene-format.md).
 struct OctreeSettings {
     int maxDepth = 10;          // the root is level 0
-    int maxShapesPerLeaf = 16;  // a leaf with more is split, unless at maxDepth (16: docs/performance.md)
+    int maxShapesPerLeaf = 64;  // a leaf with more is split, unless at maxDepth (64: docs/performance.md)
 };
 
 using CellBounds = Eigen::AlignedBox3d;
