@@ -71,7 +71,7 @@ struct Octree::Traversal {
             const CellBounds bounds(mid.array() - half, mid.array() + half);
             record->cells.push_back({index, level, bounds, tEnter, tExit, cell.isLeaf()});
         }
-        testShapes(cell);
+        if (cell.size() > 0) testShapes(cell);
         if (cell.isLeaf()) return;
 
         double planeCrossing[3];
@@ -108,7 +108,7 @@ struct Octree::Traversal {
         for (int k = 0; k < count; ++k) {
             const Cell& next = tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])];
             const SphereBlock* blocks = tree.blocks_.data() + next.firstBlock;
-            const std::uint32_t blockCount = (std::min<std::uint32_t>(next.sphereCount, 32) + 3) / 4;
+            const std::uint32_t blockCount = (std::min<std::uint32_t>(next.sphereCount, 16) + 3) / 4;
             for (std::uint32_t b = 0; b < blockCount; ++b) {
                 __builtin_prefetch(blocks + b);
                 __builtin_prefetch(reinterpret_cast<const char*>(blocks + b) + 64);
