@@ -49,7 +49,9 @@ struct Sse2Lanes {
     }
 };
 
-std::uint64_t candidatesSse2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray) {
+}  // namespace
+
+std::uint64_t sphereCandidatesSse2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray) {
     const Sse2Lanes lanes{
         _mm_set1_pd(ray.origin[0]),          _mm_set1_pd(ray.origin[1]),    _mm_set1_pd(ray.origin[2]),
         _mm_set1_pd(ray.direction[0]),       _mm_set1_pd(ray.direction[1]), _mm_set1_pd(ray.direction[2]),
@@ -66,8 +68,8 @@ std::uint64_t candidatesSse2(const SphereBlock* blocks, unsigned count, const Pr
     return mask;
 }
 
-__attribute__((target("avx2,fma"))) std::uint64_t candidatesAvx2(const SphereBlock* blocks, unsigned count,
-                                                                 const PrefilterRay& ray) {
+__attribute__((target("avx2,fma"))) std::uint64_t sphereCandidatesAvx2(const SphereBlock* blocks, unsigned count,
+                                                                       const PrefilterRay& ray) {
     const __m256d ox = _mm256_set1_pd(ray.origin[0]);
     const __m256d oy = _mm256_set1_pd(ray.origin[1]);
     const __m256d oz = _mm256_set1_pd(ray.origin[2]);
@@ -97,12 +99,16 @@ __attribute__((target("avx2,fma"))) std::uint64_t candidatesAvx2(const SphereBlo
     return mask;
 }
 
+bool cpuHasAvx2() {
+    __builtin_cpu_init();  // required before __builtin_cpu_supports in a static initialiser
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
+
+namespace {
+
 using Candidates = std::uint64_t (*)(const SphereBlock*, unsigned, const PrefilterRay&);
 
-const Candidates kCandidates = [] {
-    __builtin_cpu_init();  // required before __builtin_cpu_supports in a static initialiser
-    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? candidatesAvx2 : candidatesSse2;
-}();
+const Candidates kCandidates = cpuHasAvx2() ? sphereCandidatesAvx2 : sphereCandidatesSse2;
 
 }  // namespace
 

@@ -54,4 +54,10 @@ struct PrefilterRay {
 // 2 with SSE2 otherwise; the results may differ only in rounding far inside the slack.
 std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
 
+// The two implementations behind sphereCandidates, for tests (their bits beyond `count` are unspecified).
+// The AVX2 one may run only when cpuHasAvx2().
+std::uint64_t sphereCandidatesSse2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
+std::uint64_t sphereCandidatesAvx2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
+bool cpuHasAvx2();
+
 }  // namespace dropscope
