@@ -137,8 +137,10 @@ private:
     std::vector<SphereBlock> blocks_;  // each cell's spheres, relative to its centre, padded to 4
     std::vector<ShapeId> sphereIds_;   // 4 per block, RayHit::kNone in padding
     std::vector<ShapeId> others_;
-    double rootHalf_ = 0.0;         // half the root's side
-    double coordinateScale_ = 0.0;  // largest |coordinate| of the inflated root, for the prefilter's slack
+    double rootHalf_ = 0.0;  // half the root's side
+    double coordinateScale_ = 0.0;
+    bool prefetch_ = false;  // whether the traversal prefetches children (a tree too large for the caches)  // largest
+                             // |coordinate| of the inflated root, for the prefilter's slack
 };
 
 template <class F>

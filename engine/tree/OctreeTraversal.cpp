@@ -103,9 +103,9 @@ struct Octree::Traversal {
             }
             t = next;
         }
-        // Memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask for the
-        // children's sphere blocks (up to 16 cache lines each) before testing the first of them.
-        for (int k = 0; k < count; ++k) {
+        // In a large tree memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask
+        // for the children's first sphere blocks (up to 8 cache lines each) before testing the first child.
+        for (int k = 0; k < count && tree.prefetch_; ++k) {
             const Cell& next = tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])];
             const SphereBlock* blocks = tree.blocks_.data() + next.firstBlock;
             const std::uint32_t blockCount = (std::min<std::uint32_t>(next.sphereCount, 16) + 3) / 4;
