@@ -36,11 +36,10 @@ Case randomCase(Rng& rng, int i) {
     case 1:  // inside
         p = centre + testing::uniform(rng, 0.0, 0.999) * radius * side.vector();
         break;
-    case 2: {  // on the surface, leaving or entering
-        p = centre + radius * side.vector();
-        d = testing::randomDirection(rng);
+    case 2:  // on the surface within its band, leaving, entering or tangent
+        p = centre + radius * (1.0 + testing::uniform(rng, -2e-9, 2e-9)) * side.vector();
+        if (rng() % 2 == 0) d = testing::randomDirection(rng);
         break;
-    }
     default:  // anywhere around it
         p = centre + testing::randomPoint(rng, 20.0 * radius);
         break;
