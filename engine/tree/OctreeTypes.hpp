@@ -30,7 +30,9 @@ struct CellVisit {
 // Everything firstHit did for one ray.
 struct TraversalRecord {
     std::vector<CellVisit> cells;
-    std::vector<ShapeId> shapesTested;  // in testing order, repeats included
+    // Shapes whose exact distance was computed (the spheres the prefilter let through, every other shape),
+    // in testing order, repeats included.
+    std::vector<ShapeId> shapesTested;
     std::size_t distanceEvaluations = 0;
     RayHit hit;
 };
