@@ -3,6 +3,7 @@
 #include "geometry/Box.hpp"
 #include "geometry/SphereGeometry.hpp"
 #include "tree/OctreeTypes.hpp"
+#include "tree/SpherePrefilter.hpp"
 
 #include <memory>
 #include <optional>
@@ -19,8 +20,9 @@ class BoundingBox;
 // A shape is stored in every child cell it overlaps, with cells inflated by margin() so that rounding
 // can never hide a shape from a ray that grazes a cell boundary; a shape that overlaps all eight
 // children of a cell stays in that cell instead (a glass cell around a whole cloud is then tested
-// once per ray, not in every leaf). Spheres are also packed by value next to their cell, so the
-// hot loop runs SphereGeometry on contiguous memory, the same code as Sphere itself. Shapes are
+// once per ray, not in every leaf). A cell's spheres are also packed by value, four to a SphereBlock
+// (structure of arrays), for a conservative vectorised prefilter; the few that pass it get the exact
+// SphereGeometry::distanceToSurface, the same code as Sphere itself, so bit-identical. Shapes are
 // placed into growable per-cell lists, which are then frozen into flat arrays for the queries; an
 // insert or remove thaws, edits and refreezes (O(N), a few ms per 1e5 shapes).
 class Octree {
@@ -87,22 +89,17 @@ private:
         bool isLeaf() const { return firstChild == kNoChild; }
         std::size_t size() const { return sphereIds.size() + otherIds.size(); }
     };
-    // The same cell, frozen for queries: ranges into two flat arrays, so a visit touches 20 bytes of
-    // cell and one contiguous run of packed spheres.
+    // The same cell, frozen for queries: ranges into the flat arrays, so a visit touches 20 bytes of
+    // cell and one contiguous run of sphere blocks (4 spheres a cache line).
     struct Cell {
         std::uint32_t firstChild;
-        std::uint32_t firstSphere;
+        std::uint32_t firstBlock;  // into blocks_; its spheres' ids from sphereIds_[4 firstBlock]
         std::uint32_t sphereCount;
         std::uint32_t firstOther;
         std::uint32_t otherCount;
         bool isLeaf() const { return firstChild == kNoChild; }
         std::size_t size() const { return std::size_t{sphereCount} + otherCount; }
     };
-    struct PackedSphere {
-        SphereGeometry geometry;
-        ShapeId id;
-    };
-
     struct Traversal;
 
     void rebuild(const CellBounds& bounds);
@@ -116,6 +113,13 @@ private:
     bool reaches(const Shape& shape, const CellBounds& extent, const CellBounds& cell) const;
     void unstore(std::uint32_t node, const CellBounds& bounds, ShapeId id);
     CellBounds childBounds(const CellBounds& bounds, int child) const;
+    // The centre of a child of the cube of half-side `half` around `centre` (the traversal's halving).
+    static Point childCentre(const Point& centre, double half, int child) {
+        const double quarter = 0.5 * half;
+        return {centre.x() + ((child & 1) != 0 ? quarter : -quarter),
+                centre.y() + ((child & 2) != 0 ? quarter : -quarter),
+                centre.z() + ((child & 4) != 0 ? quarter : -quarter)};
+    }
     // Calls f(id) for every shape a frozen cell holds, spheres first.
     template <class F>
     void forEachShapeIn(const Cell& cell, F&& f) const;
@@ -130,13 +134,19 @@ private:
     double margin_ = 0.0;
     std::vector<Node> building_;  // empty between edits
     std::vector<Cell> cells_;
-    std::vector<PackedSphere> spheres_;
+    std::vector<SphereBlock> blocks_;  // each cell's spheres, relative to its centre, padded to 4
+    std::vector<ShapeId> sphereIds_;   // 4 per block, RayHit::kNone in padding
     std::vector<ShapeId> others_;
+    double rootHalf_ = 0.0;  // half the root's side
+    double coordinateScale_ = 0.0;
+    bool prefetch_ = false;  // whether the traversal prefetches children (a tree too large for the caches)  // largest
+                             // |coordinate| of the inflated root, for the prefilter's slack
 };
 
 template <class F>
 void Octree::forEachShapeIn(const Cell& cell, F&& f) const {
-    for (std::uint32_t k = 0; k < cell.sphereCount; ++k) f(spheres_[cell.firstSphere + k].id);
+    const ShapeId* ids = sphereIds_.data() + std::size_t{cell.firstBlock} * SphereBlock::kWidth;
+    for (std::uint32_t k = 0; k < cell.sphereCount; ++k) f(ids[k]);
     for (std::uint32_t k = 0; k < cell.otherCount; ++k) f(others_[cell.firstOther + k]);
 }
 

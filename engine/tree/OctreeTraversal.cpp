@@ -24,30 +24,56 @@ struct Octree::Traversal {
         return d[axis] == 0.0 ? kInfinity : (value - p[axis]) * inverse[axis];
     }
 
+    double slack;  // the prefilter's, kPrefilterSlackRelative x (|p|_inf + the root's coordinate scale)
+
+    // The exact distance of one shape, offered to the best hit.
+    void testExactly(ShapeId id, double distance) {
+        hit.offer(id, distance);
+        if (record) {
+            record->shapesTested.push_back(id);
+            ++record->distanceEvaluations;
+        }
+    }
+
+    // The cell's spheres through the prefilter, then the exact test on the candidates it lets through;
+    // then every other shape exactly.
     void testShapes(const Cell& cell) {
-        const PackedSphere* sphere = tree.spheres_.data() + cell.firstSphere;
-        for (std::uint32_t k = 0; k < cell.sphereCount; ++k, ++sphere) {
-            hit.offer(sphere->id, sphere->geometry.distanceToSurface(p, d));
+        if (cell.sphereCount > 0) {
+            PrefilterRay ray{{p.x(), p.y(), p.z()}, {d.x(), d.y(), d.z()}, slack, 0.0};
+            for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
+                ray.limit = hit.distance + slack;
+                const std::uint32_t block = cell.firstBlock + first / SphereBlock::kWidth;
+                const ShapeId* ids = tree.sphereIds_.data() + std::size_t{block} * SphereBlock::kWidth;
+                for (std::uint64_t candidates = sphereCandidates(
+                         tree.blocks_.data() + block, std::min<std::uint32_t>(cell.sphereCount - first, 64), ray);
+                     candidates != 0; candidates &= candidates - 1) {
+                    const int lane = __builtin_ctzll(candidates);
+                    const SphereBlock& candidate =
+                        tree.blocks_[block + static_cast<std::uint32_t>(lane) / SphereBlock::kWidth];
+                    testExactly(
+                        ids[lane],
+                        candidate.geometry(static_cast<unsigned>(lane) % SphereBlock::kWidth).distanceToSurface(p, d));
+                }
+            }
         }
         for (std::uint32_t k = 0; k < cell.otherCount; ++k) {
             const ShapeId id = tree.others_[cell.firstOther + k];
-            hit.offer(id, tree.shapes_[id]->distanceToSurface(p, d));
-        }
-        if (record) {
-            tree.forEachShapeIn(cell, [&](ShapeId id) { record->shapesTested.push_back(id); });
-            record->distanceEvaluations += cell.size();
+            testExactly(id, tree.shapes_[id]->distanceToSurface(p, d));
         }
     }
 
     // Visits the cell over [tEnter, tExit], then its children in the order the ray meets them,
     // stopping as soon as the best hit lies before the next child's entry.
-    void visit(std::uint32_t index, const CellBounds& bounds, int level, double tEnter, double tExit) {
+    // The cell is the cube of half-side `half` around `mid`.
+    void visit(std::uint32_t index, const Point& mid, double half, int level, double tEnter, double tExit) {
         const Cell& cell = tree.cells_[index];
-        if (record) record->cells.push_back({index, level, bounds, tEnter, tExit, cell.isLeaf()});
-        testShapes(cell);
+        if (record) {
+            const CellBounds bounds(mid.array() - half, mid.array() + half);
+            record->cells.push_back({index, level, bounds, tEnter, tExit, cell.isLeaf()});
+        }
+        if (cell.size() > 0) testShapes(cell);
         if (cell.isLeaf()) return;
 
-        const Point mid = bounds.center();
         double planeCrossing[3];
         int child = 0;
         for (int axis = 0; axis < 3; ++axis) {
@@ -77,28 +103,32 @@ struct Octree::Traversal {
             }
             t = next;
         }
-        // Memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask for the
-        // children's spheres before testing the first of them.
-        for (int k = 0; k < count; ++k) {
+        // In a large tree memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask
+        // for the children's first sphere blocks (up to 8 cache lines each) before testing the first child.
+        for (int k = 0; k < count && tree.prefetch_; ++k) {
             const Cell& next = tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])];
-            const char* records = reinterpret_cast<const char*>(tree.spheres_.data() + next.firstSphere);
-            const std::size_t bytes = std::min<std::size_t>(next.sphereCount, 8) * sizeof(PackedSphere);
-            for (std::size_t offset = 0; offset < bytes; offset += 64) __builtin_prefetch(records + offset);
+            const SphereBlock* blocks = tree.blocks_.data() + next.firstBlock;
+            const std::uint32_t blockCount = (std::min<std::uint32_t>(next.sphereCount, 16) + 3) / 4;
+            for (std::uint32_t b = 0; b < blockCount; ++b) {
+                __builtin_prefetch(blocks + b);
+                __builtin_prefetch(reinterpret_cast<const char*>(blocks + b) + 64);
+            }
             if (!next.isLeaf()) __builtin_prefetch(tree.cells_.data() + next.firstChild);
         }
         for (int k = 0; k < count; ++k) {
             if (hit.distance < from[k]) return;  // nothing further on can be nearer
-            visit(cell.firstChild + static_cast<std::uint32_t>(order[k]), tree.childBounds(bounds, order[k]), level + 1,
-                  from[k], to[k]);
+            visit(cell.firstChild + static_cast<std::uint32_t>(order[k]), childCentre(mid, half, order[k]), 0.5 * half,
+                  level + 1, from[k], to[k]);
         }
     }
 
     void run() {
         if (!d || !p.allFinite()) return;
         inverse = d.vector().cwiseInverse();
+        slack = kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_);
         const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d);
         if (!span) return;
-        visit(0, tree.rootBounds_, 0, span->first, span->second);
+        visit(0, tree.rootBounds_.center(), tree.rootHalf_, 0, span->first, span->second);
         if (record) record->hit = hit;
     }
 };
@@ -124,14 +154,14 @@ std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const 
 }
 
 RayHit Octree::firstHit(const Point& p, const Direction& d) const {
-    Traversal traversal{*this, p, d, {}, nullptr, {}};
+    Traversal traversal{*this, p, d, {}, nullptr, {}, 0.0};
     traversal.run();
     return traversal.hit;
 }
 
 RayHit Octree::firstHit(const Point& p, const Direction& d, TraversalRecord& record) const {
     record = TraversalRecord{};
-    Traversal traversal{*this, p, d, {}, &record, {}};
+    Traversal traversal{*this, p, d, {}, &record, {}, 0.0};
     traversal.run();
     return traversal.hit;
 }

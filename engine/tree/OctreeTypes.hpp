@@ -12,7 +12,7 @@ namespace dropscope {
 // Scene key "octree" (docs/scene-format.md).
 struct OctreeSettings {
     int maxDepth = 10;          // the root is level 0
-    int maxShapesPerLeaf = 16;  // a leaf with more is split, unless at maxDepth (16: docs/performance.md)
+    int maxShapesPerLeaf = 64;  // a leaf with more is split, unless at maxDepth (64: docs/performance.md)
 };
 
 using CellBounds = Eigen::AlignedBox3d;
@@ -30,7 +30,9 @@ struct CellVisit {
 // Everything firstHit did for one ray.
 struct TraversalRecord {
     std::vector<CellVisit> cells;
-    std::vector<ShapeId> shapesTested;  // in testing order, repeats included
+    // Shapes whose exact distance was computed (the spheres the prefilter let through, every other shape),
+    // in testing order, repeats included.
+    std::vector<ShapeId> shapesTested;
     std::size_t distanceEvaluations = 0;
     RayHit hit;
 };

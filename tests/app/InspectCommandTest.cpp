@@ -1,5 +1,6 @@
 #include "app/CliRun.hpp"
 #include "cli/Cli.hpp"
+#include "tree/OctreeTypes.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -143,7 +144,7 @@ TEST(InspectCommand, ReportsTheOctreePerLevel) {
     ASSERT_EQ(run.status, kExitSuccess) << run.err;
     const nlohmann::json octree = nlohmann::json::parse(run.out)["octree"];
     EXPECT_EQ(octree["max_depth"], 10);
-    EXPECT_EQ(octree["max_shapes_per_leaf"], 16);
+    EXPECT_EQ(octree["max_shapes_per_leaf"], OctreeSettings{}.maxShapesPerLeaf);
     ASSERT_FALSE(octree["levels"].empty());
     EXPECT_EQ(octree["levels"][0]["cells"], 1);
     std::size_t stored = 0;
@@ -151,7 +152,10 @@ TEST(InspectCommand, ReportsTheOctreePerLevel) {
     EXPECT_GE(stored, 5u);  // every shape of the scene, some perhaps in several cells
     EXPECT_GT(octree["bytes"].get<std::size_t>(), 0u);
     const CliRun table = runDropscope({"inspect", kSourceDir + "/assets/scenes/default.json"});
-    EXPECT_NE(table.out.find("octree (max_depth 10, max_shapes_per_leaf 16)"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("octree (max_depth 10, max_shapes_per_leaf " +
+                             std::to_string(OctreeSettings{}.maxShapesPerLeaf) + ")"),
+              std::string::npos)
+        << table.out;
     EXPECT_NE(table.out.find("leaves by shape count"), std::string::npos);
 }
 
