@@ -27,7 +27,7 @@ run() {
         1x2) "$dropscope" trace "$scene" --photons "$photons" --threads 2 --out "$out" > /dev/null ;;
     esac
     end=$(date +%s.%N)
-    trace[$config]+="$(/usr/bin/python3 -c "import json; print(json.load(open('$out/summary.json'))['seconds'])") "
+    trace[$config]+="$(/usr/bin/python3 -c "import json; print(round(json.load(open('$out/summary.json'))['seconds'], 3))") "
     wall[$config]+="$(calc "$end - $start") "
     local reference="$work/1x1-0"
     for file in $(cd "$reference" && ls); do
