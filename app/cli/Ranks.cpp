@@ -1,9 +1,14 @@
 #include "cli/Ranks.hpp"
 
+#include "cli/BadInput.hpp"
 #include "cli/Cli.hpp"
+#include "cli/RayCsv.hpp"
+#include "scene/SceneLoader.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 #ifdef DROPSCOPE_WITH_MPI
 #include <mpi.h>
@@ -13,26 +18,39 @@ namespace dropscope {
 
 namespace {
 
-#ifdef DROPSCOPE_WITH_MPI
 // Set by the launchers MPI programs are started with: Open MPI's mpirun, a PMIx launcher (srun --mpi=pmix,
-// prun), and PMI-1/2 (MPICH's hydra, srun --mpi=pmi2). A plain `dropscope trace` starts no MPI at all: no
+// prun), PMI-1/2 (MPICH's hydra, srun --mpi=pmi2), MVAPICH. A plain `dropscope trace` starts no MPI at all: no
 // singleton start-up, no daemon.
 bool launchedByMpi() {
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"}) {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK", "MV2_COMM_WORLD_SIZE"}) {
         if (std::getenv(name)) return true;
     }
     return false;
+}
+
+#ifndef DROPSCOPE_WITH_MPI
+// The processes a launcher says it started, where it says so.
+long launchedProcesses() {
+    long most = 1;
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "MV2_COMM_WORLD_SIZE"}) {
+        if (const char* value = std::getenv(name)) most = std::max(most, std::strtol(value, nullptr, 10));
+    }
+    return most;
 }
 #endif
 
 }  // namespace
 
 Ranks::Ranks() {
-#ifdef DROPSCOPE_WITH_MPI
     if (!launchedByMpi()) return;
+#ifdef DROPSCOPE_WITH_MPI
     int already = 0;
+    int finished = 0;
     MPI_Initialized(&already);
-    if (already) throw std::logic_error("MPI is already initialised: one Ranks at a time");
+    MPI_Finalized(&finished);
+    // MPI starts once per process: a second trace in the same process (the in-process tests run under a
+    // launcher) runs alone.
+    if (already || finished) return;
     int provided = 0;
     // Only the main thread calls MPI: the progress and stop messages go from OpenMP's thread 0 of the
     // photon loop, which is the main thread.
@@ -45,6 +63,14 @@ Ranks::Ranks() {
     }
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+#else
+    // N copies of a whole run would all write the same files at once.
+    if (const long processes = launchedProcesses(); processes > 1) {
+        throw BadInputError("started as " + std::to_string(processes) +
+                            " processes by an MPI launcher, but this dropscope was built without MPI: each would "
+                            "trace every photon into the same --out (install libopenmpi-dev and rebuild; "
+                            "docs/scaling.md)");
+    }
 #endif
 }
 
@@ -52,6 +78,20 @@ Ranks::~Ranks() {
 #ifdef DROPSCOPE_WITH_MPI
     if (initialised_) MPI_Finalize();
 #endif
+}
+
+int exitStatusOf(const std::exception_ptr& failure) {
+    try {
+        std::rethrow_exception(failure);
+    } catch (const SceneError&) {
+        return kExitBadInput;
+    } catch (const RayCsvError&) {
+        return kExitBadInput;
+    } catch (const BadInputError&) {
+        return kExitBadInput;
+    } catch (...) {
+        return kExitInternalError;
+    }
 }
 
 void Ranks::together(const std::function<void()>& step) const {
@@ -69,8 +109,10 @@ void Ranks::together(const std::function<void()>& step) const {
     int lowestFailing = failure ? rank_ : size_;
     MPI_Allreduce(MPI_IN_PLACE, &lowestFailing, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
     if (lowestFailing == size_) return;
+    int status = failure ? exitStatusOf(failure) : kExitBadInput;
+    MPI_Bcast(&status, 1, MPI_INT, lowestFailing, MPI_COMM_WORLD);
     if (lowestFailing == rank_) std::rethrow_exception(failure);
-    throw RankFailed{kExitBadInput};
+    throw RankFailed{status};
 #endif
 }
 

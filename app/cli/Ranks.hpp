@@ -19,10 +19,14 @@ public:
     int size() const { return size_; }
     bool root() const { return rank_ == 0; }
     bool parallel() const { return size_ > 1; }
+    // Started by an MPI launcher and running with MPI (even as one rank): its stderr is a pipe to the
+    // launcher, and mpirun passes a Ctrl-C on as SIGTERM.
+    bool launched() const { return initialised_; }
 
     // Runs `step` on every rank, then all learn whether it threw anywhere: on the lowest rank whose step
     // threw the exception is rethrown (so its message is printed once), every other rank then throws
-    // RankFailed. A failure of one rank can then never leave the others waiting for it.
+    // RankFailed with the exit status that exception gives (exitStatusOf). A failure of one rank can then
+    // never leave the others waiting for it.
     void together(const std::function<void()>& step) const;
     // Ends every rank at once with `status` (MPI_Abort): for a failure of one rank while the others may be
     // waiting for its messages, which no exit of this rank alone would end. Only when parallel().
@@ -33,6 +37,9 @@ private:
     int size_ = 1;
     bool initialised_ = false;
 };
+
+// The exit status runCli gives an exception: kExitBadInput for bad input, kExitInternalError otherwise.
+int exitStatusOf(const std::exception_ptr& failure);
 
 // Thrown by Ranks::together on the ranks whose own step went well (or failed after a lower rank's): the
 // lower rank has said what went wrong, so this rank ends quietly with `status`.

@@ -33,32 +33,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// --polarisation, default stokes; Schlick's approximation is unpolarised, so with --fresnel schlick the
-// default is none and an explicit stokes is refused.
-PolarisationModel polarisationModel(const TraceOptions& options) {
-    const bool schlick = options.fresnel == "schlick";
-    if (options.polarisation.empty()) return schlick ? PolarisationModel::None : PolarisationModel::Stokes;
-    if (options.polarisation == "none") return PolarisationModel::None;
-    if (schlick) {
-        throw BadInputError("--polarisation stokes: needs --fresnel exact (Schlick's approximation is unpolarised)");
-    }
-    return PolarisationModel::Stokes;
-}
-
-TraceSettings traceSettings(const TraceOptions& options) {
-    TraceSettings settings;
-    settings.photons = options.photons;
-    settings.seed = options.seed;
-    settings.threads = options.threads;
-    settings.paths = options.paths;
-    settings.transport.maxEvents = options.maxEvents;
-    settings.transport.fresnel = options.fresnel == "schlick" ? FresnelModel::Schlick : FresnelModel::Exact;
-    settings.transport.polarisation = polarisationModel(options);
-    settings.transport.diffraction =
-        options.diffraction == "fraunhofer" ? DiffractionModel::Fraunhofer : DiffractionModel::None;
-    return settings;
-}
-
 std::string listed(const std::vector<std::string>& names) {
     std::string text;
     for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
@@ -149,37 +123,6 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
     return command;
 }
 
-TraceSettings checkedTraceSettings(const TraceOptions& options) {
-    TraceSettings settings = traceSettings(options);  // refuses --polarisation stokes with Schlick first
-    if (static_cast<std::uint64_t>(options.bins) * static_cast<std::uint64_t>(options.wavelengthBins) >
-        kMaxSpectralCells) {
-        throw BadInputError("--bins " + std::to_string(options.bins) + " with --wavelength-bins " +
-                            std::to_string(options.wavelengthBins) + ": more than " +
-                            std::to_string(kMaxSpectralCells) + " cells in angular_spectral.csv");
-    }
-    return settings;
-}
-
-PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene) {
-    PreparedTrace prepared{checkedTraceSettings(options), {}};
-    const TraceSettings& settings = prepared.settings;
-    if (scene.sources.empty()) throw SceneError(scene.origin, "sources", "the scene has no light sources to trace");
-    const auto [lo, hi] = wavelengthRangeNm(scene.sources, scene.wavelengthNm);
-    const WavelengthBins wavelengths{options.wavelengthBins, lo, hi};
-    try {
-        wavelengths.check();
-    } catch (const std::invalid_argument& error) {
-        throw BadInputError("--wavelength-bins " + std::to_string(options.wavelengthBins) + ": " + error.what());
-    }
-    prepared.tallies = standardTallies(options.bins, settings.transport.polarisation, wavelengths);
-    if (options.orders) {
-        prepared.tallies.add(
-            std::make_unique<OrderTally>(options.bins, settings.transport.diffraction != DiffractionModel::None));
-    }
-    addDetectorTallies(prepared.tallies, scene, settings.transport.polarisation);
-    return prepared;
-}
-
 namespace {
 
 // Everything a trace does before its photons, on every rank: the checks, the scene, the tallies. Only rank 0
@@ -222,11 +165,11 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
     info.sceneJson = setup.sceneJson;
     // Alive until the files are written: a first Ctrl-C while writing them is absorbed, not fatal. mpirun
     // turns a Ctrl-C into SIGTERM to every rank, so a rank of an MPI run takes that as its Ctrl-C.
-    const InterruptGuard interrupt(ranks.parallel() ? InterruptGuard::kAlsoTerminate : InterruptGuard::kInterruptOnly);
+    const InterruptGuard interrupt(ranks.launched() ? InterruptGuard::kAlsoTerminate : InterruptGuard::kInterruptOnly);
     std::optional<ProgressLine> progress;
-    if (ranks.root() && (isTerminal(err) || ranks.parallel())) {
+    if (ranks.root() && (isTerminal(err) || ranks.launched())) {
         // A rank's stderr is a pipe to mpirun, which may be a terminal or a batch job's log: whole lines.
-        progress.emplace(err, ranks.parallel() ? ProgressLine::Style::Lines : ProgressLine::Style::InPlace);
+        progress.emplace(err, ranks.launched() ? ProgressLine::Style::Lines : ProgressLine::Style::InPlace);
     }
     TraceControl control;
     control.stop = &interrupt.flag();
@@ -239,7 +182,9 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
         err << "dropscope: internal error on rank " << ranks.rank() << ": " << error.what() << '\n' << std::flush;
         ranks.abort(kExitInternalError);  // the other ranks may be waiting for this one's messages
     }
-    if (!ranks.root()) return result.partial ? kExitInterrupted : kExitSuccess;
+    // Rank 0 owns the run's exit status: a rank that ended early with a status of its own could make mpirun
+    // end the job while rank 0 still writes.
+    if (!ranks.root()) return kExitSuccess;
     if (progress) progress->finish({result.photons, result.requested, result.seconds});
 
     try {
@@ -248,6 +193,7 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
         throw BadInputError(error.what());
     }
     printSummary(result, directory, out);
+    out.flush();  // before MPI_Finalize: mpirun may end the job as soon as every rank has finished it
     if (!result.partial) return kExitSuccess;
     err << "dropscope: trace interrupted: " << result.photons << " of " << result.requested
         << " photons traced, partial results in " << directory.string() << '\n';

@@ -79,13 +79,14 @@ void mergeRankResult(TraceResult& into, std::span<const std::byte> bytes) {
     const std::uint64_t photons = in.word();
     TallySet tallies = into.tallies.emptyCopy();
     tallies.readScores(in);
-    std::vector<PhotonPath> paths(in.word());
+    // The least a path and an event take: five words, and an event's fifteen.
+    std::vector<PhotonPath> paths(in.count(5 * sizeof(std::uint64_t)));
     for (PhotonPath& path : paths) {
         path.photon = in.word();
         path.source = static_cast<std::size_t>(in.word());
         path.wavelengthNm = in.real();
         path.fate = static_cast<PhotonFate>(in.word());
-        path.events.resize(in.word());
+        path.events.resize(in.count(15 * sizeof(std::uint64_t)));
         for (Event& event : path.events) event = readEvent(in);
     }
     if (!in.atEnd()) throw std::runtime_error("trace result: bytes left over (another run's result)");

@@ -95,7 +95,7 @@ void HitRecords::writeScores(ScoreWriter& out) const {
 }
 
 void HitRecords::readScores(ScoreReader& in) {
-    const std::uint64_t count = in.word();
+    const std::uint64_t count = in.count(16 * sizeof(std::uint64_t));  // a hit is 16 numbers
     if (count > capacity_) throw std::runtime_error("tally scores: more detector records than the detector keeps");
     hits_.assign(count, DetectorHit{});
     for (DetectorHit& hit : hits_) {

@@ -87,6 +87,13 @@ public:
         for (FixedPointSum& value : values) value = sum();
     }
     bool atEnd() const { return next_ == bytes_.size(); }
+    // A count of items written after it, each at least `itemBytes` long: refused when the bytes left cannot
+    // hold them (bytes of another run), before anything is allocated for them.
+    std::uint64_t count(std::size_t itemBytes) {
+        const std::uint64_t items = word();
+        if (items > (bytes_.size() - next_) / itemBytes) throw std::runtime_error("tally scores: the bytes end early");
+        return items;
+    }
 
 private:
     void checkLength(std::size_t expected) {

@@ -54,12 +54,19 @@ run_case() {
     compare_runs "$name" "$work/$name-one" "$work/$name-three"
 }
 
-# Polarised, with diffraction, ray orders, paths of photons on two ranks, and every detector type with records.
+# Polarised, with diffraction, ray orders, paths of photons on two ranks, every detector type, and the screen's
+# 12000 records from the photons of two ranks (about one hit a photon, 6667 photons a rank).
 run_case detectors "$source_dir/tests/data/scenes/detectors_recorded.json" --photons 20000 --seed 5 --bins 90 \
     --paths 7000 --orders --diffraction fraunhofer
 # Sunlight in wavelength bands, a far-field sky, unpolarised.
 run_case sky "$source_dir/assets/scenes/rainbow-sky.json" --photons 20000 --seed 9 --bins 60 --wavelength-bins 5 \
     --polarisation none
+
+[ "$(wc -l < "$work/detectors-three/detector-screen-records.csv")" = 12001 ] || fail "detectors: not 12000 records"
+[ "$(tail -1 "$work/detectors-three/detector-screen-records.csv" | cut -d, -f1)" -gt 6667 ] ||
+    fail "detectors: the records come from rank 0 alone"
+# Fewer photons than ranks: a rank with nothing to trace.
+run_case few "$source_dir/tests/data/scenes/detectors_recorded.json" --photons 2 --seed 3 --paths 2
 
 # Bad input: said once (by rank 0), exit 2 from mpirun.
 status=0
