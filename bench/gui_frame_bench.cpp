@@ -4,12 +4,13 @@
 // tooltip). A frame is App::frame followed by glFinish. Measured, interleaved so that load drift reaches
 // all alike:
 //   steady   nothing changes: ImGui's panels, the pick, and the renderer's draw of uploaded data;
+//   orbit    the camera turns a degree about the target before each frame (what a drag does);
 //   rebuild  every frame rebuilds the layers (what a change of a view option costs; here the selection
 //            changes);
 //   reference ViewportScene::draw alone on the same state: the 3D view without ImGui and picking.
 // docs/performance.md ("The app") has the figures.
 //
-// Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--png FILE]
+// Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--point-pixels 6] [--png FILE]
 #include "gui/App.hpp"
 #include "gui/Screenshot.hpp"
 #include "gui/TraceActions.hpp"
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -34,12 +36,14 @@ namespace {
 
 constexpr int kWidth = 1280;
 constexpr int kHeight = 800;
+constexpr double kOrbitStep = 0.0174533;  // one degree, about what a slow drag turns a frame
 
 struct Options {
     int frames = 40;
     std::uint64_t droplets = 10'000;
     std::uint64_t paths = 1'000;
     std::string png;
+    float pointPixels = render::kInteractivePointPixels;
 };
 
 Options parse(int argc, char** argv) {
@@ -52,6 +56,8 @@ Options parse(int argc, char** argv) {
             options.droplets = parseCount(flag, argv[i + 1]);
         else if (flag == "--paths")
             options.paths = parseCount(flag, argv[i + 1]);
+        else if (flag == "--point-pixels")
+            options.pointPixels = std::stof(argv[i + 1]);
         else if (flag == "--png")
             options.png = argv[i + 1];
         else
@@ -60,12 +66,22 @@ Options parse(int argc, char** argv) {
     return options;
 }
 
-// Droplets of radius 0.01-0.03 at volume fraction about 1e-3 of a 2-unit cube, lit by a beam along +z.
+// Droplets of radius 0.01-0.03 at volume fraction about 0.06 (1e4 of them fill a 2-unit cube; the cube grows
+// with the count, so the density stays), lit by a beam along +z.
 std::string cloudScene(std::uint64_t droplets) {
+    const double half = std::cbrt(static_cast<double>(droplets) / 1e4);
+    const auto number = [](double x) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.6g", x);
+        return std::string(text);
+    };
     return R"({"dropscope": 1, "ambient": "air", "media": {"air": {"n": 1.000278}, "water": {"n": 1.3337}},
-      "sources": [{"type": "beam", "origin": [0, 0, -3], "direction": [0, 0, 1], "radius": 0.8}],
-      "generators": [{"type": "droplet_cloud", "region": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "count": )" +
-           std::to_string(droplets) + R"(, "radius": {"distribution": "uniform", "min": 0.01, "max": 0.03},
+      "sources": [{"type": "beam", "origin": [0, 0, )" +
+           number(-3 * half) + R"(], "direction": [0, 0, 1], "radius": )" + number(0.8 * half) + R"(}],
+      "generators": [{"type": "droplet_cloud", "region": {"min": [)" +
+           number(-half) + ", " + number(-half) + ", " + number(-half) + R"(], "max": [)" + number(half) + ", " +
+           number(half) + ", " + number(half) + R"(]}, "count": )" + std::to_string(droplets) +
+           R"(, "radius": {"distribution": "uniform", "min": 0.01, "max": 0.03},
       "medium": "water", "seed": 5}]})";
 }
 
@@ -92,10 +108,15 @@ int run(const Options& options) {
     input.mouseInside = true;
     input.mouseX = 700.0f;
     input.mouseY = 380.0f;
-    for (int k = 0; k < 3; ++k) app.frame(input);
+    Stopwatch firstFrame;
+    app.frame(input);
+    context.gl().Finish();
+    std::printf("first frame (layers built and uploaded, shaders compiled): %.2f s\n", firstFrame.seconds());
+    for (int k = 0; k < 2; ++k) app.frame(input);
 
     app.state().traces.fire.photons = options.paths;
     app.state().traces.fire.paths = options.paths;
+    app.state().view.layers.render.pointPixels = options.pointPixels;
     app.state().view.layers.octree = true;
     app.state().view.layers.octreeFilter.level = 2;
     input.keysDown.set(gui::kKeySpace);
@@ -112,7 +133,7 @@ int run(const Options& options) {
 
     gui::ViewportScene reference(context.gl());
     reference.draw(app.state(), kWidth, kHeight);  // uploads the same layers once, then only draws
-    Series steady, rebuild, alone;
+    Series steady, orbit, rebuild, alone;
     // Droplet 0 selected for one timed frame and nothing again for the next: both rebuild, and the
     // reference always draws the state it was built from (nothing selected).
     for (int k = 0; k < options.frames; ++k) {
@@ -121,6 +142,13 @@ int run(const Options& options) {
             app.frame(input);
             context.gl().Finish();
             steady.ms.push_back(1e3 * watch.seconds());
+        }
+        {
+            app.state().view.camera.orbit(kOrbitStep, 0.0);
+            Stopwatch watch;
+            app.frame(input);
+            context.gl().Finish();
+            orbit.ms.push_back(1e3 * watch.seconds());
         }
         for (const ShapeId selected : {ShapeId{0}, RayHit::kNone}) {
             app.state().scene.selectShape(selected);
@@ -136,15 +164,40 @@ int run(const Options& options) {
             alone.ms.push_back(1e3 * watch.seconds());
         }
     }
+    // What the 3D view's time is made of: each layer alone (a block of frames each, after a rebuild).
+    const auto layerAlone = [&](bool shapes, bool lines) {
+        gui::AppState& state = app.state();
+        const render::RenderOptions kept = state.view.layers.render;
+        state.view.layers.render.shapes = shapes;
+        state.view.layers.render.lines = lines;
+        reference.draw(state, kWidth, kHeight);
+        Series series;
+        for (int k = 0; k < options.frames; ++k) {
+            Stopwatch watch;
+            reference.draw(state, kWidth, kHeight);
+            context.gl().Finish();
+            series.ms.push_back(1e3 * watch.seconds());
+        }
+        state.view.layers.render = kept;
+        return series;
+    };
+    Series shapesAlone = layerAlone(true, false);
+    Series linesAlone = layerAlone(false, true);
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, steady (panels + pick + 3D view)", steady.median(),
                 steady.minimum(), steady.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, orbiting (1 degree a frame)", orbit.median(), orbit.minimum(),
+                orbit.median() / reference3d);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, layers rebuilt every frame", rebuild.median(), rebuild.minimum(),
                 rebuild.median() / reference3d);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "reference: 3D view alone (ViewportScene)", reference3d,
                 alone.minimum(), 1.0);
-    std::printf("steady: %.1f frames/s\n", 1e3 / steady.median());
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "  of which the shapes alone", shapesAlone.median(),
+                shapesAlone.minimum(), shapesAlone.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "  of which the lines alone", linesAlone.median(), linesAlone.minimum(),
+                linesAlone.median() / reference3d);
+    std::printf("steady: %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steady.median(), 1e3 / orbit.median());
     // The ray tree (R) is traced on the UI thread from an optical scene built from the document.
     Stopwatch rayTree;
     gui::fireRayTree(app.state());

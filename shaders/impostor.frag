@@ -1,7 +1,19 @@
 #version 330 core
-// The exact surface of a sphere or ellipsoid under its proxy cube: the eye ray in the shape's unit-sphere
-// frame, the nearest root in front of the eye (the far one when the eye is inside), its true depth.
+// The exact surface of a sphere or ellipsoid under its proxy quad: the eye ray in the shape's unit-sphere
+// frame, the nearest root in front of the eye (the far one when the eye is inside), its true depth. The
+// POINT_SPRITE variant (impostor.vert) finds the eye ray from the pixel and leaves the depth to the point.
+#extension GL_ARB_conservative_depth : enable
+#if defined(GL_ARB_conservative_depth) && !defined(POINT_SPRITE)
+// The quad lies in front of the shape (impostor.vert), so the depth written is never nearer than the quad's:
+// a driver may then test the quad's depth before running this shader.
+layout(depth_greater) out float gl_FragDepth;
+#endif
+#ifdef POINT_SPRITE
+uniform mat4 inverseViewProjection;
+uniform vec2 viewportSize;
+#else
 in vec3 worldPosition;
+#endif
 flat in vec3 shapeCenter;
 flat in mat3 toObject;
 flat in mat3 toWorld;
@@ -14,6 +26,10 @@ uniform float opacity;
 out vec4 fragmentColour;
 
 void main() {
+#ifdef POINT_SPRITE
+    vec4 near = inverseViewProjection * vec4(2.0 * gl_FragCoord.xy / viewportSize - 1.0, -1.0, 1.0);
+    vec3 worldPosition = near.xyz / near.w;
+#endif
     vec3 origin = toObject * (eye - shapeCenter);
     vec3 direction = toObject * (worldPosition - eye);
     float a = dot(direction, direction);
@@ -27,8 +43,10 @@ void main() {
     if (t < 0.0) discard;
     vec3 surface = origin + t * direction;
     vec3 world = shapeCenter + toWorld * surface;
+#ifndef POINT_SPRITE
     vec4 clip = viewProjection * vec4(world, 1.0);
     gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
+#endif
     vec3 normal = normalize(transpose(toObject) * surface);
     float diffuse = abs(dot(normal, normalize(eye - world)));  // a headlight
     fragmentColour = vec4(shapeColour.rgb * (0.3 + 0.7 * diffuse), shapeColour.a * opacity);

@@ -1,9 +1,16 @@
 #version 330 core
 // Spheres and ellipsoids: one camera-facing quad per shape, covering the silhouette of its bounding
 // sphere (radius R, the largest semi-axis); impostor.frag ray-casts the shape's unit sphere through it.
-// At distance d from the eye the tangent cone cuts the plane through the centre in a circle of radius
-// R d / sqrt(d^2 - R^2), so a quad of that half-size there covers the shape. With the eye inside (or
-// nearly inside) the bounding sphere no such quad exists; the quad then covers the whole near plane.
+// At distance d from the eye the tangent cone cuts the plane touching the bounding sphere's front in a
+// circle of radius R (d - R) / sqrt(d^2 - R^2), so a quad of that half-size there covers the shape, and the
+// shape lies behind the quad along every eye ray through it (impostor.frag relies on this). With the eye
+// inside (or nearly inside) the bounding sphere no such quad exists, and with the sphere's front before the
+// near plane it would be clipped; the quad then covers the whole near plane.
+//
+// Shapes whose silhouette is at most `pointPixels` across are drawn by the POINT_SPRITE variant instead:
+// one point, a square a little wider than the silhouette, at the bounding sphere's point nearest the eye (its
+// depth is the fragments', so the depth test can run before the fragment shader). Both variants size a
+// shape with the same expression, so each shape is drawn by exactly one of them.
 layout(location = 0) in vec3 corner;  // (+-1, +-1, 0)
 layout(location = 2) in vec3 center;
 layout(location = 3) in mat3 linear;         // locations 3, 4, 5
@@ -14,12 +21,18 @@ uniform mat4 viewProjection;
 uniform mat4 inverseViewProjection;
 uniform vec3 eye;
 uniform vec3 cameraUp;
+uniform float pointPixels;     // 0: no shape is a point
+uniform float pixelsPerUnit;   // framebuffer pixels a unit length spans at unit depth on the axis
+uniform float maxStretch;      // how much wider than on the axis a shape is drawn in the corners
+uniform vec2 viewportSize;
 
 out vec3 worldPosition;
 flat out vec3 shapeCenter;
 flat out mat3 toObject;
 flat out mat3 toWorld;
 flat out vec4 shapeColour;
+
+const vec4 kDropped = vec4(0.0, 0.0, 2.0, 1.0);  // beyond the far plane: clipped
 
 void main() {
     shapeCenter = center;
@@ -29,17 +42,50 @@ void main() {
     float radius = max(length(linear[0]), max(length(linear[1]), length(linear[2])));
     vec3 toEye = eye - center;
     float distance = length(toEye);
-    if (distance > 1.01 * radius) {
-        vec3 forward = toEye / distance;
+    // The silhouette's width in pixels: the tangent cone's on the axis, widened off the axis by
+    // (distance / depth)^2 (depth = the centre's clip w).
+    vec4 clipCentre = viewProjection * vec4(center, 1.0);
+    float depth = clipCentre.w;
+    float stretch = depth > 0.0 ? min(distance * distance / (depth * depth), maxStretch) : maxStretch;
+    float pixels = distance > 1.01 * radius
+                       ? 2.0 * radius * pixelsPerUnit / sqrt(distance * distance - radius * radius) * stretch
+                       : 1e30;
+    // A point is clipped whole when its centre leaves the view, so one that reaches over the image's edge
+    // is drawn as a quad.
+    float pointSize = 1.05 * pixels + 0.5;  // covers every pixel centre in the silhouette, with a margin
+    vec2 pixel = (clipCentre.xy / clipCentre.w * 0.5 + 0.5) * viewportSize;
+    bool inside = clipCentre.w > 0.0 && all(greaterThanEqual(pixel - 0.5 * pointSize - 1.0, vec2(0.0))) &&
+                  all(lessThanEqual(pixel + 0.5 * pointSize + 1.0, viewportSize));
+    bool point = pixels <= pointPixels && inside;
+#ifdef POINT_SPRITE
+    if (!point) {
+        gl_Position = kDropped;
+        gl_PointSize = 1.0;
+        return;
+    }
+    worldPosition = center + radius * toEye / distance;
+    gl_Position = viewProjection * vec4(worldPosition, 1.0);
+    gl_PointSize = pointSize;
+#else
+    if (point) {
+        gl_Position = kDropped;
+        return;
+    }
+    vec3 forward = toEye / distance;
+    vec4 front = viewProjection * vec4(center + radius * forward, 1.0);
+    if (distance > 1.01 * radius && front.z >= -front.w) {
         vec3 right = normalize(cross(cameraUp, forward));
         if (any(isnan(right))) right = normalize(cross(vec3(1.0, 0.0, 0.0), forward));
         vec3 up = cross(forward, right);
-        float halfSize = radius * distance / sqrt(distance * distance - radius * radius);
-        worldPosition = center + halfSize * (corner.x * right + corner.y * up);
+        // In the plane touching the bounding sphere's front, the cone is narrower by (d - R) / d; every
+        // point of the shape lies behind the quad along the eye ray through it.
+        float halfSize = radius * (distance - radius) / sqrt(distance * distance - radius * radius);
+        worldPosition = center + radius * forward + halfSize * (corner.x * right + corner.y * up);
         gl_Position = viewProjection * vec4(worldPosition, 1.0);
     } else {
         vec4 near = inverseViewProjection * vec4(corner.xy, -1.0, 1.0);
         worldPosition = near.xyz / near.w;
         gl_Position = vec4(corner.xy, -1.0, 1.0);
     }
+#endif
 }

@@ -21,8 +21,15 @@ struct SliceSettings {
 struct ViewState {
     render::Camera camera;
     bool fitRequested = true;  // fit the camera to the scene in the next frame
-    render::LayerOptions layers;
+    render::LayerOptions layers = interactiveLayers();
     SliceSettings slice;
+
+    // Small droplets as points (render::kInteractivePointPixels): a frame a user orbits in, not a snapshot.
+    static render::LayerOptions interactiveLayers() {
+        render::LayerOptions layers;
+        layers.render.pointPixels = render::kInteractivePointPixels;
+        return layers;
+    }
 };
 
 }  // namespace dropscope::gui

@@ -53,6 +53,7 @@ namespace dropscope::render {
     X(PFNGLUNIFORM3FVPROC, Uniform3fv)                           \
     X(PFNGLUNIFORM4FVPROC, Uniform4fv)                           \
     X(PFNGLUNIFORM1FPROC, Uniform1f)                             \
+    X(PFNGLUNIFORM2FPROC, Uniform2f)                             \
     X(PFNGLUNIFORM1IPROC, Uniform1i)                             \
     X(PFNGLDRAWARRAYSPROC, DrawArrays)                           \
     X(PFNGLDRAWELEMENTSPROC, DrawElements)                       \

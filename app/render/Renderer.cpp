@@ -3,7 +3,11 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 
 namespace dropscope::render {
 
@@ -31,12 +35,78 @@ std::vector<float> cubeTriangles() {
     return out;
 }
 
-// Two triangles over the square (+-1, +-1, 0): the impostors' camera-facing quad (shaders/impostor.vert).
-std::vector<float> quadTriangles() {
+// The square (+-1, +-1, 0) as a strip of two triangles: the impostors' camera-facing quad
+// (shaders/impostor.vert).
+std::vector<float> quadStrip() {
     std::vector<float> out;
-    const float corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-    for (int k : {0, 1, 2, 0, 2, 3}) out.insert(out.end(), {corners[k][0], corners[k][1], 0.0f, 0.0f, 0.0f, 1.0f});
+    const float corners[4][2] = {{-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
+    for (const auto& corner : corners) out.insert(out.end(), {corner[0], corner[1], 0.0f, 0.0f, 0.0f, 1.0f});
     return out;
+}
+
+// Spheres and ellipsoids per chunk: enough that a frame's draw calls stay few, few enough that culling
+// by chunk is fine-grained. Scenes up to this size keep the order they were given in.
+constexpr std::size_t kChunkShapes = 256;
+constexpr std::size_t kMostChunks = 1024;
+
+float boundingRadius(const ShapeInstance& shape) {
+    float largest = 0.0f;
+    for (int column = 0; column < 3; ++column) {
+        const float* c = &shape.linear[static_cast<std::size_t>(3 * column)];
+        largest = std::max(largest, std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
+    }
+    return largest;
+}
+
+// 10 bits of each coordinate, interleaved: neighbours along this curve are neighbours in space.
+std::uint32_t mortonCode(const std::array<float, 3>& p, const glm::dvec3& low, const glm::dvec3& scale) {
+    std::uint32_t code = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double unit = (static_cast<double>(p[static_cast<std::size_t>(axis)]) - low[axis]) * scale[axis];
+        const auto cell = static_cast<std::uint32_t>(std::clamp(unit, 0.0, 1023.0));
+        for (int bit = 0; bit < 10; ++bit) code |= ((cell >> bit) & 1u) << (3 * bit + axis);
+    }
+    return code;
+}
+
+// The shapes in space-filling-curve order (unchanged when they fit in one chunk).
+std::vector<ShapeInstance> spatiallyOrdered(const std::vector<ShapeInstance>& shapes) {
+    if (shapes.size() <= kChunkShapes) return shapes;
+    glm::dvec3 low(std::numeric_limits<double>::max());
+    glm::dvec3 high(std::numeric_limits<double>::lowest());
+    for (const ShapeInstance& shape : shapes) {
+        const glm::dvec3 c(shape.center[0], shape.center[1], shape.center[2]);
+        low = glm::min(low, c);
+        high = glm::max(high, c);
+    }
+    const glm::dvec3 extent = high - low;
+    glm::dvec3 scale;
+    for (int axis = 0; axis < 3; ++axis) scale[axis] = extent[axis] > 0.0 ? 1024.0 / extent[axis] : 0.0;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> keys(shapes.size());
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        keys[i] = {mortonCode(shapes[i].center, low, scale), static_cast<std::uint32_t>(i)};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<ShapeInstance> out;
+    out.reserve(shapes.size());
+    for (const auto& key : keys) out.push_back(shapes[key.second]);
+    return out;
+}
+
+// The planes bounding what viewProjection sees, as (n, d) with n.x + d >= 0 inside, |n| = 1.
+std::array<glm::dvec4, 6> frustumPlanes(const glm::mat4& viewProjection) {
+    const glm::dmat4 m(viewProjection);
+    std::array<glm::dvec4, 6> planes;
+    for (int k = 0; k < 3; ++k) {
+        for (int side = 0; side < 2; ++side) {
+            glm::dvec4 plane;
+            for (int column = 0; column < 4; ++column) {
+                plane[column] = m[column][3] + (side == 0 ? 1.0 : -1.0) * m[column][k];
+            }
+            planes[static_cast<std::size_t>(2 * k + side)] = plane / glm::length(glm::dvec3(plane));
+        }
+    }
+    return planes;
 }
 
 }  // namespace
@@ -48,6 +118,7 @@ struct Renderer::Mesh {
     GLuint meshBuffer = 0;
     GLuint dataBuffer = 0;
     GLuint indexBuffer = 0;  // made by makeIndexed only
+    GLenum mode = GL_TRIANGLES;
     GLsizei meshVertices = 0;
     GLsizei meshIndices = 0;  // > 0: drawn by its indices
     GLsizei count = 0;        // instances, or vertices for lines
@@ -73,7 +144,8 @@ struct Renderer::Mesh {
     }
 
     // A mesh (position, normal) in locations 0 and 1, ShapeInstance in 2..9 (one per instance).
-    void makeInstanced(const std::vector<float>& mesh) {
+    void makeInstanced(const std::vector<float>& mesh, GLenum primitives = GL_TRIANGLES) {
+        mode = primitives;
         meshVertices = static_cast<GLsizei>(mesh.size() / 6);
         gl.BindVertexArray(vertexArray);
         gl.BindBuffer(GL_ARRAY_BUFFER, meshBuffer);
@@ -103,13 +175,31 @@ struct Renderer::Mesh {
         attribute(0, 3, 6 * sizeof(float), 0, 0);
         attribute(1, 3, 6 * sizeof(float), 3 * sizeof(float), 0);
         gl.BindBuffer(GL_ARRAY_BUFFER, dataBuffer);
+        shapeAttributes(1, 0);
+        gl.BindVertexArray(0);
+    }
+
+    // ShapeInstance in locations 2..9 from the bound buffer, from instance `first` on; a divisor of 1
+    // reads one per instance, 0 one per vertex.
+    void shapeAttributes(GLuint divisor, GLint first) const {
         constexpr auto stride = static_cast<GLsizei>(sizeof(ShapeInstance));
-        attribute(2, 3, stride, offsetof(ShapeInstance, center), 1);
+        const std::size_t base = static_cast<std::size_t>(first) * sizeof(ShapeInstance);
+        attribute(2, 3, stride, base + offsetof(ShapeInstance, center), divisor);
         for (GLuint column = 0; column < 3; ++column) {
-            attribute(3 + column, 3, stride, offsetof(ShapeInstance, linear) + column * 3 * sizeof(float), 1);
-            attribute(6 + column, 3, stride, offsetof(ShapeInstance, inverseLinear) + column * 3 * sizeof(float), 1);
+            attribute(3 + column, 3, stride, base + offsetof(ShapeInstance, linear) + column * 3 * sizeof(float),
+                      divisor);
+            attribute(6 + column, 3, stride, base + offsetof(ShapeInstance, inverseLinear) + column * 3 * sizeof(float),
+                      divisor);
         }
-        attribute(9, 4, stride, offsetof(ShapeInstance, colour), 1);
+        attribute(9, 4, stride, base + offsetof(ShapeInstance, colour), divisor);
+    }
+
+    // The instances of `shapes` as points, one vertex each (its data buffer, not this mesh's).
+    void makePointsOf(const Mesh& shapes) {
+        mode = GL_POINTS;
+        gl.BindVertexArray(vertexArray);
+        gl.BindBuffer(GL_ARRAY_BUFFER, shapes.dataBuffer);
+        shapeAttributes(0, 0);
         gl.BindVertexArray(0);
     }
 
@@ -133,17 +223,20 @@ struct Renderer::Mesh {
 Renderer::Renderer(const GlFunctions& gl)
     : gl_(gl),
       impostor_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag")),
+      impostorPoints_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag", "#define POINT_SPRITE\n")),
       box_(std::make_unique<ShaderProgram>(gl, "box.vert", "box.frag")),
       line_(std::make_unique<ShaderProgram>(gl, "line.vert", "line.frag")),
       rounded_(std::make_unique<Mesh>(gl)),
+      roundedPoints_(std::make_unique<Mesh>(gl)),
       boxes_(std::make_unique<Mesh>(gl)),
       markers_(std::make_unique<Mesh>(gl)),
       lines_(std::make_unique<Mesh>(gl)),
       surfaces_(std::make_unique<Mesh>(gl)),
       meshCache_(std::make_unique<MeshCache>()) {
-    rounded_->makeInstanced(quadTriangles());
+    rounded_->makeInstanced(quadStrip(), GL_TRIANGLE_STRIP);
+    roundedPoints_->makePointsOf(*rounded_);
     boxes_->makeInstanced(cubeTriangles());
-    markers_->makeInstanced(quadTriangles());
+    markers_->makeInstanced(quadStrip(), GL_TRIANGLE_STRIP);
     lines_->makeLines();
     surfaces_->makeLines();
 }
@@ -151,7 +244,28 @@ Renderer::Renderer(const GlFunctions& gl)
 Renderer::~Renderer() = default;
 
 void Renderer::setShapes(const ShapeInstances& instances) {
-    rounded_->upload(instances.rounded);
+    const std::vector<ShapeInstance> rounded = spatiallyOrdered(instances.rounded);
+    rounded_->upload(rounded);
+    chunks_.clear();
+    const std::size_t perChunk = std::max(kChunkShapes, (rounded.size() + kMostChunks - 1) / kMostChunks);
+    for (std::size_t first = 0; first < rounded.size(); first += perChunk) {
+        const std::size_t end = std::min(rounded.size(), first + perChunk);
+        glm::dvec3 low(std::numeric_limits<double>::max());
+        glm::dvec3 high(std::numeric_limits<double>::lowest());
+        RoundedChunk chunk{static_cast<GLint>(first), static_cast<GLsizei>(end - first)};
+        chunk.smallest = std::numeric_limits<double>::max();
+        for (std::size_t i = first; i < end; ++i) {
+            const double radius = boundingRadius(rounded[i]);
+            const glm::dvec3 c(rounded[i].center[0], rounded[i].center[1], rounded[i].center[2]);
+            low = glm::min(low, c - radius);
+            high = glm::max(high, c + radius);
+            chunk.smallest = std::min(chunk.smallest, radius);
+            chunk.largest = std::max(chunk.largest, radius);
+        }
+        chunk.centre = 0.5 * (low + high);
+        chunk.radius = 0.5 * glm::length(high - low);
+        chunks_.push_back(chunk);
+    }
     boxes_->upload(instances.boxes);
     // The instances of each geometry, in the order of their first shape.
     std::vector<std::pair<std::shared_ptr<const MeshGeometry>, std::vector<ShapeInstance>>> groups;
@@ -187,21 +301,81 @@ void Renderer::setSurfaces(const TriangleBatch& surfaces) { surfaces_->upload(su
 
 void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) { markers_->upload(markers); }
 
-void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity) {
-    if (mesh.count == 0) return;
+void Renderer::setShapeUniforms(const ShaderProgram& program, const FrameUniforms& frame, float opacity,
+                                float pointPixels) const {
     program.use();
     gl_.UniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(frame.viewProjection));
-    // Only the impostor program has these two; a location of -1 is ignored.
+    // Only the impostor programs have these; a location of -1 is ignored.
     gl_.UniformMatrix4fv(program.uniform("inverseViewProjection"), 1, GL_FALSE,
                          glm::value_ptr(frame.inverseViewProjection));
     gl_.Uniform3fv(program.uniform("cameraUp"), 1, glm::value_ptr(frame.up));
+    gl_.Uniform1f(program.uniform("pointPixels"), pointPixels);
+    gl_.Uniform1f(program.uniform("pixelsPerUnit"), frame.pixelsPerUnit);
+    gl_.Uniform1f(program.uniform("maxStretch"), frame.maxStretch);
+    gl_.Uniform2f(program.uniform("viewportSize"), frame.width, frame.height);
     gl_.Uniform3fv(program.uniform("eye"), 1, glm::value_ptr(frame.eye));
     gl_.Uniform1f(program.uniform("opacity"), opacity);
+}
+
+void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity) {
+    if (mesh.count == 0) return;
+    setShapeUniforms(program, frame, opacity, 0.0f);
     gl_.BindVertexArray(mesh.vertexArray);
     if (mesh.meshIndices > 0) {
-        gl_.DrawElementsInstanced(GL_TRIANGLES, mesh.meshIndices, GL_UNSIGNED_INT, nullptr, mesh.count);
+        gl_.DrawElementsInstanced(mesh.mode, mesh.meshIndices, GL_UNSIGNED_INT, nullptr, mesh.count);
     } else {
-        gl_.DrawArraysInstanced(GL_TRIANGLES, 0, mesh.meshVertices, mesh.count);
+        gl_.DrawArraysInstanced(mesh.mode, 0, mesh.meshVertices, mesh.count);
+    }
+}
+
+// The chunks in view, nearest first, each as quads (shapes wider than pointPixels), points (the others) or
+// both when its shapes may be either. Nearest first lets a driver that tests depth before shading (points
+// always; quads where it honours impostor.frag's depth_greater) drop most hidden fragments unshaded. The
+// bounds on a chunk's sizes are loose by a percent, so float rounding in the shader cannot leave a shape
+// undrawn.
+void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float pointPixels) {
+    if (rounded_->count == 0) return;
+    const std::array<glm::dvec4, 6> planes = frustumPlanes(frame.viewProjection);
+    const glm::dvec3 eye(frame.eye);
+    const double pixelsPerUnit = frame.pixelsPerUnit;
+    std::vector<std::pair<double, const RoundedChunk*>> quadChunks, pointChunks;
+    for (const RoundedChunk& chunk : chunks_) {
+        bool straddles = false;  // over an edge of the view: its shapes there are quads (impostor.vert)
+        bool outside = false;
+        for (const glm::dvec4& plane : planes) {
+            const double signedDistance = glm::dot(glm::dvec3(plane), chunk.centre) + plane.w;
+            outside = outside || signedDistance < -chunk.radius;
+            straddles = straddles || signedDistance < chunk.radius;
+        }
+        if (outside) continue;
+        const double distance = glm::length(chunk.centre - eye);
+        const double nearest = distance - chunk.radius;
+        const double widest = nearest > 1.01 * chunk.largest
+                                  ? 2.0 * chunk.largest * pixelsPerUnit /
+                                        std::sqrt(nearest * nearest - chunk.largest * chunk.largest) * frame.maxStretch
+                                  : std::numeric_limits<double>::infinity();
+        const double narrowest = 2.0 * chunk.smallest * pixelsPerUnit / (distance + chunk.radius);
+        if (pointPixels <= 0.0f || straddles || 1.01 * widest > pointPixels) quadChunks.emplace_back(distance, &chunk);
+        if (pointPixels > 0.0f && 0.99 * narrowest <= pointPixels) pointChunks.emplace_back(distance, &chunk);
+    }
+    std::sort(quadChunks.begin(), quadChunks.end());
+    std::sort(pointChunks.begin(), pointChunks.end());
+    if (!quadChunks.empty()) {
+        setShapeUniforms(*impostor_, frame, opacity, pointPixels);
+        gl_.BindVertexArray(rounded_->vertexArray);
+        gl_.BindBuffer(GL_ARRAY_BUFFER, rounded_->dataBuffer);
+        for (const auto& [distance, chunk] : quadChunks) {
+            rounded_->shapeAttributes(1, chunk->first);
+            gl_.DrawArraysInstanced(rounded_->mode, 0, rounded_->meshVertices, chunk->count);
+        }
+        rounded_->shapeAttributes(1, 0);
+    }
+    if (!pointChunks.empty()) {
+        gl_.Enable(GL_PROGRAM_POINT_SIZE);
+        setShapeUniforms(*impostorPoints_, frame, opacity, pointPixels);
+        gl_.BindVertexArray(roundedPoints_->vertexArray);
+        for (const auto& [distance, chunk] : pointChunks) gl_.DrawArrays(GL_POINTS, chunk->first, chunk->count);
+        gl_.Disable(GL_PROGRAM_POINT_SIZE);
     }
 }
 
@@ -216,7 +390,17 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     local.target -= origin;
     const double aspect = static_cast<double>(width) / static_cast<double>(height);
     const glm::mat4 viewProjection = local.projectionMatrix(aspect) * local.viewMatrix();
-    const FrameUniforms frame{viewProjection, glm::inverse(viewProjection), glm::vec3(local.eye), glm::vec3(local.up)};
+    const glm::mat4 projection = local.projectionMatrix(aspect);
+    // The widening of a shape in the image's corners, 1 / cos^2 of the angle off the axis (impostor.vert).
+    const double cornerTan2 = 1.0 / (projection[0][0] * projection[0][0]) + 1.0 / (projection[1][1] * projection[1][1]);
+    const FrameUniforms frame{viewProjection,
+                              glm::inverse(viewProjection),
+                              glm::vec3(local.eye),
+                              glm::vec3(local.up),
+                              static_cast<float>(projection[1][1] * static_cast<double>(height) / 2.0),
+                              static_cast<float>(1.0 + cornerTan2),
+                              static_cast<float>(width),
+                              static_cast<float>(height)};
 
     gl_.Viewport(0, 0, width, height);
     gl_.ClearColor(options.background[0], options.background[1], options.background[2], options.background[3]);
@@ -228,7 +412,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
 
     drawShapes(*markers_, *impostor_, frame, 1.0f);
     const bool boxesBlended = options.translucent || options.translucentBoxes;
-    if (options.shapes && !options.translucent) drawShapes(*rounded_, *impostor_, frame, 1.0f);
+    if (options.shapes && !options.translucent) drawRounded(frame, 1.0f, options.pointPixels);
     if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, frame, 1.0f);
     if (options.shapes && !options.translucent) drawMeshes(frame, 1.0f);
     if (options.lines && lines_->count > 0) {
@@ -254,7 +438,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
         gl_.DepthMask(GL_FALSE);
         drawShapes(*boxes_, *box_, frame, options.opacity);
         if (options.translucent) {
-            drawShapes(*rounded_, *impostor_, frame, options.opacity);
+            drawRounded(frame, options.opacity, options.pointPixels);
             // Only the faces towards the eye, as the impostors draw only the nearest surface: a mesh's back
             // faces blended too would make it look twice as opaque as a droplet.
             gl_.Enable(GL_CULL_FACE);

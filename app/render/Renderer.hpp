@@ -13,12 +13,20 @@
 
 namespace dropscope::render {
 
+// The app's pointPixels: droplets up to 6 pixels across are points. A line passing a point droplet within
+// its radius in depth may be hidden by it over those few pixels.
+inline constexpr float kInteractivePointPixels = 6.0f;
+
 // What to draw; every layer can be switched off.
 struct RenderOptions {
     bool shapes = true;
     bool translucent = false;      // every shape blended at `opacity`, drawn after everything opaque
     bool translucentBoxes = true;  // boxes blended: usually cells around the droplets
     float opacity = 0.35f;
+    // Spheres and ellipsoids at most this many pixels across are drawn as points (shaders/impostor.vert):
+    // the same silhouette and shading, but the depth of the shape's front for all its pixels, so hidden
+    // pixels are skipped before shading. 0 draws every shape with its exact depth (snapshots, tests).
+    float pointPixels = 0.0f;
     bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid) and the surfaces
     Colour background{0.08f, 0.09f, 0.11f, 1.0f};
 
@@ -57,16 +65,36 @@ private:
         glm::mat4 inverseViewProjection;
         glm::vec3 eye;
         glm::vec3 up;
+        float pixelsPerUnit;
+        float maxStretch;
+        float width;
+        float height;
     };
+    // A run of spheres and ellipsoids next to each other in space and in the instance buffer: the frame
+    // skips it outside the view, and draws it as quads, points or both by the sizes it can have on screen.
+    struct RoundedChunk {
+        GLint first = 0;
+        GLsizei count = 0;
+        glm::dvec3 centre{0.0};  // a sphere around every shape of the run
+        double radius = 0.0;
+        double smallest = 0.0;  // the shapes' bounding radii
+        double largest = 0.0;
+    };
+    void setShapeUniforms(const ShaderProgram& program, const FrameUniforms& frame, float opacity,
+                          float pointPixels) const;
     void drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity);
+    void drawRounded(const FrameUniforms& frame, float opacity, float pointPixels);
     void drawMeshes(const FrameUniforms& frame, float opacity);
 
     const GlFunctions& gl_;
     Anchor anchor_;
     std::unique_ptr<ShaderProgram> impostor_;
+    std::unique_ptr<ShaderProgram> impostorPoints_;
     std::unique_ptr<ShaderProgram> box_;
     std::unique_ptr<ShaderProgram> line_;
     std::unique_ptr<Mesh> rounded_;
+    std::unique_ptr<Mesh> roundedPoints_;  // rounded_'s instances, one vertex each
+    std::vector<RoundedChunk> chunks_;
     std::unique_ptr<Mesh> boxes_;
     std::unique_ptr<Mesh> markers_;
     std::unique_ptr<Mesh> lines_;

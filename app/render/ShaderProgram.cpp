@@ -3,6 +3,7 @@
 #include "render/RenderError.hpp"
 #include "render/ShaderSources.hpp"
 
+#include <string>
 #include <vector>
 
 namespace dropscope::render {
@@ -18,6 +19,18 @@ std::string infoLog(GLuint object, GetLength getLength, GetLog getLog) {
     std::string log(text.data());
     while (!log.empty() && (log.back() == '\n' || log.back() == ' ')) log.pop_back();
     return log;
+}
+
+// The source with `defines` after its first line (#version must come first).
+std::string withDefines(std::string_view source, std::string_view defines) {
+    if (defines.empty()) return std::string(source);
+    const std::size_t lineEnd = source.find('\n');
+    const std::size_t split = lineEnd == std::string_view::npos ? source.size() : lineEnd + 1;
+    std::string out(source.substr(0, split));
+    if (lineEnd == std::string_view::npos) out += '\n';
+    out += defines;
+    out += source.substr(split);
+    return out;
 }
 
 }  // namespace
@@ -38,12 +51,13 @@ GLuint ShaderProgram::compile(const GlFunctions& gl, GLenum stage, std::string_v
     return shader;
 }
 
-ShaderProgram::ShaderProgram(const GlFunctions& gl, std::string_view vertexFile, std::string_view fragmentFile)
+ShaderProgram::ShaderProgram(const GlFunctions& gl, std::string_view vertexFile, std::string_view fragmentFile,
+                             std::string_view defines)
     : gl_(gl) {
-    const GLuint vertex = compile(gl, GL_VERTEX_SHADER, vertexFile, shaderSource(vertexFile));
+    const GLuint vertex = compile(gl, GL_VERTEX_SHADER, vertexFile, withDefines(shaderSource(vertexFile), defines));
     GLuint fragment = 0;
     try {
-        fragment = compile(gl, GL_FRAGMENT_SHADER, fragmentFile, shaderSource(fragmentFile));
+        fragment = compile(gl, GL_FRAGMENT_SHADER, fragmentFile, withDefines(shaderSource(fragmentFile), defines));
     } catch (...) {
         gl.DeleteShader(vertex);
         throw;

@@ -7,11 +7,13 @@
 
 namespace dropscope::render {
 
-// A linked vertex + fragment program from two files of shaders/. A compile or link error throws
-// RenderError with the file name(s) and the driver's log.
+// A linked vertex + fragment program from two files of shaders/. `defines` (lines such as "#define
+// POINT_SPRITE\n") go after each file's #version line, for variants of one source. A compile or link error
+// throws RenderError with the file name(s) and the driver's log.
 class ShaderProgram {
 public:
-    ShaderProgram(const GlFunctions& gl, std::string_view vertexFile, std::string_view fragmentFile);
+    ShaderProgram(const GlFunctions& gl, std::string_view vertexFile, std::string_view fragmentFile,
+                  std::string_view defines = {});
     ~ShaderProgram();
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;

@@ -26,7 +26,9 @@ snapshot::Image DirectRenderer::draw(const render::Camera& camera, const render:
     renderer_.setAnchor(anchor);
     renderer_.setShapes(shapes);
     renderer_.setLines(lines);
-    renderer_.draw(camera, blackBackground(), width(), height());
+    render::RenderOptions options = blackBackground();
+    options.pointPixels = pointPixels_;
+    renderer_.draw(camera, options, width(), height());
     return context_.read();
 }
 

@@ -23,12 +23,15 @@ public:
 
     snapshot::Image draw(const render::Camera& camera, const render::Anchor& anchor,
                          const render::ShapeInstances& shapes, const render::LineBatch& lines);
+    // RenderOptions::pointPixels of the next draws (0, every shape exact, unless set).
+    void setPointPixels(float pixels) { pointPixels_ = pixels; }
     int width() const { return context_.width(); }
     int height() const { return context_.height(); }
 
 private:
     snapshot::OsmesaContext context_;
     render::Renderer renderer_;
+    float pointPixels_ = 0.0f;
 };
 
 // A camera from `eye` to `target`, up +y, with its near and far planes around `bounds`.

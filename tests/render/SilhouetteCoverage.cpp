@@ -35,6 +35,25 @@ ExactCoverage::ExactCoverage(const Shape& shape, const render::Camera& camera, i
     }
 }
 
+ExactCoverage::ExactCoverage(const std::vector<std::unique_ptr<Shape>>& shapes, const render::Camera& camera, int width,
+                             int height)
+    : width_(width), height_(height), hit_(static_cast<std::size_t>(width * height)) {
+    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+    for (int y = 0; y < height_; ++y) {
+        for (int x = 0; x < width_; ++x) {
+            const Direction ray = pixelRay(camera, x, y, width_, height_);
+            const Eigen::ParametrizedLine<double, 3> line(eye, ray);
+            hit_[index(x, y)] = std::any_of(shapes.begin(), shapes.end(), [&](const std::unique_ptr<Shape>& shape) {
+                const Eigen::AlignedBox3d box = shape->bounds();
+                const Point centre = box.center();
+                const double reach = 0.5 * box.diagonal().norm();
+                if (line.distance(centre) > reach) return false;
+                return !std::isnan(shape->distanceToSurface(eye, ray));
+            });
+        }
+    }
+}
+
 bool ExactCoverage::onBoundary(int x, int y) const {
     const char here = hit_[index(x, y)];
     for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height_ - 1); ++ny) {

@@ -24,6 +24,9 @@ int coveredPixels(const snapshot::Image& image);
 class ExactCoverage {
 public:
     ExactCoverage(const Shape& shape, const render::Camera& camera, int width, int height);
+    // Whether the ray meets any of the shapes (each tried only where its bounds meet the ray).
+    ExactCoverage(const std::vector<std::unique_ptr<Shape>>& shapes, const render::Camera& camera, int width,
+                  int height);
 
     bool hit(int x, int y) const { return hit_[index(x, y)] != 0; }
     // Within one pixel of the exact silhouette: some 8-neighbour is classified the other way.

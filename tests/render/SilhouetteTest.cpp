@@ -115,5 +115,42 @@ TEST(EllipsoidSilhouette, RotatedEllipsoidsCoverExactlyThePixelsWhoseRaysHitTheE
     }
 }
 
+// A crowd of small spheres and rotated ellipsoids, 1 to 11 pixels across, some across the image's edges and
+// some outside it, more than one chunk of them (Renderer::drawRounded): drawn exact, as points, or each as
+// its size says, the drawing covers exactly the pixels whose rays meet some shape. So no shape is culled
+// while in view, dropped between the quads and the points, or drawn as a point too small for it.
+TEST(SmallShapeSilhouettes, QuadsAndPointsCoverExactlyThePixelsWhoseRaysHitAShape) {
+    DirectRenderer renderer(kWidth, kHeight);
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> size(0.06, 0.7);
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int k = 0; k < 700; ++k) {
+        const Point center(12.0 * unit(rng), 8.0 * unit(rng), 4.0 * unit(rng));
+        if (k % 3 == 0) {
+            const Eigen::Vector3d semiAxes(size(rng), size(rng), size(rng));
+            const Direction axis(unit(rng), unit(rng), unit(rng));
+            shapes.push_back(std::make_unique<Ellipsoid>(
+                Ellipsoid::fromSemiAxes(center, semiAxes, rotationAboutAxis(axis, std::numbers::pi * unit(rng)))));
+        } else {
+            shapes.push_back(std::make_unique<Sphere>(center, size(rng)));
+        }
+    }
+    Eigen::AlignedBox3d bounds;
+    for (const auto& shape : shapes) bounds.extend(shape->bounds());
+    const render::Camera camera = lookingAt(Point(0.5, -0.3, 0.0), Eigen::Vector3d(0.2, 0.3, 1.0), 22.0, bounds);
+    const render::Anchor anchor{Point(0.5, -0.3, 0.0)};
+    const test::ExactCoverage engine(shapes, camera, kWidth, kHeight);
+    EXPECT_GT(engine.hits(), 2000) << "the shapes should cover a good part of the image";
+    // 0: every shape a quad; 4: the smaller ones points; 16: every shape a point.
+    for (const float pointPixels : {0.0f, 4.0f, 16.0f}) {
+        SCOPED_TRACE("pointPixels " + std::to_string(pointPixels));
+        renderer.setPointPixels(pointPixels);
+        const snapshot::Image image =
+            renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
+        test::expectCoversExactly(image, engine);
+    }
+}
+
 }  // namespace
 }  // namespace dropscope
