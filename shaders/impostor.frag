@@ -1,11 +1,15 @@
 #version 330 core
 // The exact surface of a sphere or ellipsoid under its proxy quad: the eye ray in the shape's unit-sphere
 // frame, the nearest root in front of the eye (the far one when the eye is inside), its true depth. The
-// POINT_SPRITE variant (impostor.vert) finds the eye ray from the pixel and leaves the depth to the point.
+// POINT_SPRITE variants (impostor.vert) find the eye ray from the pixel; without EXACT_DEPTH they leave the
+// depth to the point.
 #extension GL_ARB_conservative_depth : enable
-#if defined(GL_ARB_conservative_depth) && !defined(POINT_SPRITE)
-// The quad lies in front of the shape (impostor.vert), so the depth written is never nearer than the quad's:
-// a driver may then test the quad's depth before running this shader.
+#if !defined(POINT_SPRITE) || defined(EXACT_DEPTH)
+#define WRITES_DEPTH
+#endif
+#if defined(GL_ARB_conservative_depth) && defined(WRITES_DEPTH)
+// The quad or point lies in front of the shape (impostor.vert), so the depth written is never nearer than
+// its own: a driver may then test that depth before running this shader.
 layout(depth_greater) out float gl_FragDepth;
 #endif
 #ifdef POINT_SPRITE
@@ -16,7 +20,6 @@ in vec3 worldPosition;
 #endif
 flat in vec3 shapeCenter;
 flat in mat3 toObject;
-flat in mat3 toWorld;
 flat in vec4 shapeColour;
 
 uniform mat4 viewProjection;
@@ -42,12 +45,12 @@ void main() {
     if (t < 0.0) t = (-b + root) / a;
     if (t < 0.0) discard;
     vec3 surface = origin + t * direction;
-    vec3 world = shapeCenter + toWorld * surface;
-#ifndef POINT_SPRITE
+#ifdef WRITES_DEPTH
+    vec3 world = eye + t * (worldPosition - eye);  // the same t along the ray in world space
     vec4 clip = viewProjection * vec4(world, 1.0);
     gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
 #endif
     vec3 normal = normalize(transpose(toObject) * surface);
-    float diffuse = abs(dot(normal, normalize(eye - world)));  // a headlight
+    float diffuse = abs(dot(normal, normalize(eye - worldPosition)));  // a headlight
     fragmentColour = vec4(shapeColour.rgb * (0.3 + 0.7 * diffuse), shapeColour.a * opacity);
 }

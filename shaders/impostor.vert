@@ -7,10 +7,12 @@
 // inside (or nearly inside) the bounding sphere no such quad exists, and with the sphere's front before the
 // near plane it would be clipped; the quad then covers the whole near plane.
 //
-// Shapes whose silhouette is at most `pointPixels` across are drawn by the POINT_SPRITE variant instead:
-// one point, a square a little wider than the silhouette, at the bounding sphere's point nearest the eye (its
-// depth is the fragments', so the depth test can run before the fragment shader). Both variants size a
-// shape with the same expression, so each shape is drawn by exactly one of them.
+// Shapes whose silhouette is at most `exactPointPixels` across are drawn by the POINT_SPRITE variants
+// instead: one point, a square a little wider than the silhouette, at the bounding sphere's point nearest
+// the eye. With EXACT_DEPTH (up to exactPointPixels, above pointPixels) the fragments write their true
+// depth as a quad's do; without (up to pointPixels) the point's depth is the fragments', so the depth test
+// can run before the fragment shader. The three variants size a shape with the same expression, so each
+// shape is drawn by exactly one of them.
 layout(location = 0) in vec3 corner;  // (+-1, +-1, 0)
 layout(location = 2) in vec3 center;
 layout(location = 3) in mat3 linear;         // locations 3, 4, 5
@@ -21,7 +23,8 @@ uniform mat4 viewProjection;
 uniform mat4 inverseViewProjection;
 uniform vec3 eye;
 uniform vec3 cameraUp;
-uniform float pointPixels;     // 0: no shape is a point
+uniform float pointPixels;       // points with the front's depth up to this width (0: none)
+uniform float exactPointPixels;  // points with exact depth above pointPixels, up to this width
 uniform float pixelsPerUnit;   // framebuffer pixels a unit length spans at unit depth on the axis
 uniform float maxStretch;      // how much wider than on the axis a shape is drawn in the corners
 uniform vec2 viewportSize;
@@ -29,7 +32,6 @@ uniform vec2 viewportSize;
 out vec3 worldPosition;
 flat out vec3 shapeCenter;
 flat out mat3 toObject;
-flat out mat3 toWorld;
 flat out vec4 shapeColour;
 
 const vec4 kDropped = vec4(0.0, 0.0, 2.0, 1.0);  // beyond the far plane: clipped
@@ -37,7 +39,6 @@ const vec4 kDropped = vec4(0.0, 0.0, 2.0, 1.0);  // beyond the far plane: clippe
 void main() {
     shapeCenter = center;
     toObject = inverseLinear;
-    toWorld = linear;
     shapeColour = colour;
     float radius = max(length(linear[0]), max(length(linear[1]), length(linear[2])));
     vec3 toEye = eye - center;
@@ -51,28 +52,35 @@ void main() {
                        ? 2.0 * radius * pixelsPerUnit / sqrt(distance * distance - radius * radius) * stretch
                        : 1e30;
     // A point is clipped whole when its centre leaves the view, so one that reaches over the image's edge
-    // is drawn as a quad.
+    // (or whose front lies before the near plane) is drawn as a quad.
     float pointSize = 1.05 * pixels + 0.5;  // covers every pixel centre in the silhouette, with a margin
     vec2 pixel = (clipCentre.xy / clipCentre.w * 0.5 + 0.5) * viewportSize;
-    bool inside = clipCentre.w > 0.0 && all(greaterThanEqual(pixel - 0.5 * pointSize - 1.0, vec2(0.0))) &&
+    vec3 forward = toEye / distance;
+    vec4 front = viewProjection * vec4(center + radius * forward, 1.0);
+    bool inside = clipCentre.w > 0.0 && front.z >= -front.w &&
+                  all(greaterThanEqual(pixel - 0.5 * pointSize - 1.0, vec2(0.0))) &&
                   all(lessThanEqual(pixel + 0.5 * pointSize + 1.0, viewportSize));
-    bool point = pixels <= pointPixels && inside;
+    // 0: a quad; 1: a point with exact depth; 2: a point with the front's depth.
+    int tier = !inside || pixels > exactPointPixels ? 0 : (pixels <= pointPixels ? 2 : 1);
 #ifdef POINT_SPRITE
-    if (!point) {
+#ifdef EXACT_DEPTH
+    const int kTier = 1;
+#else
+    const int kTier = 2;
+#endif
+    if (tier != kTier) {
         gl_Position = kDropped;
         gl_PointSize = 1.0;
         return;
     }
-    worldPosition = center + radius * toEye / distance;
-    gl_Position = viewProjection * vec4(worldPosition, 1.0);
+    worldPosition = center + radius * forward;
+    gl_Position = front;
     gl_PointSize = pointSize;
 #else
-    if (point) {
+    if (tier != 0) {
         gl_Position = kDropped;
         return;
     }
-    vec3 forward = toEye / distance;
-    vec4 front = viewProjection * vec4(center + radius * forward, 1.0);
     if (distance > 1.01 * radius && front.z >= -front.w) {
         vec3 right = normalize(cross(cameraUp, forward));
         if (any(isnan(right))) right = normalize(cross(vec3(1.0, 0.0, 0.0), forward));

@@ -224,6 +224,8 @@ Renderer::Renderer(const GlFunctions& gl)
     : gl_(gl),
       impostor_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag")),
       impostorPoints_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag", "#define POINT_SPRITE\n")),
+      impostorExactPoints_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag",
+                                                           "#define POINT_SPRITE\n#define EXACT_DEPTH\n")),
       box_(std::make_unique<ShaderProgram>(gl, "box.vert", "box.frag")),
       line_(std::make_unique<ShaderProgram>(gl, "line.vert", "line.frag")),
       rounded_(std::make_unique<Mesh>(gl)),
@@ -233,6 +235,10 @@ Renderer::Renderer(const GlFunctions& gl)
       lines_(std::make_unique<Mesh>(gl)),
       surfaces_(std::make_unique<Mesh>(gl)),
       meshCache_(std::make_unique<MeshCache>()) {
+    GLint pointSizes[2] = {1, 1};
+    gl_.GetIntegerv(GL_POINT_SIZE_RANGE, pointSizes);
+    // A point's side is 1.05 w + 0.5 and must stay a pixel inside the driver's largest (impostor.vert).
+    exactPointPixels_ = std::min(kExactPointPixels, static_cast<float>(pointSizes[1] - 2) / 1.05f);
     rounded_->makeInstanced(quadStrip(), GL_TRIANGLE_STRIP);
     roundedPoints_->makePointsOf(*rounded_);
     boxes_->makeInstanced(cubeTriangles());
@@ -310,6 +316,7 @@ void Renderer::setShapeUniforms(const ShaderProgram& program, const FrameUniform
                          glm::value_ptr(frame.inverseViewProjection));
     gl_.Uniform3fv(program.uniform("cameraUp"), 1, glm::value_ptr(frame.up));
     gl_.Uniform1f(program.uniform("pointPixels"), pointPixels);
+    gl_.Uniform1f(program.uniform("exactPointPixels"), exactPointPixels_);
     gl_.Uniform1f(program.uniform("pixelsPerUnit"), frame.pixelsPerUnit);
     gl_.Uniform1f(program.uniform("maxStretch"), frame.maxStretch);
     gl_.Uniform2f(program.uniform("viewportSize"), frame.width, frame.height);
@@ -328,17 +335,20 @@ void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const 
     }
 }
 
-// The chunks in view, nearest first, each as quads (shapes wider than pointPixels), points (the others) or
-// both when its shapes may be either. Nearest first lets a driver that tests depth before shading (points
-// always; quads where it honours impostor.frag's depth_greater) drop most hidden fragments unshaded. The
-// bounds on a chunk's sizes are loose by a percent, so float rounding in the shader cannot leave a shape
-// undrawn.
+// The chunks in view, nearest first, each drawn by the variants its shapes' widths on screen call for:
+// quads (wider than exactPointPixels_, or at the image's edge), points with exact depth (wider than
+// pointPixels), points with the front's depth (the rest). Nearest first lets a driver that tests depth
+// before shading (the last kind always, the others where it honours impostor.frag's depth_greater) drop most
+// hidden fragments unshaded; the last kind goes last, behind all the exact depth. The bounds on a chunk's
+// widths are loose by a percent, so float rounding in the shader cannot leave a shape undrawn.
 void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float pointPixels) {
     if (rounded_->count == 0) return;
     const std::array<glm::dvec4, 6> planes = frustumPlanes(frame.viewProjection);
     const glm::dvec3 eye(frame.eye);
     const double pixelsPerUnit = frame.pixelsPerUnit;
-    std::vector<std::pair<double, const RoundedChunk*>> quadChunks, pointChunks;
+    const double exactPoints = std::max(exactPointPixels_, pointPixels);
+    using Drawn = std::vector<std::pair<double, const RoundedChunk*>>;
+    Drawn quadChunks, exactPointChunks, pointChunks;
     for (const RoundedChunk& chunk : chunks_) {
         bool straddles = false;  // over an edge of the view: its shapes there are quads (impostor.vert)
         bool outside = false;
@@ -351,15 +361,15 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
         const double distance = glm::length(chunk.centre - eye);
         const double nearest = distance - chunk.radius;
         const double widest = nearest > 1.01 * chunk.largest
-                                  ? 2.0 * chunk.largest * pixelsPerUnit /
+                                  ? 1.01 * 2.0 * chunk.largest * pixelsPerUnit /
                                         std::sqrt(nearest * nearest - chunk.largest * chunk.largest) * frame.maxStretch
                                   : std::numeric_limits<double>::infinity();
-        const double narrowest = 2.0 * chunk.smallest * pixelsPerUnit / (distance + chunk.radius);
-        if (pointPixels <= 0.0f || straddles || 1.01 * widest > pointPixels) quadChunks.emplace_back(distance, &chunk);
-        if (pointPixels > 0.0f && 0.99 * narrowest <= pointPixels) pointChunks.emplace_back(distance, &chunk);
+        const double narrowest = 0.99 * 2.0 * chunk.smallest * pixelsPerUnit / (distance + chunk.radius);
+        if (straddles || widest > exactPoints) quadChunks.emplace_back(distance, &chunk);
+        if (widest > pointPixels && narrowest <= exactPoints) exactPointChunks.emplace_back(distance, &chunk);
+        if (narrowest <= pointPixels) pointChunks.emplace_back(distance, &chunk);
     }
-    std::sort(quadChunks.begin(), quadChunks.end());
-    std::sort(pointChunks.begin(), pointChunks.end());
+    for (Drawn* drawn : {&quadChunks, &exactPointChunks, &pointChunks}) std::sort(drawn->begin(), drawn->end());
     if (!quadChunks.empty()) {
         setShapeUniforms(*impostor_, frame, opacity, pointPixels);
         gl_.BindVertexArray(rounded_->vertexArray);
@@ -370,13 +380,15 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
         }
         rounded_->shapeAttributes(1, 0);
     }
-    if (!pointChunks.empty()) {
-        gl_.Enable(GL_PROGRAM_POINT_SIZE);
-        setShapeUniforms(*impostorPoints_, frame, opacity, pointPixels);
-        gl_.BindVertexArray(roundedPoints_->vertexArray);
-        for (const auto& [distance, chunk] : pointChunks) gl_.DrawArrays(GL_POINTS, chunk->first, chunk->count);
-        gl_.Disable(GL_PROGRAM_POINT_SIZE);
+    gl_.Enable(GL_PROGRAM_POINT_SIZE);
+    gl_.BindVertexArray(roundedPoints_->vertexArray);
+    for (const auto& [program, drawn] :
+         {std::pair{impostorExactPoints_.get(), &exactPointChunks}, std::pair{impostorPoints_.get(), &pointChunks}}) {
+        if (drawn->empty()) continue;
+        setShapeUniforms(*program, frame, opacity, pointPixels);
+        for (const auto& [distance, chunk] : *drawn) gl_.DrawArrays(GL_POINTS, chunk->first, chunk->count);
     }
+    gl_.Disable(GL_PROGRAM_POINT_SIZE);
 }
 
 void Renderer::drawMeshes(const FrameUniforms& frame, float opacity) {

@@ -17,15 +17,20 @@ namespace dropscope::render {
 // its radius in depth may be hidden by it over those few pixels.
 inline constexpr float kInteractivePointPixels = 6.0f;
 
+// Spheres and ellipsoids up to this many pixels across are drawn as points rather than quads (one vertex,
+// not four), with exact depth: the picture is the same. Lowered to what the driver's points allow.
+inline constexpr float kExactPointPixels = 32.0f;
+
 // What to draw; every layer can be switched off.
 struct RenderOptions {
     bool shapes = true;
     bool translucent = false;      // every shape blended at `opacity`, drawn after everything opaque
     bool translucentBoxes = true;  // boxes blended: usually cells around the droplets
     float opacity = 0.35f;
-    // Spheres and ellipsoids at most this many pixels across are drawn as points (shaders/impostor.vert):
-    // the same silhouette and shading, but the depth of the shape's front for all its pixels, so hidden
-    // pixels are skipped before shading. 0 draws every shape with its exact depth (snapshots, tests).
+    // Spheres and ellipsoids at most this many pixels across are drawn as points with the depth of the
+    // shape's front for all their pixels (shaders/impostor.vert): the same silhouette and shading, but
+    // hidden pixels are skipped before shading. 0 draws every shape with its exact depth (snapshots,
+    // tests). Larger ones up to kExactPointPixels are points too, with exact depth.
     float pointPixels = 0.0f;
     bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid) and the surfaces
     Colour background{0.08f, 0.09f, 0.11f, 1.0f};
@@ -89,7 +94,9 @@ private:
     const GlFunctions& gl_;
     Anchor anchor_;
     std::unique_ptr<ShaderProgram> impostor_;
-    std::unique_ptr<ShaderProgram> impostorPoints_;
+    std::unique_ptr<ShaderProgram> impostorPoints_;       // points with the front's depth
+    std::unique_ptr<ShaderProgram> impostorExactPoints_;  // points with exact depth
+    float exactPointPixels_ = kExactPointPixels;
     std::unique_ptr<ShaderProgram> box_;
     std::unique_ptr<ShaderProgram> line_;
     std::unique_ptr<Mesh> rounded_;

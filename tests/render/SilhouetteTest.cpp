@@ -116,9 +116,10 @@ TEST(EllipsoidSilhouette, RotatedEllipsoidsCoverExactlyThePixelsWhoseRaysHitTheE
 }
 
 // A crowd of small spheres and rotated ellipsoids, 1 to 11 pixels across, some across the image's edges and
-// some outside it, more than one chunk of them (Renderer::drawRounded): drawn exact, as points, or each as
-// its size says, the drawing covers exactly the pixels whose rays meet some shape. So no shape is culled
-// while in view, dropped between the quads and the points, or drawn as a point too small for it.
+// some outside it, more than one chunk of them (Renderer::drawRounded): whichever of them are quads, points
+// with exact depth or points with the front's depth, the drawing covers exactly the pixels whose rays meet
+// some shape. So no shape is culled while in view, dropped between the variants, or drawn as a point too
+// small for it.
 TEST(SmallShapeSilhouettes, QuadsAndPointsCoverExactlyThePixelsWhoseRaysHitAShape) {
     DirectRenderer renderer(kWidth, kHeight);
     std::mt19937_64 rng(11);
@@ -142,7 +143,7 @@ TEST(SmallShapeSilhouettes, QuadsAndPointsCoverExactlyThePixelsWhoseRaysHitAShap
     const render::Anchor anchor{Point(0.5, -0.3, 0.0)};
     const test::ExactCoverage engine(shapes, camera, kWidth, kHeight);
     EXPECT_GT(engine.hits(), 2000) << "the shapes should cover a good part of the image";
-    // 0: every shape a quad; 4: the smaller ones points; 16: every shape a point.
+    // 0: quads at the edges, exact points inside; 4: also points with the front's depth; 16: those inside.
     for (const float pointPixels : {0.0f, 4.0f, 16.0f}) {
         SCOPED_TRACE("pointPixels " + std::to_string(pointPixels));
         renderer.setPointPixels(pointPixels);
