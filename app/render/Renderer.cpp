@@ -308,7 +308,7 @@ void Renderer::setSurfaces(const TriangleBatch& surfaces) { surfaces_->upload(su
 void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) { markers_->upload(markers); }
 
 void Renderer::setShapeUniforms(const ShaderProgram& program, const FrameUniforms& frame, float opacity,
-                                float pointPixels) const {
+                                float pointPixels, float exactPointPixels) const {
     program.use();
     gl_.UniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(frame.viewProjection));
     // Only the impostor programs have these; a location of -1 is ignored.
@@ -316,7 +316,7 @@ void Renderer::setShapeUniforms(const ShaderProgram& program, const FrameUniform
                          glm::value_ptr(frame.inverseViewProjection));
     gl_.Uniform3fv(program.uniform("cameraUp"), 1, glm::value_ptr(frame.up));
     gl_.Uniform1f(program.uniform("pointPixels"), pointPixels);
-    gl_.Uniform1f(program.uniform("exactPointPixels"), exactPointPixels_);
+    gl_.Uniform1f(program.uniform("exactPointPixels"), exactPointPixels);
     gl_.Uniform1f(program.uniform("pixelsPerUnit"), frame.pixelsPerUnit);
     gl_.Uniform1f(program.uniform("maxStretch"), frame.maxStretch);
     gl_.Uniform2f(program.uniform("viewportSize"), frame.width, frame.height);
@@ -326,7 +326,7 @@ void Renderer::setShapeUniforms(const ShaderProgram& program, const FrameUniform
 
 void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity) {
     if (mesh.count == 0) return;
-    setShapeUniforms(program, frame, opacity, 0.0f);
+    setShapeUniforms(program, frame, opacity, 0.0f, 0.0f);  // every instance drawn by this one call
     gl_.BindVertexArray(mesh.vertexArray);
     if (mesh.meshIndices > 0) {
         gl_.DrawElementsInstanced(mesh.mode, mesh.meshIndices, GL_UNSIGNED_INT, nullptr, mesh.count);
@@ -346,7 +346,8 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
     const std::array<glm::dvec4, 6> planes = frustumPlanes(frame.viewProjection);
     const glm::dvec3 eye(frame.eye);
     const double pixelsPerUnit = frame.pixelsPerUnit;
-    const double exactPoints = std::max(exactPointPixels_, pointPixels);
+    pointPixels = std::min(pointPixels, exactPointPixels_);  // no point wider than the driver's points allow
+    const double exactPoints = exactPointPixels_;
     using Drawn = std::vector<std::pair<double, const RoundedChunk*>>;
     Drawn quadChunks, exactPointChunks, pointChunks;
     for (const RoundedChunk& chunk : chunks_) {
@@ -371,7 +372,7 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
     }
     for (Drawn* drawn : {&quadChunks, &exactPointChunks, &pointChunks}) std::sort(drawn->begin(), drawn->end());
     if (!quadChunks.empty()) {
-        setShapeUniforms(*impostor_, frame, opacity, pointPixels);
+        setShapeUniforms(*impostor_, frame, opacity, pointPixels, exactPointPixels_);
         gl_.BindVertexArray(rounded_->vertexArray);
         gl_.BindBuffer(GL_ARRAY_BUFFER, rounded_->dataBuffer);
         for (const auto& [distance, chunk] : quadChunks) {
@@ -385,7 +386,7 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
     for (const auto& [program, drawn] :
          {std::pair{impostorExactPoints_.get(), &exactPointChunks}, std::pair{impostorPoints_.get(), &pointChunks}}) {
         if (drawn->empty()) continue;
-        setShapeUniforms(*program, frame, opacity, pointPixels);
+        setShapeUniforms(*program, frame, opacity, pointPixels, exactPointPixels_);
         for (const auto& [distance, chunk] : *drawn) gl_.DrawArrays(GL_POINTS, chunk->first, chunk->count);
     }
     gl_.Disable(GL_PROGRAM_POINT_SIZE);

@@ -85,8 +85,9 @@ private:
         double smallest = 0.0;  // the shapes' bounding radii
         double largest = 0.0;
     };
-    void setShapeUniforms(const ShaderProgram& program, const FrameUniforms& frame, float opacity,
-                          float pointPixels) const;
+    // pointPixels and exactPointPixels 0: the quad program draws every instance.
+    void setShapeUniforms(const ShaderProgram& program, const FrameUniforms& frame, float opacity, float pointPixels,
+                          float exactPointPixels) const;
     void drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity);
     void drawRounded(const FrameUniforms& frame, float opacity, float pointPixels);
     void drawMeshes(const FrameUniforms& frame, float opacity);

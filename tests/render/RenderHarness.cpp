@@ -22,10 +22,12 @@ render::RenderOptions blackBackground() {
 DirectRenderer::DirectRenderer(int width, int height) : context_(width, height), renderer_(context_.gl()) {}
 
 snapshot::Image DirectRenderer::draw(const render::Camera& camera, const render::Anchor& anchor,
-                                     const render::ShapeInstances& shapes, const render::LineBatch& lines) {
+                                     const render::ShapeInstances& shapes, const render::LineBatch& lines,
+                                     const std::vector<render::ShapeInstance>& markers) {
     renderer_.setAnchor(anchor);
     renderer_.setShapes(shapes);
     renderer_.setLines(lines);
+    renderer_.setMarkers(markers);
     render::RenderOptions options = blackBackground();
     options.pointPixels = pointPixels_;
     renderer_.draw(camera, options, width(), height());

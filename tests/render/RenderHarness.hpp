@@ -22,7 +22,8 @@ public:
     DirectRenderer(int width, int height);
 
     snapshot::Image draw(const render::Camera& camera, const render::Anchor& anchor,
-                         const render::ShapeInstances& shapes, const render::LineBatch& lines);
+                         const render::ShapeInstances& shapes, const render::LineBatch& lines,
+                         const std::vector<render::ShapeInstance>& markers = {});
     // RenderOptions::pointPixels of the next draws (0, every shape exact, unless set).
     void setPointPixels(float pixels) { pointPixels_ = pixels; }
     int width() const { return context_.width(); }

@@ -153,5 +153,30 @@ TEST(SmallShapeSilhouettes, QuadsAndPointsCoverExactlyThePixelsWhoseRaysHitAShap
     }
 }
 
+// Event markers and handles (Renderer::setMarkers) go through the quad program alone, whatever their size:
+// small ones too cover exactly the pixels of their spheres.
+TEST(MarkerSilhouettes, SmallAndLargeMarkersCoverExactlyThePixelsOfTheirSpheres) {
+    DirectRenderer renderer(kWidth, kHeight);
+    renderer.setPointPixels(6.0f);
+    std::vector<std::unique_ptr<Shape>> spheres;
+    for (int k = 0; k < 12; ++k) {
+        const double radius = 0.05 + 0.06 * k;  // about 1 to 40 pixels across
+        spheres.push_back(std::make_unique<Sphere>(Point(-5.5 + 1.0 * k, 1.5 * std::sin(k), 0.0), radius));
+    }
+    Eigen::AlignedBox3d bounds;
+    for (const auto& sphere : spheres) bounds.extend(sphere->bounds());
+    const render::Camera camera = lookingAt(Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.2, 1.0), 16.0, bounds);
+    const render::Anchor anchor{Point(0.0, 0.0, 0.0)};
+    std::vector<render::ShapeInstance> markers;
+    for (const auto& sphere : spheres) {
+        const auto& s = static_cast<const Sphere&>(*sphere);
+        markers.push_back(render::sphereInstance(s.center(), s.radius(), anchor, render::kHighlight));
+    }
+    const snapshot::Image image = renderer.draw(camera, anchor, {}, render::LineBatch(anchor), markers);
+    const test::ExactCoverage engine(spheres, camera, kWidth, kHeight);
+    test::expectCoversExactly(image, engine);
+    EXPECT_GT(engine.hits(), 500);
+}
+
 }  // namespace
 }  // namespace dropscope
