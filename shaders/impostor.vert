@@ -8,8 +8,8 @@
 // near plane it would be clipped; the quad then covers the whole near plane.
 //
 // Shapes whose silhouette is at most `exactPointPixels` across are drawn by the POINT_SPRITE variants
-// instead: one point, a square a little wider than the silhouette, at the bounding sphere's point nearest
-// the eye. With EXACT_DEPTH (up to exactPointPixels, above pointPixels) the fragments write their true
+// instead: one point, a square covering the silhouette, on the eye ray through the centre at the depth of
+// the bounding sphere's nearest point. With EXACT_DEPTH (up to exactPointPixels, above pointPixels) the fragments write their true
 // depth as a quad's do; without (up to pointPixels) the point's depth is the fragments', so the depth test
 // can run before the fragment shader. The three variants size a shape with the same expression, so each
 // shape is drawn by exactly one of them.
@@ -51,13 +51,21 @@ void main() {
     float pixels = distance > 1.01 * radius
                        ? 2.0 * radius * pixelsPerUnit / sqrt(distance * distance - radius * radius) * stretch
                        : 1e30;
-    // A point is clipped whole when its centre leaves the view, so one that reaches over the image's edge
-    // (or whose front lies before the near plane) is drawn as a quad.
-    float pointSize = 1.05 * pixels + 0.5;  // covers every pixel centre in the silhouette, with a margin
+    // A point is a square centred on the centre's image. At angle theta off the axis the silhouette (angular
+    // radius alpha) reaches f tan(alpha) s / (1 - tan(theta) tan(alpha)) from there, s = 1 / cos^2(theta);
+    // the square covers that, with a quarter pixel to spare. A point is clipped whole when its centre leaves
+    // the view, so one that reaches within a pixel of the image's edge, or is not wholly beyond the near
+    // plane, is drawn as a quad.
+    float tanAlpha = distance > 1.01 * radius ? radius / sqrt(distance * distance - radius * radius) : 1e30;
+    float spread = 1.0 - sqrt(max(stretch - 1.0, 0.0)) * tanAlpha;
+    float pointSize = spread > 0.1 ? 2.0 * pixelsPerUnit * tanAlpha * stretch / spread + 0.5 : 1e30;
     vec2 pixel = (clipCentre.xy / clipCentre.w * 0.5 + 0.5) * viewportSize;
     vec3 forward = toEye / distance;
-    vec4 front = viewProjection * vec4(center + radius * forward, 1.0);
-    bool inside = clipCentre.w > 0.0 && front.z >= -front.w &&
+    // On the eye ray through the centre, at the view depth of the bounding sphere's nearest point: the
+    // point's depth is never farther than any point of the shape.
+    vec3 nearest = eye - toEye * (1.0 - radius / max(depth, 1e-30));
+    vec4 nearestClip = viewProjection * vec4(nearest, 1.0);
+    bool inside = depth > 1.01 * radius && nearestClip.z >= -nearestClip.w &&
                   all(greaterThanEqual(pixel - 0.5 * pointSize - 1.0, vec2(0.0))) &&
                   all(lessThanEqual(pixel + 0.5 * pointSize + 1.0, viewportSize));
     // 0: a quad; 1: a point with exact depth; 2: a point with the front's depth.
@@ -73,21 +81,30 @@ void main() {
         gl_PointSize = 1.0;
         return;
     }
-    worldPosition = center + radius * forward;
-    gl_Position = front;
+    worldPosition = nearest;
+    gl_Position = nearestClip;
     gl_PointSize = pointSize;
 #else
     if (tier != 0) {
         gl_Position = kDropped;
         return;
     }
-    if (distance > 1.01 * radius && front.z >= -front.w) {
-        vec3 right = normalize(cross(cameraUp, forward));
-        if (any(isnan(right))) right = normalize(cross(vec3(1.0, 0.0, 0.0), forward));
-        vec3 up = cross(forward, right);
-        // In the plane touching the bounding sphere's front, the cone is narrower by (d - R) / d; every
-        // point of the shape lies behind the quad along the eye ray through it.
-        float halfSize = radius * (distance - radius) / sqrt(distance * distance - radius * radius);
+    vec3 right = normalize(cross(cameraUp, forward));
+    if (any(isnan(right))) right = normalize(cross(vec3(1.0, 0.0, 0.0), forward));
+    vec3 up = cross(forward, right);
+    // In the plane touching the bounding sphere's front, the cone is narrower by (d - R) / d; every point of
+    // the shape lies behind the quad along the eye ray through it.
+    float halfSize = distance > 1.01 * radius
+                         ? radius * (distance - radius) / sqrt(distance * distance - radius * radius)
+                         : 0.0;
+    // The quad is used only when all four corners lie beyond the near plane (the same test for each).
+    bool beyondNear = distance > 1.01 * radius;
+    for (int k = 0; k < 4; ++k) {
+        vec2 c = vec2(k == 1 || k == 3 ? 1.0 : -1.0, k >= 2 ? 1.0 : -1.0);
+        vec4 clip = viewProjection * vec4(center + radius * forward + halfSize * (c.x * right + c.y * up), 1.0);
+        beyondNear = beyondNear && clip.z >= -clip.w;
+    }
+    if (beyondNear) {
         worldPosition = center + radius * forward + halfSize * (corner.x * right + corner.y * up);
         gl_Position = viewProjection * vec4(worldPosition, 1.0);
     } else {

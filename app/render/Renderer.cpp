@@ -351,16 +351,28 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
     using Drawn = std::vector<std::pair<double, const RoundedChunk*>>;
     Drawn quadChunks, exactPointChunks, pointChunks;
     for (const RoundedChunk& chunk : chunks_) {
-        bool straddles = false;  // over an edge of the view: its shapes there are quads (impostor.vert)
+        const double distance = glm::length(chunk.centre - eye);
+        const double nearest = distance - chunk.radius;
+        // A point reaching within a pixel of the image's edge is a quad (impostor.vert): the half-width of
+        // the largest point this chunk can have, plus 2 pixels, as a length at the chunk's far side (a
+        // length there spans fewer pixels than anywhere nearer), widens the band in which a chunk counts
+        // as over an edge of the view.
+        const double tanAlpha = nearest > 1.01 * chunk.largest
+                                    ? chunk.largest / std::sqrt(nearest * nearest - chunk.largest * chunk.largest)
+                                    : std::numeric_limits<double>::infinity();
+        const double spread = 1.0 - std::sqrt(frame.maxStretch - 1.0) * tanAlpha;
+        const double halfPoint = spread > 0.1 ? pixelsPerUnit * tanAlpha * frame.maxStretch / spread + 0.25
+                                              : std::numeric_limits<double>::infinity();
+        const double pointHalf = std::min(halfPoint, 0.5 * exactPoints / std::max(spread, 0.1) + 0.25);
+        const double margin = (pointHalf + 2.0) * (distance + chunk.radius) / pixelsPerUnit;
+        bool straddles = false;  // over an edge of the view: its shapes there are quads
         bool outside = false;
         for (const glm::dvec4& plane : planes) {
             const double signedDistance = glm::dot(glm::dvec3(plane), chunk.centre) + plane.w;
             outside = outside || signedDistance < -chunk.radius;
-            straddles = straddles || signedDistance < chunk.radius;
+            straddles = straddles || signedDistance < chunk.radius + margin;
         }
         if (outside) continue;
-        const double distance = glm::length(chunk.centre - eye);
-        const double nearest = distance - chunk.radius;
         const double widest = nearest > 1.01 * chunk.largest
                                   ? 1.01 * 2.0 * chunk.largest * pixelsPerUnit /
                                         std::sqrt(nearest * nearest - chunk.largest * chunk.largest) * frame.maxStretch
@@ -370,7 +382,10 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
         if (widest > pointPixels && narrowest <= exactPoints) exactPointChunks.emplace_back(distance, &chunk);
         if (narrowest <= pointPixels) pointChunks.emplace_back(distance, &chunk);
     }
-    for (Drawn* drawn : {&quadChunks, &exactPointChunks, &pointChunks}) std::sort(drawn->begin(), drawn->end());
+    for (Drawn* drawn : {&quadChunks, &exactPointChunks, &pointChunks}) {
+        std::sort(drawn->begin(), drawn->end());
+        if (opacity < 1.0f) std::reverse(drawn->begin(), drawn->end());  // blended: farthest first
+    }
     if (!quadChunks.empty()) {
         setShapeUniforms(*impostor_, frame, opacity, pointPixels, exactPointPixels_);
         gl_.BindVertexArray(rounded_->vertexArray);

@@ -29,6 +29,7 @@ std::string withDefines(std::string_view source, std::string_view defines) {
     std::string out(source.substr(0, split));
     if (lineEnd == std::string_view::npos) out += '\n';
     out += defines;
+    out += "#line 2\n";  // the driver's messages keep the file's own line numbers
     out += source.substr(split);
     return out;
 }

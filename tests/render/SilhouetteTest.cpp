@@ -153,6 +153,34 @@ TEST(SmallShapeSilhouettes, QuadsAndPointsCoverExactlyThePixelsWhoseRaysHitAShap
     }
 }
 
+// The same under a 90-degree field of view, where shapes off the axis are widened most and points up to 32
+// pixels are drawn (their square must cover the silhouette's outer side), 257 shapes: a chunk of 256 and
+// one of a single shape.
+TEST(SmallShapeSilhouettes, WideFieldOfViewPointsCoverTheirSilhouettes) {
+    DirectRenderer renderer(kWidth, kHeight);
+    std::mt19937_64 rng(12);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> size(0.15, 2.2);
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int k = 0; k < 257; ++k) {
+        shapes.push_back(
+            std::make_unique<Sphere>(Point(14.0 * unit(rng), 11.0 * unit(rng), 3.0 * unit(rng)), size(rng)));
+    }
+    Eigen::AlignedBox3d bounds;
+    for (const auto& shape : shapes) bounds.extend(shape->bounds());
+    const render::Camera camera = test::cameraLookingAt(Point(0.0, 0.0, 14.0), Point(0.0, 0.0, 0.0), 90.0, bounds);
+    const render::Anchor anchor{Point(0.0, 0.0, 0.0)};
+    const test::ExactCoverage engine(shapes, camera, kWidth, kHeight);
+    EXPECT_GT(engine.hits(), 3000);
+    for (const float pointPixels : {0.0f, 32.0f}) {
+        SCOPED_TRACE("pointPixels " + std::to_string(pointPixels));
+        renderer.setPointPixels(pointPixels);
+        const snapshot::Image image =
+            renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
+        test::expectCoversExactly(image, engine);
+    }
+}
+
 // Event markers and handles (Renderer::setMarkers) go through the quad program alone, whatever their size:
 // small ones too cover exactly the pixels of their spheres.
 TEST(MarkerSilhouettes, SmallAndLargeMarkersCoverExactlyThePixelsOfTheirSpheres) {
@@ -160,7 +188,7 @@ TEST(MarkerSilhouettes, SmallAndLargeMarkersCoverExactlyThePixelsOfTheirSpheres)
     renderer.setPointPixels(6.0f);
     std::vector<std::unique_ptr<Shape>> spheres;
     for (int k = 0; k < 12; ++k) {
-        const double radius = 0.05 + 0.06 * k;  // about 1 to 40 pixels across
+        const double radius = 0.05 + 0.06 * k;  // about 1 to 15 pixels across
         spheres.push_back(std::make_unique<Sphere>(Point(-5.5 + 1.0 * k, 1.5 * std::sin(k), 0.0), radius));
     }
     Eigen::AlignedBox3d bounds;
