@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 #include <random>
 #include <string>
@@ -115,6 +116,19 @@ TEST(EllipsoidSilhouette, RotatedEllipsoidsCoverExactlyThePixelsWhoseRaysHitTheE
     }
 }
 
+// The shapes drawn with each RenderOptions::pointPixels in turn, each drawing against the engine's coverage.
+void expectCoversExactlyWithPointPixels(DirectRenderer& renderer, const render::Camera& camera,
+                                        const render::Anchor& anchor, const std::vector<std::unique_ptr<Shape>>& shapes,
+                                        const test::ExactCoverage& engine, std::initializer_list<float> settings) {
+    for (const float pointPixels : settings) {
+        SCOPED_TRACE("pointPixels " + std::to_string(pointPixels));
+        renderer.setPointPixels(pointPixels);
+        const snapshot::Image image =
+            renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
+        test::expectCoversExactly(image, engine);
+    }
+}
+
 // A crowd of small spheres and rotated ellipsoids, 1 to 11 pixels across, some across the image's edges and
 // some outside it, more than one chunk of them (Renderer::drawRounded): whichever of them are quads, points
 // with exact depth or points with the front's depth, the drawing covers exactly the pixels whose rays meet
@@ -144,13 +158,7 @@ TEST(SmallShapeSilhouettes, QuadsAndPointsCoverExactlyThePixelsWhoseRaysHitAShap
     const test::ExactCoverage engine(shapes, camera, kWidth, kHeight);
     EXPECT_GT(engine.hits(), 2000) << "the shapes should cover a good part of the image";
     // 0: quads at the edges, exact points inside; 4: also points with the front's depth; 16: those inside.
-    for (const float pointPixels : {0.0f, 4.0f, 16.0f}) {
-        SCOPED_TRACE("pointPixels " + std::to_string(pointPixels));
-        renderer.setPointPixels(pointPixels);
-        const snapshot::Image image =
-            renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
-        test::expectCoversExactly(image, engine);
-    }
+    expectCoversExactlyWithPointPixels(renderer, camera, anchor, shapes, engine, {0.0f, 4.0f, 16.0f});
 }
 
 // The same under a 90-degree field of view, where shapes off the axis are widened most and points up to 32
@@ -172,13 +180,7 @@ TEST(SmallShapeSilhouettes, WideFieldOfViewPointsCoverTheirSilhouettes) {
     const render::Anchor anchor{Point(0.0, 0.0, 0.0)};
     const test::ExactCoverage engine(shapes, camera, kWidth, kHeight);
     EXPECT_GT(engine.hits(), 3000);
-    for (const float pointPixels : {0.0f, 32.0f}) {
-        SCOPED_TRACE("pointPixels " + std::to_string(pointPixels));
-        renderer.setPointPixels(pointPixels);
-        const snapshot::Image image =
-            renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
-        test::expectCoversExactly(image, engine);
-    }
+    expectCoversExactlyWithPointPixels(renderer, camera, anchor, shapes, engine, {0.0f, 32.0f});
 }
 
 // Event markers and handles (Renderer::setMarkers) go through the quad program alone, whatever their size:
