@@ -28,7 +28,10 @@ SceneDocument::SceneDocument(Scene scene)
     for (ShapeId id = 0; id < names_.size(); ++id) {
         if (!octree_.shape(id)) names_[id].clear();
         if (!names_[id].empty()) nameIndex_.emplace(names_[id], id);
+        if (const Shape* s = octree_.shape(id)) seen_.add(*s);
     }
+    for (const Source& source : rest_.sources) seen_.add(source);
+    for (const Detector& detector : rest_.detectors) seen_.add(detector);
 }
 
 const std::string& SceneDocument::nameOf(ShapeId id) const {
@@ -102,6 +105,7 @@ void SceneDocument::applyShapeChanges(const std::vector<SlotChange>& changes, bo
     for (std::size_t id = 0; id < octree_.slotCount(); ++id) shapes[id] = cloneOf(octree_.shapes()[id]);
     for (const SlotChange& change : changes) {
         shapes[change.id] = cloneOf(forward ? change.after : change.before);
+        if (shapes[change.id]) seen_.add(*shapes[change.id]);
         setName(change.id, forward ? change.nameAfter : change.nameBefore);
     }
     octree_ = Octree(std::move(shapes), rest_.octree);
@@ -111,6 +115,7 @@ void SceneDocument::setSlot(ShapeId id, std::unique_ptr<Shape> shape, const std:
     if (octree_.shape(id)) octree_.remove(id);
     setName(id, shape ? name : std::string());
     if (!shape) return;
+    seen_.add(*shape);
     if (id == octree_.slotCount()) {
         octree_.insert(std::move(shape));
     } else {
@@ -131,6 +136,8 @@ void SceneDocument::setProperties(const Properties& properties) {
     rest_.ambient = properties.ambient;
     rest_.sources = properties.sources;
     rest_.detectors = properties.detectors;
+    for (const Source& source : rest_.sources) seen_.add(source);
+    for (const Detector& detector : rest_.detectors) seen_.add(detector);
 }
 
 void SceneDocument::commitProperties(std::string label, Properties after) {

@@ -2,6 +2,7 @@
 
 #include "scene/DropletCloud.hpp"
 #include "scene/Scene.hpp"
+#include "scene/SceneLimits.hpp"
 #include "scene/ShapeSpec.hpp"
 #include "tree/Octree.hpp"
 
@@ -177,6 +178,9 @@ private:
     void checkWavelengths(const Properties& properties) const;
     Medium checkedMedium(const Medium& medium, std::optional<MediumId> replacing) const;
     std::optional<std::string> overlapOf(const Shape& shape, std::optional<ShapeId> ignore) const;
+    // Refuses a scene whose reach over its smallest feature breaks kMaxScaleRatio (docs/limits.md): the live
+    // shapes with `shape` in place of `replacing` (or added), and the sources and detectors of `properties`.
+    void checkScale(const Shape* shape, std::optional<ShapeId> replacing, const Properties& properties) const;
     std::string modifyLabel(ShapeId id, const Shape& before, const Shape& after) const;
 
     Octree octree_;
@@ -184,6 +188,9 @@ private:
     std::unordered_map<std::string, ShapeId> nameIndex_;
     Scene rest_;  // the scene without its shapes, which octree_ and names_ hold
     std::uint64_t revision_ = 0;
+    // The extremes of every shape, source and detector this document has held: when a new one keeps them
+    // within the limit, the scene surely is, and checkScale need not visit every shape.
+    ScaleExtremes seen_;
     std::deque<Step> undo_;
     std::vector<Step> redo_;
 };

@@ -21,6 +21,7 @@ void checkDetectors(const std::vector<Detector>& detectors) {
         } catch (const std::invalid_argument& error) {
             refuse(detectorTitle(detector) + ": " + error.what());
         }
+        if (const auto problem = detectorLimitProblem(detector)) refuse(detectorTitle(detector) + ": " + *problem);
         if (!names.insert(detector.name).second) {
             refuse("detector name " + jsonpath::quoted(detector.name) + " is already used");
         }
@@ -41,6 +42,7 @@ void SceneDocument::commitDetectors(std::string label, std::vector<Detector> det
     checkDetectors(detectors);
     Properties after = properties();
     after.detectors = std::move(detectors);
+    checkScale(nullptr, std::nullopt, after);
     if (mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Detectors) {
         setProperties(after);
         undo_.back().after = std::move(after);

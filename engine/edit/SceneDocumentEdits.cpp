@@ -93,11 +93,34 @@ const Shape& SceneDocument::liveShape(ShapeId id) const {
 
 std::unique_ptr<Shape> SceneDocument::shapeFor(const ShapeSpec& spec) const {
     checkMediumId(spec.medium);
+    std::unique_ptr<Shape> shape;
     try {
-        return makeShape(spec);
+        shape = makeShape(spec);
     } catch (const std::invalid_argument& error) {
         throw EditRefused(error.what());
     }
+    if (const auto problem = shapeLimitProblem(*shape)) refuse(shapeTypeLabel(*shape) + ": " + *problem);
+    return shape;
+}
+
+void SceneDocument::checkScale(const Shape* shape, std::optional<ShapeId> replacing,
+                               const Properties& properties) const {
+    ScaleExtremes bound = seen_;
+    if (shape) bound.add(*shape);
+    for (const Source& source : properties.sources) bound.add(source);
+    for (const Detector& detector : properties.detectors) bound.add(detector);
+    if (bound.withinLimit()) return;
+    ScaleExtremes exact;
+    if (shape) exact.add(*shape);
+    for (ShapeId id = 0; id < octree_.slotCount(); ++id) {
+        const Shape* live = octree_.shape(id);
+        if (live && id != replacing) exact.add(*live);
+    }
+    for (const Source& source : properties.sources) exact.add(source);
+    for (const Detector& detector : properties.detectors) exact.add(detector);
+    if (exact.withinLimit()) return;
+    refuse((shape ? shapeTypeLabel(*shape) : std::string("the scene")) + ": " +
+           scaleLimitMessage(exact.feature, exact.reach, rest_.unit, "its farthest shape, source or detector"));
 }
 
 void SceneDocument::checkName(const std::string& name, std::optional<ShapeId> owner) const {
@@ -165,6 +188,7 @@ ShapeId SceneDocument::addShape(const ShapeSpec& spec, const std::string& name) 
     std::unique_ptr<Shape> shape = shapeFor(spec);
     checkName(name, std::nullopt);
     if (const auto overlap = overlapOf(*shape, std::nullopt)) refuse(*overlap);
+    checkScale(shape.get(), std::nullopt, properties());
     const auto id = static_cast<ShapeId>(octree_.slotCount());
     Step step;
     step.label = withName("add " + shapeTypeLabel(*shape), name);
@@ -189,6 +213,7 @@ void SceneDocument::modifyShape(ShapeId id, const ShapeSpec& spec, bool mergeWit
     const Shape& current = liveShape(id);
     std::unique_ptr<Shape> shape = shapeFor(spec);
     if (const auto overlap = overlapOf(*shape, id)) refuse(*overlap);
+    checkScale(shape.get(), id, properties());
     const bool merge = mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Modify &&
                        undo_.back().shapes.front().id == id;
     if (merge) {
@@ -287,6 +312,7 @@ void SceneDocument::setSources(std::vector<Source> sources, bool mergeWithPrevio
         const Source& source = sources[i];
         const std::string which = "source " + std::to_string(i) + ": ";
         if (!source.origin.allFinite()) refuse(which + "origin must be finite");
+        if (const auto problem = sourceLimitProblem(source)) refuse(which + *problem);
         if (source.type != SourceType::PointSource && !source.direction) {
             refuse(which + "direction must be a finite, non-zero vector");
         }
@@ -303,6 +329,7 @@ void SceneDocument::setSources(std::vector<Source> sources, bool mergeWithPrevio
     Properties after = properties();
     after.sources = std::move(sources);
     checkWavelengths(after);
+    checkScale(nullptr, std::nullopt, after);
     if (mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Sources) {
         setProperties(after);
         undo_.back().after = std::move(after);

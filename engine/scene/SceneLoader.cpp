@@ -6,6 +6,7 @@
 #include "scene/JsonPath.hpp"
 #include "scene/JsonReader.hpp"
 #include "scene/MediaReader.hpp"
+#include "scene/SceneLimits.hpp"
 #include "scene/SceneOverlaps.hpp"
 #include "scene/ShapeReader.hpp"
 #include "scene/SourceReader.hpp"
@@ -78,6 +79,8 @@ void readShapes(const JsonReader& shapes, Scene& scene) {
     BaseCache cache;
     for (const JsonReader& json : shapes.elements()) {
         NamedShape shape = readShape(json, scene.media, cache);
+        // Before anything uses its bounds: the pairwise checks and the octree need finite ones.
+        if (const auto problem = shapeLimitProblem(*shape.shape)) json.fail(*problem);
         for (std::size_t other = 0; other < scene.shapeNames.size() && !shape.name.empty(); ++other) {
             if (scene.shapeNames[other] == shape.name) {
                 json.member("name").fail("name " + jsonpath::quoted(shape.name) + " is already used by " +
@@ -164,10 +167,12 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     if (const auto octree = root.optionalMember("octree")) readOctreeSettings(*octree, scene);
     if (const auto view = root.optionalMember("view")) readView(*view, scene);
     if (const auto detectors = root.optionalMember("detectors")) scene.detectors = readDetectors(*detectors);
+    checkSourceAndDetectorLimits(scene);
     // Only the explicit shapes need the pairwise check; generated droplets avoid everything by construction.
     checkShapesDisjoint(scene);
     scene.explicitShapeCount = scene.shapes.size();
     if (const auto generators = root.optionalMember("generators")) readGenerators(*generators, scene);
+    checkSceneScale(scene);
     return scene;
 }
 

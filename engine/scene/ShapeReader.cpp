@@ -6,6 +6,7 @@
 #include "geometry/Sphere.hpp"
 #include "scene/JsonPath.hpp"
 #include "scene/MediaReader.hpp"
+#include "scene/SceneLimits.hpp"
 
 #include <numbers>
 #include <stdexcept>
@@ -60,6 +61,12 @@ Eigen::AlignedBox3d readCorners(const JsonReader& json) {
     const Point lower = json.member("min").vector3();
     const JsonReader upperJson = json.member("max");
     const Point upper = upperJson.vector3();
+    for (const auto& [corner, key] : {std::pair{lower, "min"}, std::pair{upper, "max"}}) {
+        if (corner.cwiseAbs().maxCoeff() > kMaxCoordinate) {
+            json.member(key).fail("beyond the limit " + jsonpath::number(kMaxCoordinate) +
+                                  " on any coordinate (docs/limits.md)");
+        }
+    }
     for (Eigen::Index axis = 0; axis < 3; ++axis) {
         if (!(lower[axis] < upper[axis])) {
             upperJson.fail("must be > \"min\" on every axis (" + std::string(1, "xyz"[axis]) + ": max " +

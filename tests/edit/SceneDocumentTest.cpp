@@ -226,3 +226,42 @@ TEST(SceneDocument, ToSceneRoundTripsThroughTheSceneFile) {
 
 }  // namespace
 }  // namespace dropscope
+
+namespace dropscope {
+namespace {
+
+using namespace test;
+
+// docs/limits.md: an edit may not make a shape unusable, nor the scene's reach over its smallest feature
+// exceed kMaxScaleRatio; what was accepted before is still accepted after moves back and forth.
+TEST(SceneDocument, EditsBeyondTheLimitsAreRefused) {
+    SceneDocument document(smallScene());
+    const Snapshot before(document);
+    EXPECT_EQ(refusalOf([&] { document.addShape(sphereAt(Point(1e300, 0, 0), 1.0)); }),
+              "sphere: its bounds reach 1e+300, beyond the limit 1e+100 on any coordinate (docs/limits.md)");
+    EXPECT_EQ(refusalOf([&] { document.modifyShape(0, sphereAt(Point(0, 0, 0), 1e-110)); }),
+              "sphere: its volume is 0, not finite and > 0 (docs/limits.md)");
+    // The cell reaches 10: a droplet of 1e-11 is 1e12 times smaller; 5e-12 is beyond.
+    EXPECT_EQ(refusalOf([&] { document.addShape(sphereAt(Point(-3, -3, 0), 5e-12)); }),
+              "sphere: its smallest feature (3 volume / area) 5e-12 mm is 2e+12 times smaller than the scene's "
+              "reach 10 mm (its farthest shape, source or detector); the limit is 1e+12, beyond which double "
+              "precision cannot tell its surface from its inside (docs/limits.md)");
+    EXPECT_EQ(refusalOf([&] { document.modifyShape(1, sphereAt(Point(2e12, 0, 0), 1.0)); })
+                  .find("sphere: its "
+                        "smallest feature"),
+              0u);
+    std::vector<Source> sources = document.sources();
+    sources[0].origin = Point(0, 0, -1e13);
+    EXPECT_NE(refusalOf([&] { document.setSources(sources); }).find("times smaller than the scene's reach 1e+13"),
+              std::string::npos);
+    EXPECT_EQ(Snapshot(document), before);
+
+    // Far, then back, then a small droplet: each state is within the limit, so each is accepted, although the
+    // extremes the document has seen (reach 1e9, feature 1e-3) together would not be.
+    document.modifyShape(1, sphereAt(Point(1e9, 0, 0), 1.0));
+    document.modifyShape(1, sphereAt(Point(3, 0, 0), 1.0));
+    EXPECT_EQ(refusalOf([&] { document.addShape(sphereAt(Point(-3, -3, 0), 1e-3)); }), "accepted");
+}
+
+}  // namespace
+}  // namespace dropscope
