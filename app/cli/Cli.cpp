@@ -53,6 +53,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         app.footer(
             "Exit status: 0 success, 2 bad input (arguments, scene file, output path), 3 no display for the app\n"
             "(dropscope [SCENE.json] opens it), 1 internal error,\n"
+            "4 trace lost more photons than --max-lost allows (results written),\n"
             "130 trace stopped by Ctrl-C (partial results written).");
         InspectOptions inspectOptions;
         const CLI::App* inspect = addInspectCommand(app, inspectOptions);

@@ -8,6 +8,7 @@ namespace dropscope {
 inline constexpr int kExitSuccess = 0;
 inline constexpr int kExitInternalError = 1;  // a bug: an exception no input should cause
 inline constexpr int kExitBadInput = 2;       // bad arguments, missing or invalid scene file
+inline constexpr int kExitTooManyLost = 4;    // trace --max-lost F: more photons lost than F; results written
 inline constexpr int kExitInterrupted = 130;  // stopped by Ctrl-C (128 + SIGINT); partial results written
 
 // The dropscope command line: parses argv (argv[0] is the program), runs the subcommand, and returns

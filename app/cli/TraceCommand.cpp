@@ -112,6 +112,11 @@ CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options) {
                      "diffracted by its outline (Airy pattern) and pass it (docs/transport.md, \"Diffraction\")")
         ->capture_default_str()
         ->check(CLI::IsMember({"none", "fraunhofer"}));
+    command
+        ->add_option("--max-lost", options.maxLost,
+                     "Exit with status 4, after writing every file, when the share of photons lost is above F (0 "
+                     "to 1); a trace that loses any photon always warns on stderr")
+        ->check(CLI::Range(0.0, 1.0));
     command->add_flag("--orders", options.orders,
                       "Ray orders: angular_orders.csv (p0 .. p5_plus of photons that met one shape, and multiple) and "
                       "single/multiple scattering shares in summary.json");
@@ -163,6 +168,7 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
 
     TraceRunInfo info{options.scenePath, scene.sources.size(), settings, scene.wavelengthNm, scene.sources};
     info.sceneJson = setup.sceneJson;
+    info.maxLost = options.maxLost;
     // Alive until the files are written: a first Ctrl-C while writing them is absorbed, not fatal. mpirun
     // turns a Ctrl-C into SIGTERM to every rank, so a rank of an MPI run takes that as its Ctrl-C.
     const InterruptGuard interrupt(ranks.launched() ? InterruptGuard::kAlsoTerminate : InterruptGuard::kInterruptOnly);
@@ -194,10 +200,23 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
     }
     printSummary(result, directory, out);
     out.flush();  // before MPI_Finalize: mpirun may end the job as soon as every rank has finished it
-    if (!result.partial) return kExitSuccess;
-    err << "dropscope: trace interrupted: " << result.photons << " of " << result.requested
-        << " photons traced, partial results in " << directory.string() << '\n';
-    return kExitInterrupted;
+    const FateTally& fates = result.tallies.get<FateTally>();
+    if (const auto warning = fates.lossWarning()) err << "dropscope: warning: " << *warning << '\n';
+    if (result.partial) {
+        err << "dropscope: trace interrupted: " << result.photons << " of " << result.requested
+            << " photons traced, partial results in " << directory.string() << '\n';
+        return kExitInterrupted;
+    }
+    const double lostShare =
+        fates.photons() > 0 ? static_cast<double>(fates.lost()) / static_cast<double>(fates.photons()) : 0.0;
+    if (options.maxLost && lostShare > *options.maxLost) {
+        char line[160];
+        std::snprintf(line, sizeof line, "dropscope: lost share %.6g is above --max-lost %.6g (results written)\n",
+                      lostShare, *options.maxLost);
+        err << line;
+        return kExitTooManyLost;
+    }
+    return kExitSuccess;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -27,6 +28,7 @@ struct TraceOptions {
     std::string diffraction = "none";  // --diffraction none|fraunhofer
     int wavelengthBins = 1;
     bool orders = false;
+    std::optional<double> maxLost;  // --max-lost F: exit kExitTooManyLost when the lost share is above F
     std::string outDir;
 };
 
@@ -52,7 +54,7 @@ TraceSettings checkedTraceSettings(const TraceOptions& options);
 
 // Registers `dropscope trace SCENE --photons N [--seed S] [--bins B] [--threads T] [--paths K]
 // [--max-events M] [--fresnel exact|schlick] [--polarisation stokes|none] [--wavelength-bins K] [--diffraction
-// none|fraunhofer] [--orders]
+// none|fraunhofer] [--orders] [--max-lost F]
 // --out DIR`.
 CLI::App* addTraceCommand(CLI::App& app, TraceOptions& options);
 

@@ -1,5 +1,7 @@
 #include "gui/TraceActions.hpp"
 
+#include "tally/FateTally.hpp"
+
 #include "transport/Emission.hpp"
 #include "transport/OpticalScene.hpp"
 
@@ -97,7 +99,12 @@ void updateTraces(AppState& state) {
             ++traces.shownId;
             const auto paths = static_cast<int>(traces.trace->outcome.result.paths.size());
             selectEvent(traces, traces.selectedPath < paths ? traces.selectedPath : -1, traces.selectedEvent);
-            if (!traces.automatic) state.ui.status.say(text.str());
+            // A loss is always said, live firing included, as an error: the results lack those photons.
+            if (const auto warning = traces.trace->outcome.result.tallies.get<FateTally>().lossWarning()) {
+                state.ui.status.refuse(text.str() + "; " + *warning);
+            } else if (!traces.automatic) {
+                state.ui.status.say(text.str());
+            }
         }
     }
     if (!traces.fire.live) return;

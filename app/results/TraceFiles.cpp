@@ -27,6 +27,7 @@ ResultReport traceReport(const TraceResult& result, const TraceRunInfo& info) {
     report.set({"diffraction"}, std::string(diffractionModelName(info.settings.transport.diffraction)));
     report.set({"max_events"}, static_cast<std::uint64_t>(info.settings.transport.maxEvents));
     report.set({"paths"}, static_cast<std::uint64_t>(result.paths.size()));
+    report.set({"max_lost"}, info.maxLost ? SummaryValue(*info.maxLost) : SummaryValue(nullptr));
     report.set({"sources"}, static_cast<std::uint64_t>(info.sourceCount));
     report.set({"version"}, std::string(dropscopeVersion()));
     if (info.sceneWavelengthNm > 0.0) report.set({"wavelength_nm"}, info.sceneWavelengthNm);
@@ -71,6 +72,9 @@ void writeTraceSummary(const ResultReport& report, std::ostream& out) {
                                                          "paths",
                                                          "counts",
                                                          "lost_reasons",
+                                                         "lost_warning",
+                                                         "first_lost",
+                                                         "max_lost",
                                                          "sources",
                                                          "wavelength_nm",
                                                          "wavelength_bins",

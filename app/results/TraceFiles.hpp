@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,9 +19,10 @@ struct TraceRunInfo {
     std::string scenePath;  // as given on the command line
     std::size_t sourceCount = 0;
     TraceSettings settings;
-    double sceneWavelengthNm = 0.0;    // 0: not reported
-    std::vector<Source> sources = {};  // their spectra and divergences are reported (none: not reported)
-    std::string sceneJson = {};        // the scene file's text, kept in results.h5
+    double sceneWavelengthNm = 0.0;      // 0: not reported
+    std::vector<Source> sources = {};    // their spectra and divergences are reported (none: not reported)
+    std::string sceneJson = {};          // the scene file's text, kept in results.h5
+    std::optional<double> maxLost = {};  // trace --max-lost, reported as max_lost (null without it)
 };
 
 std::string_view fresnelModelName(FresnelModel model);  // "exact", "schlick"

@@ -1,6 +1,8 @@
 #include "tally/FateTally.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
 #include <string>
 
 namespace dropscope {
@@ -22,6 +24,9 @@ void FateTally::score(const Event& event, const TallyContext& photon) {
     case EventType::Lost:
         ++lost_;
         ++lostReasons_[static_cast<std::size_t>(event.lostReason)];
+        if (!firstLost_ || photon.photon < firstLost_->photon) {
+            firstLost_ = FirstLost{photon.photon, event.lostReason, event.lostAt, event.position};
+        }
         break;
     case EventType::Detect: ++detected_; break;
     case EventType::Diffract: ++events_.diffract; break;
@@ -36,6 +41,12 @@ void FateTally::writeScores(ScoreWriter& out) const {
          {events_.reflect, events_.refract, events_.tir, events_.absorb, events_.diffract}) {
         out.word(count);
     }
+    out.word(firstLost_ ? 1 : 0);
+    if (!firstLost_) return;
+    out.word(firstLost_->photon);
+    out.word(static_cast<std::uint64_t>(firstLost_->reason));
+    out.word(firstLost_->shape);
+    for (Eigen::Index axis = 0; axis < 3; ++axis) out.real(firstLost_->position[axis]);
 }
 
 void FateTally::readScores(ScoreReader& in) {
@@ -46,6 +57,16 @@ void FateTally::readScores(ScoreReader& in) {
          {&events_.reflect, &events_.refract, &events_.tir, &events_.absorb, &events_.diffract}) {
         *count = in.word();
     }
+    firstLost_.reset();
+    if (in.word() == 0) return;
+    FirstLost first;
+    first.photon = in.word();
+    const std::uint64_t reason = in.word();
+    if (reason >= kLostReasonCount) throw std::runtime_error("fates: lost reason out of range");
+    first.reason = static_cast<LostReason>(reason);
+    first.shape = static_cast<ShapeId>(in.word());
+    for (Eigen::Index axis = 0; axis < 3; ++axis) first.position[axis] = in.real();
+    firstLost_ = first;
 }
 
 void FateTally::merge(const Tally& other) {
@@ -58,6 +79,33 @@ void FateTally::merge(const Tally& other) {
     unscattered_ += more.unscattered_;
     for (std::size_t i = 0; i < lostReasons_.size(); ++i) lostReasons_[i] += more.lostReasons_[i];
     events_ += more.events_;
+    if (more.firstLost_ && (!firstLost_ || more.firstLost_->photon < firstLost_->photon)) firstLost_ = more.firstLost_;
+}
+
+LostReason FateTally::mainLostReason() const {
+    std::size_t main = 0;
+    for (std::size_t reason = 1; reason < kLostReasonCount; ++reason) {
+        if (lostReasons_[reason] > lostReasons_[main]) main = reason;
+    }
+    return static_cast<LostReason>(main);
+}
+
+std::optional<std::string> FateTally::lossWarning() const {
+    if (lost_ == 0 || !firstLost_) return std::nullopt;
+    const LostReason main = mainLostReason();
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "lost %.3g %% of the photons (%llu of %llu), mostly %s (%s: %llu); the first, photon %llu, ",
+                  100.0 * static_cast<double>(lost_) / static_cast<double>(photons_),
+                  static_cast<unsigned long long>(lost_), static_cast<unsigned long long>(photons_),
+                  std::string(lostReasonMeaning(main)).c_str(), std::string(lostReasonName(main)).c_str(),
+                  static_cast<unsigned long long>(lost(main)), static_cast<unsigned long long>(firstLost_->photon));
+    std::string text = line;
+    if (firstLost_->shape != RayHit::kNone) text += "at shape " + std::to_string(firstLost_->shape) + " ";
+    const Point& p = firstLost_->position;
+    std::snprintf(line, sizeof line, "(%.6g, %.6g, %.6g), %s", p.x(), p.y(), p.z(),
+                  std::string(lostReasonName(firstLost_->reason)).c_str());
+    return text + line;
 }
 
 void FateTally::report(ResultReport& report) const {
@@ -83,6 +131,18 @@ void FateTally::report(ResultReport& report) const {
     for (std::size_t reason = 0; reason < kLostReasonCount; ++reason) {
         report.set({"lost_reasons", std::string(lostReasonName(static_cast<LostReason>(reason)))},
                    lostReasons_[reason]);
+    }
+    const std::optional<std::string> warning = lossWarning();
+    report.set({"lost_warning"}, warning ? SummaryValue(*warning) : SummaryValue(nullptr));
+    if (firstLost_) {
+        report.set({"first_lost", "photon"}, firstLost_->photon);
+        report.set({"first_lost", "reason"}, std::string(lostReasonName(firstLost_->reason)));
+        report.set({"first_lost", "shape"}, firstLost_->shape == RayHit::kNone
+                                                ? SummaryValue(nullptr)
+                                                : SummaryValue(static_cast<std::uint64_t>(firstLost_->shape)));
+        report.set({"first_lost", "x"}, firstLost_->position.x());
+        report.set({"first_lost", "y"}, firstLost_->position.y());
+        report.set({"first_lost", "z"}, firstLost_->position.z());
     }
 }
 

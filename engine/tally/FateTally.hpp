@@ -4,8 +4,20 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 
 namespace dropscope {
+
+// The lost photon of lowest index: where and why. The same for any thread or rank count, since the merge
+// keeps the lower index.
+struct FirstLost {
+    std::uint64_t photon = 0;
+    LostReason reason = LostReason::EventCap;
+    ShapeId shape = RayHit::kNone;  // the surface it was at, if any
+    Point position = Point::Zero();
+    friend bool operator==(const FirstLost&, const FirstLost&) = default;
+};
 
 // How the photons of a run ended (escaped, absorbed, lost and why, detected by an absorbing detector;
 // unscattered: escaped without meeting any surface) and their interface and absorption events: summary.json's
@@ -29,11 +41,19 @@ public:
     std::uint64_t unscattered() const { return unscattered_; }
     std::uint64_t lost(LostReason reason) const { return lostReasons_[static_cast<std::size_t>(reason)]; }
     const EventCounts& events() const { return events_; }
+    // Set when a photon was lost.
+    const std::optional<FirstLost>& firstLost() const { return firstLost_; }
+    // The reason most photons were lost for (the first in LostReason order on a tie); EventCap when none was.
+    LostReason mainLostReason() const;
+    // One line for stderr, summary.json's "lost_warning" and the app's status bar when a photon was lost:
+    // "lost 0.3 % of the photons (3 of 1000), mostly at box edges or vertices (undefined_normal: 3); the first,
+    // photon 17, at shape 0 (1, 0, -0.5)"; nothing when none was.
+    std::optional<std::string> lossWarning() const;
 
     friend bool operator==(const FateTally& a, const FateTally& b) {
         return a.photons_ == b.photons_ && a.escaped_ == b.escaped_ && a.absorbed_ == b.absorbed_ &&
                a.lost_ == b.lost_ && a.detected_ == b.detected_ && a.unscattered_ == b.unscattered_ &&
-               a.lostReasons_ == b.lostReasons_ && a.events_ == b.events_;
+               a.lostReasons_ == b.lostReasons_ && a.events_ == b.events_ && a.firstLost_ == b.firstLost_;
     }
 
 private:
@@ -45,6 +65,7 @@ private:
     std::uint64_t unscattered_ = 0;
     std::array<std::uint64_t, kLostReasonCount> lostReasons_{};
     EventCounts events_;
+    std::optional<FirstLost> firstLost_;
 };
 
 }  // namespace dropscope

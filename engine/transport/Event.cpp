@@ -28,4 +28,14 @@ std::string_view lostReasonName(LostReason reason) {
     return "?";
 }
 
+std::string_view lostReasonMeaning(LostReason reason) {
+    switch (reason) {
+    case LostReason::EventCap: return "after too many surface events (--max-events)";
+    case LostReason::UndefinedNormal: return "at box edges or vertices, where a surface has no normal";
+    case LostReason::MediumMismatch: return "at a surface that does not bound the photon's medium (touching shapes)";
+    case LostReason::NoExit: return "inside a shape with no surface ahead (rounding)";
+    }
+    return "?";
+}
+
 }  // namespace dropscope

@@ -29,6 +29,8 @@ inline constexpr std::size_t kLostReasonCount = 4;
 
 std::string_view eventTypeName(EventType type);
 std::string_view lostReasonName(LostReason reason);
+// What a reason means, for warnings: "at box edges or vertices".
+std::string_view lostReasonMeaning(LostReason reason);
 
 // One recorded event. The direction is the one the photon leaves the event with (the incoming one
 // for absorb, escape and lost); `from`/`to` are the media on the incident and the far side of the
@@ -45,7 +47,10 @@ struct Event {
     double reflectance = std::numeric_limits<double>::quiet_NaN();
     double weight = 1.0;
     LostReason lostReason = LostReason::EventCap;  // meaningful only for EventType::Lost
-    std::size_t detector = 0;                      // for EventType::Detect: its index in the scene's detectors
+    // For EventType::Lost: the surface the photon was at or the shape it was inside, if any. Not `shape`,
+    // which paths.jsonl has always written as null for a loss.
+    ShapeId lostAt = RayHit::kNone;
+    std::size_t detector = 0;  // for EventType::Detect: its index in the scene's detectors
     std::optional<Polarisation> polarisation = std::nullopt;
 };
 

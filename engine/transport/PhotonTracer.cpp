@@ -65,12 +65,14 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         position += length * direction.vector();
         state.pathLength += length;
     };
-    const auto lose = [&](LostReason reason) {
+    // `at`: the surface the photon was at, or the shape it was inside, when there is one.
+    const auto lose = [&](LostReason reason, ShapeId at) {
         outcome.fate = PhotonFate::Lost;
         outcome.lostReason = reason;
         if (observer) {
             Event event = here(EventType::Lost);
             event.lostReason = reason;
+            event.lostAt = at;
             observe(event);
         }
         return outcome;
@@ -153,13 +155,14 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         if (absorbedWithin(reach)) return outcome;
         if (detector) return detect(*detector);
         if (halo) {
-            fly(halo->distance);
-            if (++state.interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap);
-            diffract(halo->droplet);
+            const OpticalScene::HaloPass pass = *halo;
+            fly(pass.distance);
+            if (++state.interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap, pass.droplet);
+            diffract(pass.droplet);
             continue;
         }
         if (!hit) {
-            if (region != OpticalScene::kAmbient) return lose(LostReason::NoExit);
+            if (region != OpticalScene::kAmbient) return lose(LostReason::NoExit, region);
             fly(std::numeric_limits<double>::infinity());
             outcome.fate = PhotonFate::Escaped;
             outcome.finalDirection = direction;
@@ -169,10 +172,10 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
 
         fly(hit.distance);
         outcome.metSurface = state.metSurface = true;
-        if (++state.interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap);
+        if (++state.interfaceEvents > settings.maxEvents) return lose(LostReason::EventCap, hit.shape);
         const SurfaceCrossing crossing =
             crossSurface(scene, region, hit.shape, position, direction, settings.fresnel, !light, optics);
-        if (crossing.kind == SurfaceCrossing::Kind::Lost) return lose(crossing.lostReason);
+        if (crossing.kind == SurfaceCrossing::Kind::Lost) return lose(crossing.lostReason, hit.shape);
         if (crossing.kind == SurfaceCrossing::Kind::Tangent) continue;  // goes on unchanged (seed 000 ch. 4)
 
         double reflectance = crossing.reflectance;

@@ -108,12 +108,34 @@ TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
     EXPECT_NE(run.out.find(path("out")), std::string::npos) << run.out;
 
     const Json s = summary();
-    EXPECT_EQ(keysOf(s), (std::vector<std::string>{"photons",         "seed",         "ranks",      "threads",
-                                                   "seconds",         "fractions",    "events",     "photons_requested",
-                                                   "partial",         "scene",        "bins",       "fresnel",
-                                                   "polarisation",    "diffraction",  "max_events", "paths",
-                                                   "counts",          "lost_reasons", "sources",    "wavelength_nm",
-                                                   "wavelength_bins", "spectra",      "budget",     "version"}));
+    EXPECT_EQ(keysOf(s), (std::vector<std::string>{"photons",
+                                                   "seed",
+                                                   "ranks",
+                                                   "threads",
+                                                   "seconds",
+                                                   "fractions",
+                                                   "events",
+                                                   "photons_requested",
+                                                   "partial",
+                                                   "scene",
+                                                   "bins",
+                                                   "fresnel",
+                                                   "polarisation",
+                                                   "diffraction",
+                                                   "max_events",
+                                                   "paths",
+                                                   "counts",
+                                                   "lost_reasons",
+                                                   "lost_warning",
+                                                   "max_lost",
+                                                   "sources",
+                                                   "wavelength_nm",
+                                                   "wavelength_bins",
+                                                   "spectra",
+                                                   "budget",
+                                                   "version"}));
+    EXPECT_TRUE(s["lost_warning"].is_null());  // nothing lost: no warning, no first_lost, nothing on stderr
+    EXPECT_TRUE(s["max_lost"].is_null());
     EXPECT_EQ(s["version"], "0.1.0");
     EXPECT_EQ(keysOf(s["fractions"]),
               (std::vector<std::string>{"escaped", "absorbed", "lost", "unscattered", "detected"}));
@@ -149,6 +171,41 @@ TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
         EXPECT_EQ(rows[i].hi, 5.0 * static_cast<double>(i + 1));
     }
     EXPECT_EQ(lines(path("out/paths.jsonl")).size(), 3u);
+}
+
+// A pencil aimed at a glass block's vertical edge (no normal there: every such photon is lost) beside a beam
+// that crosses a face: half the photons are lost.
+const std::string kEdgeScene = kDataDir + "/scenes/pencil_at_box_edge.json";
+const std::string kEdgeWarning =
+    "dropscope: warning: lost 50 % of the photons (1000 of 2000), mostly at box edges or vertices, where a surface "
+    "has no normal (undefined_normal: 1000); the first, photon 0, at shape 0 (-1, -1, 0), undefined_normal\n";
+
+TEST_F(TraceCommand, LostPhotonsAreWarnedOnStderrAndInTheSummary) {
+    const CliRun run = trace(kEdgeScene, "2000", {"--threads", "2"});
+    ASSERT_EQ(run.status, kExitSuccess) << run.err;
+    EXPECT_EQ(run.err, kEdgeWarning);
+    const Json s = summary();
+    EXPECT_EQ(s["counts"]["lost"], 1000);
+    EXPECT_EQ(s["lost_warning"], kEdgeWarning.substr(20, kEdgeWarning.size() - 21));
+    EXPECT_EQ(
+        s["first_lost"],
+        Json::parse(R"({"photon": 0, "reason": "undefined_normal", "shape": 0, "x": -1.0, "y": -1.0, "z": 0.0})"));
+    EXPECT_TRUE(s["max_lost"].is_null());
+}
+
+TEST_F(TraceCommand, MaxLostExitsFourAfterWritingEveryFile) {
+    const CliRun over = trace(kEdgeScene, "2000", {"--max-lost", "0.49"});
+    EXPECT_EQ(over.status, kExitTooManyLost);
+    EXPECT_EQ(over.err, kEdgeWarning + "dropscope: lost share 0.5 is above --max-lost 0.49 (results written)\n");
+    for (const char* file : {"summary.json", "angular.csv", "angular_spectral.csv", "paths.jsonl", "results.h5"}) {
+        EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / file)) << file;
+    }
+    EXPECT_EQ(summary()["max_lost"], 0.49);
+    const CliRun within = trace(kEdgeScene, "2000", {"--max-lost", "0.5"}, "within");
+    EXPECT_EQ(within.status, kExitSuccess);
+    EXPECT_EQ(within.err, kEdgeWarning);
+    test::expectOneLineFailure(trace(kEdgeScene, "2000", {"--max-lost", "1.5"}, "bad"));
+    EXPECT_FALSE(fs::exists(dir_ / "bad"));
 }
 
 TEST_F(TraceCommand, CountsAddUpAndFractionsAreTheirShares) {

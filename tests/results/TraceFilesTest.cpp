@@ -74,10 +74,12 @@ TEST(TraceFiles, SummaryKeysComeInTheDocumentedOrder) {
     std::vector<std::string> keys;
     const nlohmann::ordered_json json = nlohmann::ordered_json::parse(summary.str());
     for (const auto& item : json.items()) keys.push_back(item.key());
-    const std::vector<std::string> documented{
-        "photons",           "seed",    "ranks",  "threads",      "seconds", "fractions",    "events",
-        "photons_requested", "partial", "scene",  "bins",         "fresnel", "polarisation", "diffraction",
-        "max_events",        "paths",   "counts", "lost_reasons", "sources", "version"};
+    const std::vector<std::string> documented{"photons",      "seed",         "ranks",        "threads",
+                                              "seconds",      "fractions",    "events",       "photons_requested",
+                                              "partial",      "scene",        "bins",         "fresnel",
+                                              "polarisation", "diffraction",  "max_events",   "paths",
+                                              "counts",       "lost_reasons", "lost_warning", "max_lost",
+                                              "sources",      "version"};
     EXPECT_EQ(keys, documented);
 }
 
