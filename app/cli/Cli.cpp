@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include <exception>
+#include <new>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -94,6 +95,12 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         return kExitBadInput;
     } catch (const BadInputError& error) {
         err << error.what() << '\n';
+        return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        // Past the estimates every run makes up front (docs/limits.md): the machine, or ulimit, had less
+        // memory than they assumed. No output was written: the writers allocate before they rename.
+        err << "dropscope: out of memory: this run needs more than the machine allows (docs/limits.md, "
+               "\"Memory\"); nothing was written\n";
         return kExitBadInput;
     } catch (const std::exception& error) {
         err << "dropscope: internal error: " << error.what() << '\n';

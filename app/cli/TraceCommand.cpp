@@ -137,6 +137,7 @@ struct TraceSetup {
     Scene scene;
     PreparedTrace prepared;
     std::optional<OpticalScene> optical;
+    bool createdOutput = false;  // --out did not exist before this run
 };
 
 void prepareTraceSetup(const TraceOptions& options, bool writes, TraceSetup& setup) {
@@ -156,15 +157,37 @@ void prepareTraceSetup(const TraceOptions& options, bool writes, TraceSetup& set
     setup.optical.emplace(setup.scene, setup.prepared.settings.transport.diffraction != DiffractionModel::None);
 }
 
+// Until the run's files are written, a failure (an allocation, a full disk) leaves no sign of the run: the
+// folder it created is removed again, which fs::remove does only when it is empty.
+class FolderOfThisRun {
+public:
+    FolderOfThisRun(fs::path path, bool created) : path_(std::move(path)), created_(created) {}
+    FolderOfThisRun(const FolderOfThisRun&) = delete;
+    FolderOfThisRun& operator=(const FolderOfThisRun&) = delete;
+    ~FolderOfThisRun() {
+        std::error_code ignored;
+        if (created_ && !kept_) fs::remove(path_, ignored);
+    }
+    void keep() { kept_ = true; }
+
+private:
+    fs::path path_;
+    bool created_;
+    bool kept_ = false;
+};
+
 int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream& out, std::ostream& err) {
     const fs::path directory = options.outDir;
     TraceSetup setup;
     ranks.together([&] { prepareTraceSetup(options, ranks.root(), setup); });
     ranks.together([&] {
-        if (ranks.root()) createOutputDirectory(directory);
+        if (!ranks.root()) return;
+        setup.createdOutput = !fs::exists(directory);
+        createOutputDirectory(directory);
     });
     const Scene& scene = setup.scene;
     const TraceSettings& settings = setup.prepared.settings;
+    FolderOfThisRun createdFolder(directory, setup.createdOutput);
 
     TraceRunInfo info{options.scenePath, scene.sources.size(), settings, scene.wavelengthNm, scene.sources};
     info.sceneJson = setup.sceneJson;
@@ -198,6 +221,7 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
     } catch (const std::runtime_error& error) {
         throw BadInputError(error.what());
     }
+    createdFolder.keep();
     printSummary(result, directory, out);
     out.flush();  // before MPI_Finalize: mpirun may end the job as soon as every rank has finished it
     const FateTally& fates = result.tallies.get<FateTally>();

@@ -2,6 +2,8 @@
 // its own so that the module does not link the command (and MPI with it).
 #include "cli/BadInput.hpp"
 #include "cli/TraceCommand.hpp"
+#include "run/RunMemory.hpp"
+#include "scene/MachineMemory.hpp"
 #include "scene/SceneLoader.hpp"
 #include "tally/OrderTally.hpp"
 #include "tally/StandardTallies.hpp"
@@ -68,6 +70,13 @@ PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene) {
             std::make_unique<OrderTally>(options.bins, settings.transport.diffraction != DiffractionModel::None));
     }
     addDetectorTallies(prepared.tallies, scene, settings.transport.polarisation);
+    std::uint64_t records = 0;
+    for (const Detector& detector : scene.detectors) records += detector.record;
+    const TraceMemory need = estimateTraceMemory(prepared.tallies, settings, records);
+    if (const auto problem = traceMemoryProblem(need, static_cast<double>(availableMemoryBytes()))) {
+        throw BadInputError("dropscope: " + *problem +
+                            "; use fewer --threads, --bins, --wavelength-bins, --paths, detector pixels or records");
+    }
     return prepared;
 }
 

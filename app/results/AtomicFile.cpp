@@ -1,6 +1,9 @@
 #include "results/AtomicFile.hpp"
 
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
@@ -25,9 +28,14 @@ void writeTemporary(const FileToWrite& file) {
     }
     std::ofstream out(temporaryFor(file.target), std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error(file.target.string() + ": cannot write (does the folder exist?)");
+    errno = 0;
     file.write(out);
     out.flush();
-    if (!out) throw std::runtime_error(file.target.string() + ": write failed (disk full?)");
+    if (!out) {
+        // errno is the failed write's when the stream's last call set it: ENOSPC, EFBIG (ulimit -f), EDQUOT.
+        const std::string reason = errno != 0 ? std::strerror(errno) : "disk full?";
+        throw std::runtime_error(file.target.string() + ": write failed (" + reason + "); no file of this run written");
+    }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "geometry/Sphere.hpp"
 #include "scene/DropletCloud.hpp"
 #include "scene/JsonPath.hpp"
+#include "scene/MachineMemory.hpp"
 #include "scene/MediaReader.hpp"
 #include "scene/ShapeReader.hpp"
 
@@ -137,6 +138,16 @@ std::vector<Droplet> runDropletCloud(const JsonReader& json, const DropletCloudS
                   std::to_string(kMaxGeneratedDroplets) + "); use larger radii or a smaller region");
     }
     checkRadii(json, spec, radii);
+    // Refused before placing: a cloud the machine cannot hold would otherwise end in an allocation failure
+    // (or the kernel's OOM killer) minutes in.
+    const double need = static_cast<double>(scene.shapes.size() + radii.size()) * kGeneratedDropletBytes;
+    const auto available = static_cast<double>(availableMemoryBytes());
+    if (need > available) {
+        json.member(spec.count ? "count" : "volume_fraction")
+            .fail(std::to_string(radii.size()) + " droplets need about " + bytesText(need) + " to load (" +
+                  bytesText(kGeneratedDropletBytes) + " each, with the scene's other shapes), more than the " +
+                  bytesText(available) + " this machine has available (docs/limits.md)");
+    }
     std::vector<Droplet> droplets = placeDroplets(spec, radii, {scene.shapes, scene.explicitShapeCount});
     if (droplets.size() < radii.size()) {
         double volume = 0.0;

@@ -45,6 +45,19 @@ add_test(NAME cli_trace_interrupt
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/app/trace_interrupt.sh $<TARGET_FILE:dropscope>
                  ${PROJECT_SOURCE_DIR}/assets/scenes/cloud.json ${_trace_out}/interrupted)
 set_tests_properties(cli_trace_interrupt PROPERTIES TIMEOUT 30)
+# A disk that fills while writing (a file-size limit): whole files or none (file_size_limit.sh).
+add_test(NAME cli_outputs_under_file_size_limit
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/app/file_size_limit.sh $<TARGET_FILE:dropscope> ${_default_scene}
+                 ${_trace_out}/size-limited)
+set_tests_properties(cli_outputs_under_file_size_limit PROPERTIES TIMEOUT 60)
+# Runs beyond the memory a process may use are refused with their estimate (memory_limit.sh). AddressSanitizer
+# reserves terabytes of address space, so an address-space limit cannot be set on its build.
+if(NOT DROPSCOPE_SANITIZE)
+  add_test(NAME cli_memory_refused_up_front
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/app/memory_limit.sh $<TARGET_FILE:dropscope> ${_default_scene}
+                   ${_trace_out}/memory-limited)
+  set_tests_properties(cli_memory_refused_up_front PROPERTIES TIMEOUT 60)
+endif()
 unset(_trace_out)
 unset(_scenes)
 unset(_default_scene)

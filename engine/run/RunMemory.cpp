@@ -1,0 +1,33 @@
+#include "run/RunMemory.hpp"
+
+#include "scene/MachineMemory.hpp"
+#include "tally/DetectorTallies.hpp"
+#include "tally/ScoreBytes.hpp"
+
+#include <omp.h>
+
+namespace dropscope {
+
+TraceMemory estimateTraceMemory(const TallySet& tallies, const TraceSettings& settings, std::uint64_t records) {
+    TraceMemory need;
+    // An empty tally's scores are its counters, as the bytes ranks exchange: the size of one copy.
+    std::vector<std::byte> bytes;
+    ScoreWriter out(bytes);
+    tallies.emptyCopy().writeScores(out);
+    need.tallyBytes = static_cast<double>(bytes.size());
+    need.threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
+    need.pathBytes = static_cast<double>(std::min(settings.paths, settings.photons)) * kPathBytesEstimate;
+    const double recorded = static_cast<double>(std::min(records, settings.photons * 16));
+    need.recordBytes = recorded * static_cast<double>(sizeof(DetectorHit)) * (need.threads + 1);
+    return need;
+}
+
+std::optional<std::string> traceMemoryProblem(const TraceMemory& need, double availableBytes) {
+    if (!(need.total() > availableBytes)) return std::nullopt;
+    return "this trace needs about " + bytesText(need.total()) + " (tallies " + bytesText(need.tallyBytes) +
+           " per thread x " + std::to_string(need.threads) + " threads and the merged copy, paths " +
+           bytesText(need.pathBytes) + ", detector records " + bytesText(need.recordBytes) + "), more than the " +
+           bytesText(availableBytes) + " this machine has available (docs/limits.md)";
+}
+
+}  // namespace dropscope
