@@ -16,6 +16,7 @@ import json
 import math
 import numbers
 import os
+import warnings
 
 from ._build import PYTHON as _BUILT_FOR
 from ._build import PYTHON_VERSION as _BUILT_FOR_VERSION
@@ -37,6 +38,7 @@ __all__ = [
     "Scene",
     "SceneError",
     "TraceResult",
+    "LostPhotonsWarning",
     "MieResult",
     "load_scene",
     "scene_from_dict",
@@ -284,6 +286,10 @@ class TraceResult(_RunResult):
         return f"<dropscope.TraceResult: {summary['photons']} photons of {summary['scene']!r}>"
 
 
+class LostPhotonsWarning(RuntimeWarning):
+    """Issued by trace() when photons were lost; its text is summary.json's "lost_warning"."""
+
+
 def trace(scene, photons, seed=1, threads=0, bins=180, polarisation=None, diffraction="none",
           wavelength_bins=1, orders=False, paths=0, progress=None, fresnel="exact", max_events=10000):
     """Traces photons through the scene, as `dropscope trace` with the same options; returns a TraceResult.
@@ -307,8 +313,13 @@ def trace(scene, photons, seed=1, threads=0, bins=180, polarisation=None, diffra
     max_events = _whole("max_events", max_events, 1, 2**32 - 1)
     if progress is not None and not callable(progress):
         raise TypeError("progress: expected a callable progress(done, total)")
-    return TraceResult(_core.trace(core, photons, seed, threads, bins, polarisation, diffraction, wavelength_bins,
-                                   bool(orders), paths, progress, fresnel, max_events))
+    result = TraceResult(_core.trace(core, photons, seed, threads, bins, polarisation, diffraction, wavelength_bins,
+                                     bool(orders), paths, progress, fresnel, max_events))
+    lost = result.summary.get("lost_warning")
+    if lost:
+        # The CLI's stderr line (docs/limits.md, "No silent loss"); the numbers are in summary["first_lost"].
+        warnings.warn(lost, LostPhotonsWarning, stacklevel=2)
+    return result
 
 
 class MieResult(_RunResult):

@@ -267,3 +267,20 @@ def test_a_forked_child_traces_on_one_thread_instead_of_hanging(detector_scene_f
                           text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert "forked child traced on one thread" in done.stdout
+
+
+def test_lost_photons_are_warned_with_the_cli_line(tmp_path):
+    # docs/limits.md, "No silent loss": the same line as the CLI's stderr warning and summary.json.
+    scene = SOURCE_DIR / "tests" / "data" / "scenes" / "pencil_at_box_edge.json"
+    with pytest.warns(dropscope.LostPhotonsWarning) as caught:
+        result = dropscope.trace(dropscope.load_scene(scene), 2000, threads=2)
+    assert len(caught) == 1
+    assert str(caught[0].message) == result.summary["lost_warning"]
+    assert result.summary["first_lost"]["photon"] == 0
+    cli = run_cli("trace", str(scene), "--photons", "2000", "--out", str(tmp_path / "cli"))
+    assert cli.stderr == "dropscope: warning: " + str(caught[0].message) + "\n"
+
+
+def test_no_warning_without_loss(recwarn):
+    dropscope.trace(dropscope.load_scene(SOURCE_DIR / "assets" / "scenes" / "default.json"), 500)
+    assert not [w for w in recwarn if issubclass(w.category, dropscope.LostPhotonsWarning)]
