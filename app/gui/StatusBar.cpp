@@ -4,7 +4,29 @@
 
 #include <imgui.h>
 
+#include <string>
+
 namespace dropscope::gui {
+
+namespace {
+
+// Room for the scene's name and shape count at the right.
+constexpr float kRightColumnWidth = 260.0f;
+
+// `text` cut to fit `width` pixels, ending in "..." when cut (whole UTF-8 characters kept).
+std::string fitted(const std::string& text, float width) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+    std::size_t keep = text.size();
+    while (keep > 0) {
+        --keep;
+        while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;  // not mid-character
+        const std::string candidate = text.substr(0, keep) + "...";
+        if (ImGui::CalcTextSize(candidate.c_str()).x <= width) return candidate;
+    }
+    return "...";
+}
+
+}  // namespace
 
 void drawStatusBar(AppState& state) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -19,12 +41,22 @@ void drawStatusBar(AppState& state) {
         ImGui::SameLine();
     }
     const StatusLine& status = state.ui.status;
+    // A long message (a loss warning) is cut before the right column; hovering shows all of it.
+    const float room = display.x - kRightColumnWidth - ImGui::GetCursorPosX() - ImGui::GetStyle().ItemSpacing.x;
+    const std::string shown = fitted(status.text(), room);
     if (status.error()) {
-        ImGui::TextColored(kErrorColour, "%s", status.text().c_str());
+        ImGui::TextColored(kErrorColour, "%s", shown.c_str());
     } else {
-        ImGui::TextUnformatted(status.text().c_str());
+        ImGui::TextUnformatted(shown.c_str());
     }
-    ImGui::SameLine(display.x - 260.0f);
+    if (shown != status.text() && ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+        ImGui::TextUnformatted(status.text().c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
+    ImGui::SameLine(display.x - kRightColumnWidth);
     const std::filesystem::path& file = state.scene.file();
     ImGui::Text("%zu shapes  %s%s", state.scene.document().shapeCount(), state.placement.active ? "PLACING  " : "",
                 file.empty() ? "(unsaved scene)" : file.filename().c_str());
