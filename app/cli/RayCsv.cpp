@@ -1,5 +1,8 @@
 #include "cli/RayCsv.hpp"
 
+#include "scene/JsonPath.hpp"
+#include "scene/SceneLimits.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -59,7 +62,13 @@ CsvRay parseLine(std::string_view text, const std::string& origin, std::size_t l
         fail(origin, line, "expected 6 fields (" + std::string(kHeader) + "), got " + std::to_string(column));
     const Direction direction(values[3], values[4], values[5]);
     if (!direction) fail(origin, line, "direction (dx, dy, dz) is zero");
-    return {Point(values[0], values[1], values[2]), direction};
+    const Point rayOrigin(values[0], values[1], values[2]);
+    if (rayOrigin.cwiseAbs().maxCoeff() > kMaxCoordinate) {
+        fail(origin, line,
+             "origin (ox, oy, oz) beyond the limit " + jsonpath::number(kMaxCoordinate) +
+                 " on any coordinate (docs/limits.md)");
+    }
+    return {rayOrigin, direction};
 }
 
 // The common line, six numbers between single commas with nothing around them, read without splitting it
@@ -82,7 +91,9 @@ bool parsePlainLine(std::string_view text, CsvRay& ray) {
     }
     const Direction direction(values[3], values[4], values[5]);
     if (!direction) return false;
-    ray = {Point(values[0], values[1], values[2]), direction};
+    const Point start(values[0], values[1], values[2]);
+    if (start.cwiseAbs().maxCoeff() > kMaxCoordinate) return false;
+    ray = {start, direction};
     return true;
 }
 

@@ -65,6 +65,8 @@ TEST(RayCsv, ToCharsAndPrintfTextReadsBackExactly) {
             for (int column = 0; column < 6; ++column) {
                 double value = std::bit_cast<double>(rng());
                 if (!std::isfinite(value) || i % 2 == 0) value = normal(rng) * (column < 3 ? 10 : 1);
+                // Origins must lie within kMaxCoordinate (docs/limits.md): random mantissas, smaller exponents.
+                while (column < 3 && std::abs(value) > 1e100) value *= 1e-200;
                 values.push_back(value);
                 text += (format == 0 ? toChars(value) : printf17(value)) + (column < 5 ? "," : "\n");
             }
@@ -128,6 +130,10 @@ TEST(RayCsv, EveryErrorKeepsItsMessageAndLine) {
         {header + "1,2,3,1,0,-infinity\n", "rays.csv:2: field 6 is not finite"},
         {header + "1,2,3,0,0,0\n", "rays.csv:2: direction (dx, dy, dz) is zero"},
         {header + "1,2,3,0,0,-0\r\n", "rays.csv:2: direction (dx, dy, dz) is zero"},
+        {header + "1e101,0,0,1,0,0\n",
+         "rays.csv:2: origin (ox, oy, oz) beyond the limit 1e+100 on any coordinate (docs/limits.md)"},
+        {header + "0,-1e308,0,1,0,0\n",
+         "rays.csv:2: origin (ox, oy, oz) beyond the limit 1e+100 on any coordinate (docs/limits.md)"},
         {header + "1,2,3,0,0\n", "rays.csv:2: expected 6 fields (ox,oy,oz,dx,dy,dz), got 5"},
         {header + "1\n", "rays.csv:2: expected 6 fields (ox,oy,oz,dx,dy,dz), got 1"},
         {header + "1,2,3,0,0,1,7\n", "rays.csv:2: more than 6 fields"},
