@@ -88,6 +88,11 @@ TEST(SceneLimits, DistantSourceCountsInTheReach) {
               "coordinate (docs/limits.md)");
 }
 
+TEST(SceneLimits, ViewBeyondTheLimitNamesTheKey) {
+    EXPECT_EQ(sceneErrorOf(R"({"dropscope": 1, "view": {"eye": [1e300, 0, 0], "target": [0, 0, 0]}})"),
+              "scene.json: view.eye: beyond the limit 1e+100 on any coordinate (docs/limits.md)");
+}
+
 TEST(SceneLimits, GeneratedDropletsAreNamedByTheirGenerator) {
     // Droplets of radius 1e-3 in a region 1e5 from the origin pass the generator's own 1e-9 check, and the
     // ray source at 2e9 then breaks the scale limit.
