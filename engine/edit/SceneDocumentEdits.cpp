@@ -7,6 +7,7 @@
 #include "geometry/Sphere.hpp"
 #include "scene/GeneratorReader.hpp"
 #include "scene/JsonPath.hpp"
+#include "scene/MachineMemory.hpp"
 #include "scene/SceneOverlaps.hpp"
 #include "scene/WavelengthCoverage.hpp"
 
@@ -246,6 +247,13 @@ std::vector<ShapeId> SceneDocument::generateCloud(const DropletCloudSpec& spec, 
     const std::vector<double> radii = drawDropletRadii(spec, kMaxGeneratedDroplets);
     if (radii.empty()) return {};
     checkRadii(spec, radii);
+    const double need = static_cast<double>(shapeCount() + radii.size()) * kGeneratedDropletBytes;
+    const auto available = static_cast<double>(availableMemoryBytes());
+    if (need > available) {
+        refuse(std::to_string(radii.size()) + " droplets need about " + bytesText(need) + " (" +
+               bytesText(kGeneratedDropletBytes) + " each, with the scene's other shapes), more than the " +
+               bytesText(available) + " this machine has available (docs/limits.md)");
+    }
     // Every current shape near the region is an obstacle, with the scene's nesting rule (the loader's
     // "explicit" shapes): droplets may lie inside a box or a sphere.
     std::vector<std::unique_ptr<Shape>> obstacles;
