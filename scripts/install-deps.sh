@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config clang-format
+  clang-14 libclang-rt-14-dev libomp-14-dev  # the sanitizer build and its fuzzers (docs/fuzzing.md)
   libeigen3-dev libboost-math-dev nlohmann-json3-dev libcli11-dev librandom123-dev
   libhdf5-dev hdf5-tools python3-h5py
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest

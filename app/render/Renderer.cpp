@@ -285,7 +285,8 @@ void Renderer::setShapes(const ShapeInstances& instances) {
         }
     }
     decltype(meshes_) kept;
-    for (auto& [geometry, shapeInstances] : groups) {
+    for (auto& group : groups) {
+        const std::shared_ptr<const MeshGeometry>& geometry = group.first;  // named, not bound: a lambda captures it
         const auto old =
             std::find_if(meshes_.begin(), meshes_.end(), [&](const auto& m) { return m.first == geometry; });
         std::unique_ptr<Mesh> mesh;
@@ -295,7 +296,7 @@ void Renderer::setShapes(const ShapeInstances& instances) {
             mesh = std::make_unique<Mesh>(gl_);
             mesh->makeIndexed(*geometry);
         }
-        mesh->upload(shapeInstances);
+        mesh->upload(group.second);
         kept.emplace_back(geometry, std::move(mesh));
     }
     meshes_ = std::move(kept);  // the buffers of geometries no longer drawn are deleted here

@@ -88,16 +88,9 @@ std::shared_ptr<const ParametricSurface> readBezier(const JsonReader& json) {
     const std::string name = patchesJson.string();
     if (name.empty()) patchesJson.fail("must be the patches or the name of a file holding them, not \"\"");
     const std::filesystem::path file = resolveBeside(patchesJson, name);
-    const std::string origin = file.string();
     // An error in the patches file names that file and its own path, after this value's place.
     try {
-        const Json document = parseJsonDocument(readJsonFileText(file), origin);
-        const JsonReader root(document, "", origin);
-        root.expectObject();
-        root.expectKeys({"patches"});
-        const JsonReader filePatches = root.member("patches");
-        const auto patches = readPatches(filePatches);
-        return filePatches.construct([&] { return makeBezierSurface(patches); });
+        return parseBezierPatchesFile(readJsonFileText(file), file.string());
     } catch (const SceneError& error) {
         patchesJson.fail(std::string("in the patches file: ") + error.what());
     }
@@ -200,6 +193,16 @@ std::unique_ptr<Shape> readParametricShape(const JsonReader& json, BaseCache& ca
 std::unique_ptr<Shape> readImplicitShape(const JsonReader& json, BaseCache& cache) {
     const std::string preset = json.member("preset").string();
     return placeOnBase<ImplicitShape>(json, cache, "implicit", preset, readFunction(json, preset), makeImplicitBase);
+}
+
+std::shared_ptr<const ParametricSurface> parseBezierPatchesFile(std::string_view text, const std::string& origin) {
+    const Json document = parseJsonDocument(text, origin);
+    const JsonReader root(document, "", origin);
+    root.expectObject();
+    root.expectKeys({"patches"});
+    const JsonReader filePatches = root.member("patches");
+    const auto patches = readPatches(filePatches);
+    return filePatches.construct([&] { return makeBezierSurface(patches); });
 }
 
 }  // namespace dropscope

@@ -6,8 +6,11 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace dropscope {
+
+class ParametricSurface;
 
 // The bases read so far, by preset and parameters: shapes with equal presets share one base
 // (std::shared_ptr, seed 000 1.4), so its mesh, cover and integrals are computed once.
@@ -25,5 +28,9 @@ private:
 // it). A bezier's "patches" may name a JSON file {"patches": [...]}, relative to the scene file.
 std::unique_ptr<Shape> readParametricShape(const JsonReader& json, BaseCache& cache);
 std::unique_ptr<Shape> readImplicitShape(const JsonReader& json, BaseCache& cache);
+
+// The surface of a patches file's text, {"patches": [...]} (the file a bezier's "patches" names); `origin`
+// names it in messages. Throws SceneError.
+std::shared_ptr<const ParametricSurface> parseBezierPatchesFile(std::string_view text, const std::string& origin);
 
 }  // namespace dropscope

@@ -32,8 +32,15 @@ Eigen::AlignedBox3d readRegion(const JsonReader& json) {
     return readCorners(json);
 }
 
-// The optional truncation [min, max] of an unbounded distribution.
-std::pair<double, double> readTruncation(const JsonReader& json) {
+// The optional truncation [min, max] of an unbounded distribution. A struct, not a pair taken apart by a
+// structured binding: the lambdas below capture its members, which clang 14 (the sanitizer build) cannot do for
+// the names of a binding.
+struct Truncation {
+    double min;
+    double max;
+};
+
+Truncation readTruncation(const JsonReader& json) {
     const auto minJson = json.optionalMember("min");
     const auto maxJson = json.optionalMember("max");
     const double min = minJson ? minJson->nonNegative() : 0.0;
@@ -61,15 +68,17 @@ RadiusDistribution readRadiusDistribution(const JsonReader& json) {
         json.expectKeys({"distribution", "median", "sigma", "min", "max"});
         const double median = json.member("median").positive();
         const double sigma = json.member("sigma").nonNegative();
-        const auto [min, max] = readTruncation(json);
-        return json.construct([&] { return RadiusDistribution::lognormal(median, sigma, min, max); });
+        const Truncation truncation = readTruncation(json);
+        return json.construct(
+            [&] { return RadiusDistribution::lognormal(median, sigma, truncation.min, truncation.max); });
     }
     if (kind == "rosin_rammler") {
         json.expectKeys({"distribution", "scale", "shape", "min", "max"});
         const double scale = json.member("scale").positive();
         const double shape = json.member("shape").positive();
-        const auto [min, max] = readTruncation(json);
-        return json.construct([&] { return RadiusDistribution::rosinRammler(scale, shape, min, max); });
+        const Truncation truncation = readTruncation(json);
+        return json.construct(
+            [&] { return RadiusDistribution::rosinRammler(scale, shape, truncation.min, truncation.max); });
     }
     kindJson.fail("unknown distribution " + jsonpath::quoted(kind) +
                   " (known: fixed, uniform, lognormal, rosin_rammler)");

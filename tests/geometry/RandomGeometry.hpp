@@ -17,35 +17,47 @@ using Rng = std::mt19937_64;
 
 inline double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
+// The order in which a call's arguments are evaluated is the compiler's (GCC right to left, clang left to right):
+// draws that feed one call are made one statement each, z first, so every compiler builds the cases GCC did.
 inline Point randomPoint(Rng& rng, double halfWidth, const Point& center = Point::Zero()) {
-    return center + Point(uniform(rng, -halfWidth, halfWidth), uniform(rng, -halfWidth, halfWidth),
-                          uniform(rng, -halfWidth, halfWidth));
+    const double z = uniform(rng, -halfWidth, halfWidth);
+    const double y = uniform(rng, -halfWidth, halfWidth);
+    const double x = uniform(rng, -halfWidth, halfWidth);
+    return center + Point(x, y, z);
 }
 
 // Uniform on the unit sphere.
 inline Direction randomDirection(Rng& rng) {
     std::normal_distribution<double> normal;
-    return Direction(normal(rng), normal(rng), normal(rng));
+    const double z = normal(rng);
+    const double y = normal(rng);
+    const double x = normal(rng);
+    return Direction(x, y, z);
 }
 
 inline Eigen::Matrix3d randomRotation(Rng& rng) {
-    return rotationAboutAxis(randomDirection(rng), uniform(rng, 0.0, 2.0 * std::numbers::pi));
+    const double angle = uniform(rng, 0.0, 2.0 * std::numbers::pi);
+    return rotationAboutAxis(randomDirection(rng), angle);
 }
 
 inline Sphere randomSphere(Rng& rng, const Point& around, double size) {
-    return Sphere(randomPoint(rng, size, around), uniform(rng, 0.2, 1.0) * size);
+    const double radius = uniform(rng, 0.2, 1.0) * size;
+    return Sphere(randomPoint(rng, size, around), radius);
 }
 
 inline Ellipsoid randomEllipsoid(Rng& rng, const Point& around, double size) {
-    const Eigen::Vector3d semiAxes(uniform(rng, 0.2, 1.0) * size, uniform(rng, 0.2, 1.0) * size,
-                                   uniform(rng, 0.2, 1.0) * size);
-    return Ellipsoid::fromSemiAxes(randomPoint(rng, size, around), semiAxes, randomRotation(rng));
+    const double semiAxisZ = uniform(rng, 0.2, 1.0) * size;
+    const double semiAxisY = uniform(rng, 0.2, 1.0) * size;
+    const Eigen::Vector3d semiAxes(uniform(rng, 0.2, 1.0) * size, semiAxisY, semiAxisZ);
+    const Eigen::Matrix3d rotation = randomRotation(rng);
+    return Ellipsoid::fromSemiAxes(randomPoint(rng, size, around), semiAxes, rotation);
 }
 
 inline Box randomBox(Rng& rng, const Point& around, double size) {
     const Point lower = randomPoint(rng, size, around);
-    const Eigen::Vector3d edges(uniform(rng, 0.2, 2.0) * size, uniform(rng, 0.2, 2.0) * size,
-                                uniform(rng, 0.2, 2.0) * size);
+    const double edgeZ = uniform(rng, 0.2, 2.0) * size;
+    const double edgeY = uniform(rng, 0.2, 2.0) * size;
+    const Eigen::Vector3d edges(uniform(rng, 0.2, 2.0) * size, edgeY, edgeZ);
     return Box(lower, lower + edges);
 }
 

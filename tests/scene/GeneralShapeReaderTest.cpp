@@ -1,6 +1,7 @@
 // "type": "parametric" / "implicit" in scene files: presets, "transform", shared bases, errors.
 #include "geometry/implicit/ImplicitShape.hpp"
 #include "geometry/parametric/ParametricShape.hpp"
+#include "scene/GeneralShapeReader.hpp"
 #include "scene/SceneLoader.hpp"
 #include "scene/SceneTestSupport.hpp"
 #include "scene/SceneWriter.hpp"
@@ -8,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 namespace dropscope {
@@ -90,6 +93,22 @@ TEST(GeneralShapeReader, ReadsBezierPatchesFromAnAssetFile) {
     const auto& b = static_cast<const GeneralShape&>(*reloaded.shapes[0]);
     EXPECT_TRUE(a.presetParameters() == b.presetParameters());
     EXPECT_EQ(a.volume(), b.volume());
+}
+
+TEST(GeneralShapeReader, ReadsAPatchesFileFromItsText) {
+    // The text entry point the fuzzer drives (tests/fuzz) reads the asset as the scene's "patches" does.
+    std::ifstream in(kSourceDir + "/assets/shapes/flattened_droplet.json");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(text.empty());
+    EXPECT_EQ(parseBezierPatchesFile(text, "patches.json")->presetName(), "bezier");
+    try {
+        parseBezierPatchesFile(R"({"patches": [], "scale": 2})", "patches.json");
+        ADD_FAILURE() << "an unknown key was accepted";
+    } catch (const SceneError& error) {
+        const std::string message = error.what();
+        EXPECT_EQ(message.rfind("patches.json: ", 0), 0u) << message;
+        EXPECT_NE(message.find(R"(unknown key "scale")"), std::string::npos) << message;
+    }
 }
 
 TEST(GeneralShapeReader, ErrorsNameTheValue) {

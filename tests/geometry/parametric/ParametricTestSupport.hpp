@@ -45,7 +45,9 @@ inline Eigen::Matrix3d randomMatrix(Rng& rng, bool reflect, RandomMatrixDraws dr
     shear(0, 1) = uniform(rng, -0.4, 0.4);
     shear(1, 2) = uniform(rng, -0.4, 0.4);
     if (draws.shearXZ) shear(0, 2) = uniform(rng, -0.4, 0.4);
-    const Eigen::Vector3d scale(uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0));
+    const double scaleZ = uniform(rng, 0.5, 2.0);  // one draw a statement (RandomGeometry.hpp)
+    const double scaleY = uniform(rng, 0.5, 2.0);
+    const Eigen::Vector3d scale(uniform(rng, 0.5, 2.0), scaleY, scaleZ);
     Eigen::Matrix3d m = randomRotation(rng) * scale.asDiagonal() * shear;
     if (reflect) m.col(draws.reflectedColumn) *= -1.0;
     return m;
