@@ -153,10 +153,21 @@ std::string readJsonFileText(const std::filesystem::path& file) {
     if (std::filesystem::is_directory(file, status)) throw SceneError(origin, "", "is a directory, not a scene file");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw SceneError(origin, "", "cannot open: " + std::generic_category().message(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
+    // Read in blocks up to the limit: a device such as /dev/zero, or a runaway pipe, would otherwise be read
+    // until memory runs out.
+    std::string text;
+    std::vector<char> block(std::size_t{1} << 20);
+    while (in) {
+        in.read(block.data(), static_cast<std::streamsize>(block.size()));
+        if (text.size() + static_cast<std::size_t>(in.gcount()) > kMaxJsonFileBytes) {
+            throw SceneError(origin, "",
+                             "larger than " + std::to_string(kMaxJsonFileBytes >> 20) +
+                                 " MiB, the most a scene or patches file may be (docs/limits.md)");
+        }
+        text.append(block.data(), static_cast<std::size_t>(in.gcount()));
+    }
     if (in.bad()) throw SceneError(origin, "", "cannot read: " + std::generic_category().message(errno));
-    return text.str();
+    return text;
 }
 
 }  // namespace dropscope

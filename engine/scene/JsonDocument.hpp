@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <filesystem>
 
 #include <string>
@@ -17,8 +18,12 @@ using Json = nlohmann::ordered_json;
 //   "ORIGIN: PATH: duplicate key \"k\""           for a key given twice in one object.
 Json parseJsonDocument(std::string_view text, const std::string& origin);
 
+// The largest scene or patches file read: 1 GiB, some 8 million explicit shapes (a droplet cloud is a
+// generator of a few lines).
+inline constexpr std::size_t kMaxJsonFileBytes = std::size_t{1} << 30;
+
 // The whole text of a file. Throws SceneError ("FILE: no such file", "is a directory, not a scene file",
-// "cannot open: ...", "cannot read: ...").
+// "cannot open: ...", "cannot read: ...", "larger than 1024 MiB, ...").
 std::string readJsonFileText(const std::filesystem::path& file);
 
 }  // namespace dropscope
