@@ -4,16 +4,7 @@
 # the run is whole or absent. trace (with paths.jsonl larger than the limit), snapshot and query each exit 2
 # with one line naming the file and the reason, leave no temporary file and no output; the folder trace
 # created is gone again. An earlier run's files in a folder are left as they were.
-set -euo pipefail
-program=$1
-scene=$2
-out=$3
-
-fail() {
-    echo "FAIL: $*" >&2
-    [[ -f "$out.stderr" ]] && sed 's/^/  stderr: /' "$out.stderr" >&2
-    exit 1
-}
+source "$(dirname "${BASH_SOURCE[0]}")/cli_script_support.sh"
 
 # Runs "$@" with files limited to 64 KiB (ulimit -f counts 1024-byte blocks) and checks a clean refusal.
 limited() {

@@ -3,16 +3,7 @@
 # Runs too big for the memory a process may use (here an address-space limit, ulimit -v, as a batch system
 # sets one) are refused before they start, with their estimate: exit 2, one line, no output folder
 # (docs/limits.md, "Memory"). Not run under AddressSanitizer, which needs far more address space than it uses.
-set -euo pipefail
-program=$1
-scene=$2
-out=$3
-
-fail() {
-    echo "FAIL: $*" >&2
-    [[ -f "$out.stderr" ]] && sed 's/^/  stderr: /' "$out.stderr" >&2
-    exit 1
-}
+source "$(dirname "${BASH_SOURCE[0]}")/cli_script_support.sh"
 
 refused() {
     local pattern=$1

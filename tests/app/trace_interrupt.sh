@@ -3,16 +3,7 @@
 # Ctrl-C on a long `dropscope trace`: starts a run far too long to finish, sends SIGINT once it has
 # traced for about a second, and checks the clean stop: exit status 130, one line on stderr, all three
 # files written, and summary.json marked partial with 0 < photons < photons_requested.
-set -euo pipefail
-program=$1
-scene=$2
-out=$3
-
-fail() {
-    echo "FAIL: $*" >&2
-    [[ -f "$out.stderr" ]] && sed 's/^/  stderr: /' "$out.stderr" >&2
-    exit 1
-}
+source "$(dirname "${BASH_SOURCE[0]}")/cli_script_support.sh"
 
 rm -rf "$out" "$out.stdout" "$out.stderr"
 # Job control: the background job gets its own process group and, unlike a plain `&` job of a
