@@ -16,6 +16,8 @@ inline constexpr double kMaxFuzzedDroplets = 20'000;  // assets/scenes/cloud.jso
 // the loader sets no limit on them. A text with more than kMaxFuzzedImplicitTerms in all is skipped.
 inline constexpr double kMaxFuzzedImplicitTerms = 6;  // tests/data/scenes/general_shapes.json has 3
 
+// A text naming a file under /dev/ or /proc/ is skipped too: a device is read up to the loader's 1 GiB limit.
+//
 // False when `sceneText` is JSON that by those estimates is slow by design. What it cannot estimate (a missing or
 // non-numeric field) passes: the loader refuses it before the slow part.
 bool withinInputBudget(std::string_view sceneText);
