@@ -182,7 +182,8 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
     ranks.together([&] { prepareTraceSetup(options, ranks.root(), setup); });
     ranks.together([&] {
         if (!ranks.root()) return;
-        setup.createdOutput = !fs::exists(directory);
+        std::error_code unknown;  // createOutputDirectory reports a path that cannot be used
+        setup.createdOutput = !fs::exists(directory, unknown);
         createOutputDirectory(directory);
     });
     const Scene& scene = setup.scene;

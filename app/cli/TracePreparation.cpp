@@ -8,6 +8,7 @@
 #include "tally/OrderTally.hpp"
 #include "tally/StandardTallies.hpp"
 
+#include <cmath>
 #include <string>
 
 namespace dropscope {
@@ -44,6 +45,10 @@ TraceSettings traceSettings(const TraceOptions& options) {
 
 TraceSettings checkedTraceSettings(const TraceOptions& options) {
     TraceSettings settings = traceSettings(options);  // refuses --polarisation stokes with Schlick first
+    // CLI11's range check reads "nan" and lets it through; NaN would then never be exceeded.
+    if (options.maxLost && !std::isfinite(*options.maxLost)) {
+        throw BadInputError("--max-lost: must be a number from 0 to 1, not " + std::to_string(*options.maxLost));
+    }
     if (static_cast<std::uint64_t>(options.bins) * static_cast<std::uint64_t>(options.wavelengthBins) >
         kMaxSpectralCells) {
         throw BadInputError("--bins " + std::to_string(options.bins) + " with --wavelength-bins " +

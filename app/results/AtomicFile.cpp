@@ -30,7 +30,7 @@ void writeTemporary(const FileToWrite& file) {
     if (!out) throw std::runtime_error(file.target.string() + ": cannot write (does the folder exist?)");
     errno = 0;
     file.write(out);
-    out.flush();
+    out.close();  // a full disk or quota may show only when the last block is written, at close
     if (!out) {
         // errno is the failed write's when the stream's last call set it: ENOSPC, EFBIG (ulimit -f), EDQUOT.
         const std::string reason = errno != 0 ? std::strerror(errno) : "disk full?";

@@ -179,8 +179,11 @@ private:
     Medium checkedMedium(const Medium& medium, std::optional<MediumId> replacing) const;
     std::optional<std::string> overlapOf(const Shape& shape, std::optional<ShapeId> ignore) const;
     // Refuses a scene whose reach over its smallest feature breaks kMaxScaleRatio (docs/limits.md): the live
-    // shapes with `shape` in place of `replacing` (or added), and the sources and detectors of `properties`.
-    void checkScale(const Shape* shape, std::optional<ShapeId> replacing, const Properties& properties) const;
+    // shapes with what an edit adds (`added`, named `what` in the message) in place of `replacing`, and the
+    // sources and detectors of `properties`.
+    void checkScale(const ScaleExtremes& added, const std::string& what, std::optional<ShapeId> replacing,
+                    const Properties& properties) const;
+    void checkScale(const Shape& shape, std::optional<ShapeId> replacing) const;
     std::string modifyLabel(ShapeId id, const Shape& before, const Shape& after) const;
 
     Octree octree_;

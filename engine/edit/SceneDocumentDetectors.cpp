@@ -42,7 +42,7 @@ void SceneDocument::commitDetectors(std::string label, std::vector<Detector> det
     checkDetectors(detectors);
     Properties after = properties();
     after.detectors = std::move(detectors);
-    checkScale(nullptr, std::nullopt, after);
+    checkScale(ScaleExtremes{}, "the detectors", std::nullopt, after);
     if (mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Detectors) {
         setProperties(after);
         undo_.back().after = std::move(after);

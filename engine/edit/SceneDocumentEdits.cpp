@@ -49,6 +49,10 @@ bool isMove(const Shape& before, const Shape& after) {
 void checkCloudSpec(const DropletCloudSpec& spec) {
     const Eigen::AlignedBox3d& region = spec.region;
     if (!region.min().allFinite() || !region.max().allFinite()) refuse("the region's corners must be finite");
+    if (std::max(region.min().cwiseAbs().maxCoeff(), region.max().cwiseAbs().maxCoeff()) > kMaxCoordinate) {
+        refuse("the region's corners are beyond the limit " + jsonpath::number(kMaxCoordinate) +
+               " on any coordinate (docs/limits.md)");
+    }
     for (Eigen::Index axis = 0; axis < 3; ++axis) {
         if (!(region.min()[axis] < region.max()[axis])) {
             refuse("the region's max must be > min on every axis (" + std::string(1, "xyz"[axis]) + ": max " +
@@ -104,15 +108,15 @@ std::unique_ptr<Shape> SceneDocument::shapeFor(const ShapeSpec& spec) const {
     return shape;
 }
 
-void SceneDocument::checkScale(const Shape* shape, std::optional<ShapeId> replacing,
+void SceneDocument::checkScale(const ScaleExtremes& added, const std::string& what, std::optional<ShapeId> replacing,
                                const Properties& properties) const {
     ScaleExtremes bound = seen_;
-    if (shape) bound.add(*shape);
+    bound.reach = std::max(bound.reach, added.reach);
+    bound.feature = std::min(bound.feature, added.feature);
     for (const Source& source : properties.sources) bound.add(source);
     for (const Detector& detector : properties.detectors) bound.add(detector);
     if (bound.withinLimit()) return;
-    ScaleExtremes exact;
-    if (shape) exact.add(*shape);
+    ScaleExtremes exact = added;
     for (ShapeId id = 0; id < octree_.slotCount(); ++id) {
         const Shape* live = octree_.shape(id);
         if (live && id != replacing) exact.add(*live);
@@ -120,8 +124,18 @@ void SceneDocument::checkScale(const Shape* shape, std::optional<ShapeId> replac
     for (const Source& source : properties.sources) exact.add(source);
     for (const Detector& detector : properties.detectors) exact.add(detector);
     if (exact.withinLimit()) return;
-    refuse((shape ? shapeTypeLabel(*shape) : std::string("the scene")) + ": " +
-           scaleLimitMessage(exact.feature, exact.reach, rest_.unit, "its farthest shape, source or detector"));
+    // Name the edit's own part where it is the extreme one.
+    const bool finest = exact.feature == added.feature;
+    const bool farthest = exact.reach == added.reach;
+    refuse((finest ? what : "the scene's smallest shape") + ": " +
+           scaleLimitMessage(exact.feature, exact.reach, rest_.unit,
+                             farthest ? "this " + what : "its farthest shape, source or detector"));
+}
+
+void SceneDocument::checkScale(const Shape& shape, std::optional<ShapeId> replacing) const {
+    ScaleExtremes added;
+    added.add(shape);
+    checkScale(added, shapeTypeLabel(shape), replacing, properties());
 }
 
 void SceneDocument::checkName(const std::string& name, std::optional<ShapeId> owner) const {
@@ -189,7 +203,7 @@ ShapeId SceneDocument::addShape(const ShapeSpec& spec, const std::string& name) 
     std::unique_ptr<Shape> shape = shapeFor(spec);
     checkName(name, std::nullopt);
     if (const auto overlap = overlapOf(*shape, std::nullopt)) refuse(*overlap);
-    checkScale(shape.get(), std::nullopt, properties());
+    checkScale(*shape, std::nullopt);
     const auto id = static_cast<ShapeId>(octree_.slotCount());
     Step step;
     step.label = withName("add " + shapeTypeLabel(*shape), name);
@@ -214,7 +228,7 @@ void SceneDocument::modifyShape(ShapeId id, const ShapeSpec& spec, bool mergeWit
     const Shape& current = liveShape(id);
     std::unique_ptr<Shape> shape = shapeFor(spec);
     if (const auto overlap = overlapOf(*shape, id)) refuse(*overlap);
-    checkScale(shape.get(), id, properties());
+    checkScale(*shape, id);
     const bool merge = mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Modify &&
                        undo_.back().shapes.front().id == id;
     if (merge) {
@@ -247,6 +261,19 @@ std::vector<ShapeId> SceneDocument::generateCloud(const DropletCloudSpec& spec, 
     const std::vector<double> radii = drawDropletRadii(spec, kMaxGeneratedDroplets);
     if (radii.empty()) return {};
     checkRadii(spec, radii);
+    // The loader's limits, which the droplets would otherwise meet only when the saved scene is read again:
+    // the largest droplet's volume, the smallest's size, and the scale of the scene with the cloud in it.
+    if (!std::isfinite(sphereVolume(radii.front()))) {
+        refuse("a droplet of radius " + roughly(radii.front()) + " has an infinite volume (docs/limits.md)");
+    }
+    if (radii.back() < kMinFeature) {
+        refuse("a droplet of radius " + roughly(radii.back()) + " is below the limit " + roughly(kMinFeature) +
+               " (docs/limits.md)");
+    }
+    ScaleExtremes cloud;
+    cloud.reach = std::max(spec.region.min().cwiseAbs().maxCoeff(), spec.region.max().cwiseAbs().maxCoeff());
+    cloud.feature = radii.back();
+    checkScale(cloud, "the cloud", std::nullopt, properties());
     const double need = static_cast<double>(shapeCount() + radii.size()) * kGeneratedDropletBytes;
     const auto available = static_cast<double>(availableMemoryBytes());
     if (need > available) {
@@ -337,7 +364,7 @@ void SceneDocument::setSources(std::vector<Source> sources, bool mergeWithPrevio
     Properties after = properties();
     after.sources = std::move(sources);
     checkWavelengths(after);
-    checkScale(nullptr, std::nullopt, after);
+    checkScale(ScaleExtremes{}, "the sources", std::nullopt, after);
     if (mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Sources) {
         setProperties(after);
         undo_.back().after = std::move(after);

@@ -17,7 +17,8 @@ TraceMemory estimateTraceMemory(const TallySet& tallies, const TraceSettings& se
     need.tallyBytes = static_cast<double>(bytes.size());
     need.threads = settings.threads > 0 ? settings.threads : omp_get_max_threads();
     need.pathBytes = static_cast<double>(std::min(settings.paths, settings.photons)) * kPathBytesEstimate;
-    const double recorded = static_cast<double>(std::min(records, settings.photons * 16));
+    // In doubles: photons * 16 would wrap around for --photons near 2^64.
+    const double recorded = std::min(static_cast<double>(records), static_cast<double>(settings.photons) * 16.0);
     need.recordBytes = recorded * static_cast<double>(sizeof(DetectorHit)) * (need.threads + 1);
     return need;
 }
@@ -25,7 +26,7 @@ TraceMemory estimateTraceMemory(const TallySet& tallies, const TraceSettings& se
 std::optional<std::string> traceMemoryProblem(const TraceMemory& need, double availableBytes) {
     if (!(need.total() > availableBytes)) return std::nullopt;
     return "this trace needs about " + bytesText(need.total()) + " (tallies " + bytesText(need.tallyBytes) +
-           " per thread x " + std::to_string(need.threads) + " threads and the merged copy, paths " +
+           " per thread x " + std::to_string(need.threads) + " threads and two more copies, paths " +
            bytesText(need.pathBytes) + ", detector records " + bytesText(need.recordBytes) + "), more than the " +
            bytesText(availableBytes) + " this machine has available (docs/limits.md)";
 }

@@ -8,14 +8,15 @@
 
 namespace dropscope {
 
-// What a trace will allocate beyond the scene (docs/limits.md, "Memory"): a copy of the tallies per thread and
-// the merged one, the recorded paths, and the detectors' records (each thread keeps its own first ones).
+// What a trace will allocate beyond the scene (docs/limits.md, "Memory"), in one process: a copy of the
+// tallies per thread, the prepared (empty) set and the merged one, the recorded paths, and the detectors'
+// records (each thread keeps its own first ones).
 struct TraceMemory {
     double tallyBytes = 0.0;  // one copy of the tallies
     int threads = 1;
     double pathBytes = 0.0;
     double recordBytes = 0.0;
-    double total() const { return tallyBytes * (threads + 1) + pathBytes + recordBytes; }
+    double total() const { return tallyBytes * (threads + 2) + pathBytes + recordBytes; }
 };
 
 // Bytes a recorded path is estimated at: room for 16 events (a vector grown by doubling past 8 to 15 events,

@@ -177,8 +177,13 @@ Scene parseScene(std::string_view jsonText, const std::string& origin) {
     // Only the explicit shapes need the pairwise check; generated droplets avoid everything by construction.
     checkShapesDisjoint(scene);
     scene.explicitShapeCount = scene.shapes.size();
-    if (const auto generators = root.optionalMember("generators")) readGenerators(*generators, scene);
+    // Before and after the generators: a scale problem of the explicit shapes is said before placing up to
+    // 1e7 droplets.
     checkSceneScale(scene);
+    if (const auto generators = root.optionalMember("generators")) {
+        readGenerators(*generators, scene);
+        checkSceneScale(scene);
+    }
     return scene;
 }
 

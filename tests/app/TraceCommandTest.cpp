@@ -206,6 +206,25 @@ TEST_F(TraceCommand, MaxLostExitsFourAfterWritingEveryFile) {
     EXPECT_EQ(within.err, kEdgeWarning);
     test::expectOneLineFailure(trace(kEdgeScene, "2000", {"--max-lost", "1.5"}, "bad"));
     EXPECT_FALSE(fs::exists(dir_ / "bad"));
+    const CliRun nan = trace(kEdgeScene, "2000", {"--max-lost", "nan"}, "bad");  // would never be exceeded
+    test::expectOneLineFailure(nan);
+    EXPECT_EQ(nan.err.rfind("--max-lost: must be a number from 0 to 1", 0), 0u) << nan.err;
+    EXPECT_FALSE(fs::exists(dir_ / "bad"));
+}
+
+// The first lost photon is the lowest index whatever the threads: the summary is the same on 1 and 3 threads.
+TEST_F(TraceCommand, TheLossSummaryIsTheSameForAnyThreadCount) {
+    ASSERT_EQ(trace(kEdgeScene, "3001", {"--threads", "1"}, "one").status, kExitSuccess);
+    ASSERT_EQ(trace(kEdgeScene, "3001", {"--threads", "3"}, "three").status, kExitSuccess);
+    Json one = summary("one");
+    Json three = summary("three");
+    for (Json* s : {&one, &three}) {
+        s->erase("seconds");
+        s->erase("threads");
+    }
+    EXPECT_EQ(one, three);
+    EXPECT_EQ(one["first_lost"]["photon"], 0);
+    EXPECT_EQ(one["counts"]["lost"], 1501);
 }
 
 TEST_F(TraceCommand, CountsAddUpAndFractionsAreTheirShares) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # file_size_limit.sh DROPSCOPE SCENE OUT
 # A disk that fills while a run writes, made with a file-size limit (ulimit -f, RLIMIT_FSIZE): every output of
-# the run is whole or absent. trace (with paths.jsonl larger than the limit), snapshot and query each exit 2
+# the run is whole or absent. trace (with paths.jsonl larger than the limit) and snapshot each exit 2
 # with one line naming the file and the reason, leave no temporary file and no output; the folder trace
 # created is gone again. An earlier run's files in a folder are left as they were.
 source "$(dirname "${BASH_SOURCE[0]}")/cli_script_support.sh"

@@ -263,5 +263,26 @@ TEST(SceneDocument, EditsBeyondTheLimitsAreRefused) {
     EXPECT_EQ(refusalOf([&] { document.addShape(sphereAt(Point(-3, -3, 0), 1e-3)); }), "accepted");
 }
 
+// A droplet cloud generated in the app meets the loader's limits now, not when the saved scene is read again.
+TEST(SceneDocument, CloudsBeyondTheLimitsAreRefused) {
+    SceneDocument document(smallScene());
+    const Snapshot before(document);
+    DropletCloudSpec spec;
+    spec.count = 10;
+    // Inside droplet d1, so the region's own scale (1e-3) lets radii down to 1e-12 through (the generator's 1e-9):
+    // 2e-12 is 5e12 times below the scene's reach of 10.
+    spec.region = Eigen::AlignedBox3d(Point(0, 0, 0), Point(1e-3, 1e-3, 1e-3));
+    spec.radius = RadiusDistribution::fixed(2e-12);
+    EXPECT_EQ(refusalOf([&] { document.generateCloud(spec, 1); }),
+              "the cloud: its smallest feature (3 volume / area) 2e-12 mm is 5e+12 times smaller than the scene's "
+              "reach 10 mm (its farthest shape, source or detector); the limit is 1e+12, beyond which double "
+              "precision cannot tell its surface from its inside (docs/limits.md)");
+    spec.region = Eigen::AlignedBox3d(Point(1e120, 0, 0), Point(2e120, 1e120, 1e120));
+    spec.radius = RadiusDistribution::fixed(1e115);
+    EXPECT_EQ(refusalOf([&] { document.generateCloud(spec, 1); }),
+              "the region's corners are beyond the limit 1e+100 on any coordinate (docs/limits.md)");
+    EXPECT_EQ(Snapshot(document), before);
+}
+
 }  // namespace
 }  // namespace dropscope

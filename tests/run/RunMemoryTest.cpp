@@ -27,7 +27,7 @@ TEST(RunMemory, CountsATallyCopyPerThreadAndTheMergedOnePathsAndRecords) {
     EXPECT_EQ(need.threads, 3);
     EXPECT_EQ(need.pathBytes, 1000 * kPathBytesEstimate);
     EXPECT_EQ(need.recordBytes, 16'000.0 * sizeof(DetectorHit) * 4);  // at most 16 hits per photon, per copy
-    EXPECT_EQ(need.total(), 4 * need.tallyBytes + need.pathBytes + need.recordBytes);
+    EXPECT_EQ(need.total(), 5 * need.tallyBytes + need.pathBytes + need.recordBytes);
 }
 
 TEST(RunMemory, RefusesOnlyWhatDoesNotFit) {
@@ -35,10 +35,15 @@ TEST(RunMemory, RefusesOnlyWhatDoesNotFit) {
     need.tallyBytes = 2e9;
     need.threads = 2;
     need.pathBytes = 1e9;
-    EXPECT_FALSE(traceMemoryProblem(need, 7e9).has_value());
-    EXPECT_EQ(traceMemoryProblem(need, 6.5e9).value_or("none"),
-              "this trace needs about 7 GB (tallies 2 GB per thread x 2 threads and the merged copy, paths 1 GB, "
-              "detector records 0 bytes), more than the 6.5 GB this machine has available (docs/limits.md)");
+    EXPECT_FALSE(traceMemoryProblem(need, 9e9).has_value());
+    EXPECT_EQ(traceMemoryProblem(need, 8.5e9).value_or("none"),
+              "this trace needs about 9 GB (tallies 2 GB per thread x 2 threads and two more copies, paths 1 GB, "
+              "detector records 0 bytes), more than the 8.5 GB this machine has available (docs/limits.md)");
+    // --photons near 2^64: the records' cap of 16 per photon must not wrap around.
+    TraceSettings huge;
+    huge.photons = std::uint64_t{1} << 62;
+    huge.threads = 1;
+    EXPECT_EQ(estimateTraceMemory(TallySet{}, huge, 10'000'000).recordBytes, 1e7 * sizeof(DetectorHit) * 2);
 }
 
 }  // namespace
