@@ -63,11 +63,7 @@ CsvRay parseLine(std::string_view text, const std::string& origin, std::size_t l
     const Direction direction(values[3], values[4], values[5]);
     if (!direction) fail(origin, line, "direction (dx, dy, dz) is zero");
     const Point rayOrigin(values[0], values[1], values[2]);
-    if (rayOrigin.cwiseAbs().maxCoeff() > kMaxCoordinate) {
-        fail(origin, line,
-             "origin (ox, oy, oz) beyond the limit " + jsonpath::number(kMaxCoordinate) +
-                 " on any coordinate (docs/limits.md)");
-    }
+    if (!withinCoordinateLimit(rayOrigin)) fail(origin, line, "origin (ox, oy, oz) " + beyondCoordinateLimit());
     return {rayOrigin, direction};
 }
 
@@ -92,7 +88,7 @@ bool parsePlainLine(std::string_view text, CsvRay& ray) {
     const Direction direction(values[3], values[4], values[5]);
     if (!direction) return false;
     const Point start(values[0], values[1], values[2]);
-    if (start.cwiseAbs().maxCoeff() > kMaxCoordinate) return false;
+    if (!withinCoordinateLimit(start)) return false;
     ray = {start, direction};
     return true;
 }

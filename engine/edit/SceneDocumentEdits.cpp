@@ -49,9 +49,8 @@ bool isMove(const Shape& before, const Shape& after) {
 void checkCloudSpec(const DropletCloudSpec& spec) {
     const Eigen::AlignedBox3d& region = spec.region;
     if (!region.min().allFinite() || !region.max().allFinite()) refuse("the region's corners must be finite");
-    if (std::max(region.min().cwiseAbs().maxCoeff(), region.max().cwiseAbs().maxCoeff()) > kMaxCoordinate) {
-        refuse("the region's corners are beyond the limit " + jsonpath::number(kMaxCoordinate) +
-               " on any coordinate (docs/limits.md)");
+    if (!withinCoordinateLimit(region.min()) || !withinCoordinateLimit(region.max())) {
+        refuse("the region's corners are " + beyondCoordinateLimit());
     }
     for (Eigen::Index axis = 0; axis < 3; ++axis) {
         if (!(region.min()[axis] < region.max()[axis])) {
@@ -79,9 +78,7 @@ void checkRadii(const DropletCloudSpec& spec, const std::vector<double>& radii) 
         refuse("a droplet of radius " + roughly(radii.front()) + " does not fit in the region (its smallest side is " +
                jsonpath::number(sides.minCoeff()) + ")");
     }
-    const double largestCoordinate =
-        std::max(spec.region.min().cwiseAbs().maxCoeff(), spec.region.max().cwiseAbs().maxCoeff());
-    if (radii.back() < kMinDropletRadiusRelative * std::max(sides.maxCoeff(), largestCoordinate)) {
+    if (radii.back() < kMinDropletRadiusRelative * std::max(sides.maxCoeff(), largestCoordinate(spec.region))) {
         refuse("a droplet of radius " + roughly(radii.back()) + " is too small for the region");
     }
 }
@@ -271,16 +268,10 @@ std::vector<ShapeId> SceneDocument::generateCloud(const DropletCloudSpec& spec, 
                " (docs/limits.md)");
     }
     ScaleExtremes cloud;
-    cloud.reach = std::max(spec.region.min().cwiseAbs().maxCoeff(), spec.region.max().cwiseAbs().maxCoeff());
+    cloud.reach = largestCoordinate(spec.region);
     cloud.feature = radii.back();
     checkScale(cloud, "the cloud", std::nullopt, properties());
-    const double need = static_cast<double>(shapeCount() + radii.size()) * kGeneratedDropletBytes;
-    const auto available = static_cast<double>(availableMemoryBytes());
-    if (need > available) {
-        refuse(std::to_string(radii.size()) + " droplets need about " + bytesText(need) + " (" +
-               bytesText(kGeneratedDropletBytes) + " each, with the scene's other shapes), more than the " +
-               bytesText(available) + " this machine has available (docs/limits.md)");
-    }
+    if (const auto problem = cloudMemoryProblem(shapeCount(), radii.size())) refuse(*problem);
     // Every current shape near the region is an obstacle, with the scene's nesting rule (the loader's
     // "explicit" shapes): droplets may lie inside a box or a sphere.
     std::vector<std::unique_ptr<Shape>> obstacles;

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products of directions
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 
@@ -57,6 +58,12 @@ using Direction = UnitVector3d;
 
 inline std::ostream& operator<<(std::ostream& os, const UnitVector3d& d) {
     return os << '(' << d.x() << ", " << d.y() << ", " << d.z() << ')';
+}
+
+// The largest absolute coordinate of a box's corners: how far its points reach from the origin on any axis,
+// and so the scale of their rounding.
+inline double largestCoordinate(const Eigen::AlignedBox3d& box) {
+    return std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
 }
 
 // "(x, y, z)" — the one way points are printed by print() and the CLI.

@@ -129,9 +129,7 @@ void checkRadii(const JsonReader& json, const DropletCloudSpec& spec, const std:
                         " does not fit in the region (its smallest side is " + jsonpath::number(sides.minCoeff()) +
                         (unbounded ? "); bound the radii with \"max\"" : ")"));
     }
-    const double largestCoordinate =
-        std::max(spec.region.min().cwiseAbs().maxCoeff(), spec.region.max().cwiseAbs().maxCoeff());
-    if (radii.back() < kMinRadiusRelative * std::max(sides.maxCoeff(), largestCoordinate)) {
+    if (radii.back() < kMinRadiusRelative * std::max(sides.maxCoeff(), largestCoordinate(spec.region))) {
         radiusJson.fail("a droplet of radius " + roughly(radii.back()) + " is too small for the region (radii must " +
                         "be >= " + jsonpath::number(kMinRadiusRelative) +
                         " of its largest side or coordinate); bound the radii with \"min\"");
@@ -149,14 +147,8 @@ std::vector<Droplet> runDropletCloud(const JsonReader& json, const DropletCloudS
     checkRadii(json, spec, radii);
     // Refused before placing: a cloud the machine cannot hold would otherwise end in an allocation failure
     // (or the kernel's OOM killer) minutes in.
-    const double need = static_cast<double>(scene.shapes.size() + radii.size()) * kGeneratedDropletBytes;
-    const auto available = static_cast<double>(availableMemoryBytes());
-    if (need > available) {
-        json.member(spec.count ? "count" : "volume_fraction")
-            .fail(std::to_string(radii.size()) + " droplets need about " + bytesText(need) + " to load (" +
-                  bytesText(kGeneratedDropletBytes) + " each, with the scene's other shapes), more than the " +
-                  bytesText(available) + " this machine has available (docs/limits.md)");
-    }
+    if (const auto problem = cloudMemoryProblem(scene.shapes.size(), radii.size()))
+        json.member(spec.count ? "count" : "volume_fraction").fail(*problem);
     std::vector<Droplet> droplets = placeDroplets(spec, radii, {scene.shapes, scene.explicitShapeCount});
     if (droplets.size() < radii.size()) {
         double volume = 0.0;

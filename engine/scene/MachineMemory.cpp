@@ -70,4 +70,13 @@ std::string bytesText(double bytes) {
     return text;
 }
 
+std::optional<std::string> cloudMemoryProblem(std::size_t shapes, std::size_t droplets) {
+    const double need = static_cast<double>(shapes + droplets) * kGeneratedDropletBytes;
+    const auto available = static_cast<double>(availableMemoryBytes());
+    if (need <= available) return std::nullopt;
+    return std::to_string(droplets) + " droplets need about " + bytesText(need) + " to load (" +
+           bytesText(kGeneratedDropletBytes) + " each, with the scene's other shapes), more than the " +
+           bytesText(available) + " this machine has available (docs/limits.md)";
+}
+
 }  // namespace dropscope

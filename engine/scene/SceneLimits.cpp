@@ -21,10 +21,6 @@ std::string roughly(double value) {
     return text;
 }
 
-double largestCoordinate(const Eigen::AlignedBox3d& box) {
-    return std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
-}
-
 // A point's reach with a radius around it; NaN stays NaN so that the caller's checks catch it.
 double reachOf(const Point& point, double radius) { return point.cwiseAbs().maxCoeff() + radius; }
 
@@ -59,6 +55,10 @@ double detectorReach(const Detector& detector) {
 
 }  // namespace
 
+std::string beyondCoordinateLimit() {
+    return "beyond the limit " + roughly(kMaxCoordinate) + " on any coordinate (docs/limits.md)";
+}
+
 double smallestFeature(const Shape& shape) { return 3.0 * shape.volume() / shape.surfaceArea(); }
 
 std::optional<std::string> shapeLimitProblem(const Shape& shape) {
@@ -66,8 +66,7 @@ std::optional<std::string> shapeLimitProblem(const Shape& shape) {
     if (!bounds.min().allFinite() || !bounds.max().allFinite()) return "its bounds are not finite (docs/limits.md)";
     const double reach = largestCoordinate(bounds);
     if (reach > kMaxCoordinate) {
-        return "its bounds reach " + roughly(reach) + ", beyond the limit " + roughly(kMaxCoordinate) +
-               " on any coordinate (docs/limits.md)";
+        return "its bounds reach " + roughly(reach) + ", " + beyondCoordinateLimit();
     }
     const double volume = shape.volume();
     const double area = shape.surfaceArea();
@@ -86,15 +85,13 @@ std::optional<std::string> shapeLimitProblem(const Shape& shape) {
 std::optional<std::string> sourceLimitProblem(const Source& source) {
     const double reach = sourceReach(source);
     if (reach <= kMaxCoordinate) return std::nullopt;
-    return "it reaches " + roughly(reach) + " (origin plus radius), beyond the limit " + roughly(kMaxCoordinate) +
-           " on any coordinate (docs/limits.md)";
+    return "it reaches " + roughly(reach) + " (origin plus radius), " + beyondCoordinateLimit();
 }
 
 std::optional<std::string> detectorLimitProblem(const Detector& detector) {
     const double reach = detectorReach(detector);
     if (reach <= kMaxCoordinate) return std::nullopt;
-    return "it reaches " + roughly(reach) + " (centre plus half the diagonal), beyond the limit " +
-           roughly(kMaxCoordinate) + " on any coordinate (docs/limits.md)";
+    return "it reaches " + roughly(reach) + " (centre plus half the diagonal), " + beyondCoordinateLimit();
 }
 
 void checkSourceAndDetectorLimits(const Scene& scene) {

@@ -17,6 +17,11 @@ struct Scene;
 // +-kMaxCoordinate: the geometry multiplies up to three lengths (volumes, quadratic coefficients), and
 // 1e100 cubed is still far from the double range.
 inline constexpr double kMaxCoordinate = 1e100;
+// Whether every coordinate of `point` lies within +-kMaxCoordinate.
+inline bool withinCoordinateLimit(const Point& point) { return !(point.cwiseAbs().maxCoeff() > kMaxCoordinate); }
+// How every refusal of kMaxCoordinate ends: "beyond the limit 1e+100 on any coordinate (docs/limits.md)".
+std::string beyondCoordinateLimit();
+
 // A shape's smallest feature (smallestFeature) is at least this, for the same reason at the other end.
 inline constexpr double kMinFeature = 1e-100;
 // The scene's reach (the largest coordinate of anything in it) over its smallest feature. A point at

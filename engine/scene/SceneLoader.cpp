@@ -120,10 +120,7 @@ void readView(const JsonReader& json, Scene& scene) {
     view.eye = json.member("eye").vector3();
     view.target = json.member("target").vector3();
     for (const auto& [point, key] : {std::pair{view.eye, "eye"}, std::pair{view.target, "target"}}) {
-        if (point.cwiseAbs().maxCoeff() > kMaxCoordinate) {
-            json.member(key).fail("beyond the limit " + jsonpath::number(kMaxCoordinate) +
-                                  " on any coordinate (docs/limits.md)");
-        }
+        if (!withinCoordinateLimit(point)) json.member(key).fail(beyondCoordinateLimit());
     }
     if ((view.eye - view.target).norm() == 0.0) json.member("target").fail("must differ from eye");
     if (const auto up = json.optionalMember("up")) {

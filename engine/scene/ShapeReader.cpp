@@ -62,10 +62,7 @@ Eigen::AlignedBox3d readCorners(const JsonReader& json) {
     const JsonReader upperJson = json.member("max");
     const Point upper = upperJson.vector3();
     for (const auto& [corner, key] : {std::pair{lower, "min"}, std::pair{upper, "max"}}) {
-        if (corner.cwiseAbs().maxCoeff() > kMaxCoordinate) {
-            json.member(key).fail("beyond the limit " + jsonpath::number(kMaxCoordinate) +
-                                  " on any coordinate (docs/limits.md)");
-        }
+        if (!withinCoordinateLimit(corner)) json.member(key).fail(beyondCoordinateLimit());
     }
     for (Eigen::Index axis = 0; axis < 3; ++axis) {
         if (!(lower[axis] < upper[axis])) {

@@ -135,7 +135,7 @@ void Octree::freeze() {
     building_ = {};
     rootHalf_ = 0.5 * rootBounds_.sizes().maxCoeff();
     const CellBounds root = inflated(rootBounds_, margin_);
-    coordinateScale_ = std::max(root.min().cwiseAbs().maxCoeff(), root.max().cwiseAbs().maxCoeff());
+    coordinateScale_ = largestCoordinate(root);
     prefetch_ = blocks_.size() * sizeof(SphereBlock) > kPrefetchBytes;
 }
 

@@ -237,8 +237,7 @@ ImplicitBase::ImplicitBase(std::shared_ptr<const ImplicitFunction> function) : f
     const Eigen::AlignedBox3d raw = function_->bounds();
     const double padding = tolerance::implicit::kBoundsPaddingRelative * raw.diagonal().norm();
     bounds_ = Eigen::AlignedBox3d(raw.min().array() - padding, raw.max().array() + padding);
-    const double coordinates = std::max(bounds_.min().cwiseAbs().maxCoeff(), bounds_.max().cwiseAbs().maxCoeff());
-    band_ = tolerance::surfaceBand(function_->characteristicLength(), coordinates);
+    band_ = tolerance::surfaceBand(function_->characteristicLength(), largestCoordinate(bounds_));
 }
 
 const SurfaceMesh& ImplicitBase::mesh() const {

@@ -28,9 +28,8 @@ ImplicitShape::ImplicitShape(std::shared_ptr<const ImplicitBase> base, const Aff
     convex_ = function().convexCenter().has_value();
     // The smallest feature scaled by the smallest singular value of M; coordinates from the placed bounds.
     const Eigen::AlignedBox3d placed = transform.applyToBox(base_->bounds());
-    const double coordinates = std::max(placed.min().cwiseAbs().maxCoeff(), placed.max().cwiseAbs().maxCoeff());
     band_ = tolerance::surfaceBand(function().characteristicLength() * transform.classification().singularValues[2],
-                                   coordinates);
+                                   largestCoordinate(placed));
 }
 
 double ImplicitShape::value(const Point& p) const { return function().value(transform().applyInverse(p)); }

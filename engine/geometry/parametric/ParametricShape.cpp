@@ -68,8 +68,7 @@ ParametricShape::ParametricShape(std::shared_ptr<const ParametricBase> base, con
     bounds_ = Eigen::AlignedBox3d(lo, hi);
     // Size: the base's characteristic length shrunk by the smallest singular value of M.
     const double size = surface().characteristicLength() * transform.classification().singularValues[2];
-    const double magnitude = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
-    band_ = tolerance::surfaceBand(size, magnitude);
+    band_ = tolerance::surfaceBand(size, largestCoordinate(bounds_));
 }
 
 double ParametricShape::surfaceArea() const {
