@@ -12,6 +12,7 @@
 #include <charconv>
 #include <filesystem>
 #include <functional>
+#include <set>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -144,8 +145,15 @@ std::shared_ptr<const ImplicitFunction> readFunction(const JsonReader& json, con
     }
     if (preset == "blob") {
         json.expectKeys({"type", "preset", "centers", "radii", "blend", "transform", "medium", "name"});
+        const std::vector<JsonReader> centerElements = json.member("centers").elements();
+        if (centerElements.size() > kMaxBlobSpheres) {
+            json.member("centers").fail("a blob has at most " + std::to_string(kMaxBlobSpheres) + " spheres, got " +
+                                        std::to_string(centerElements.size()) +
+                                        " (its load and trace time grow with the square of their number); model "
+                                        "more droplets as separate shapes or a droplet cloud (docs/limits.md)");
+        }
         std::vector<Point> centers;
-        for (const JsonReader& center : json.member("centers").elements()) centers.push_back(center.vector3());
+        for (const JsonReader& center : centerElements) centers.push_back(center.vector3());
         const JsonReader radiiJson = json.member("radii");
         std::vector<double> radii;
         for (const JsonReader& radius : radiiJson.elements()) radii.push_back(radius.positive());
@@ -183,6 +191,26 @@ std::unique_ptr<Shape> placeOnBase(const JsonReader& json, BaseCache& cache, std
 }
 
 }  // namespace
+
+void checkImplicitBaseCount(const JsonReader& shapes) {
+    if (!shapes.isArray()) return;  // the shapes' reader says what is wrong
+    std::set<std::string> bases;
+    for (const JsonReader& json : shapes.elements()) {
+        if (!json.isObject()) continue;
+        const auto type = json.optionalMember("type");
+        if (!type || !type->isString() || type->string() != "implicit") continue;
+        std::string key;
+        for (const auto& [name, value] : json.members()) {
+            if (name != "transform" && name != "medium" && name != "name") key.append(name).append(value.text());
+        }
+        if (bases.insert(std::move(key)).second && bases.size() > kMaxImplicitBases) {
+            json.fail("a scene has at most " + std::to_string(kMaxImplicitBases) +
+                      " distinct implicit shapes (presets with different parameters; each takes about 0.13 s to "
+                      "load); shapes that differ only in transform share one, so vary the transform's scale "
+                      "instead of the parameters (docs/limits.md)");
+        }
+    }
+}
 
 std::unique_ptr<Shape> readParametricShape(const JsonReader& json, BaseCache& cache) {
     const std::string preset = json.member("preset").string();

@@ -2,6 +2,7 @@
 #include "geometry/implicit/ImplicitShape.hpp"
 #include "geometry/parametric/ParametricShape.hpp"
 #include "scene/GeneralShapeReader.hpp"
+#include "scene/JsonDocument.hpp"
 #include "scene/SceneLoader.hpp"
 #include "scene/SceneTestSupport.hpp"
 #include "scene/SceneWriter.hpp"
@@ -167,6 +168,46 @@ TEST(GeneralShapeReader, ErrorsNameTheValue) {
         "medium": "water"})"))
                   .find("scene.json: shapes[0].patches[0][0]: must be 4 rows"),
               std::string::npos);
+}
+
+// The implicit shapes' load time is bounded before any is built (kMaxBlobSpheres, kMaxImplicitBases): the
+// refusal of 1001 distinct bases comes without integrating the 1000 before it.
+TEST(GeneralShapeReader, ImplicitLoadWorkIsBoundedBeforeAnythingIsBuilt) {
+    const auto blob = [](std::size_t spheres, std::size_t radiusCount) {
+        std::string centers;
+        std::string radii;
+        for (std::size_t i = 0; i < spheres; ++i) centers += (i ? ", [" : "[") + std::to_string(i) + ", 0, 0]";
+        for (std::size_t i = 0; i < radiusCount; ++i) radii += i ? ", 0.6" : "0.6";
+        return R"({"type": "implicit", "preset": "blob", "centers": [)" + centers + R"(], "radii": [)" + radii +
+               R"(], "blend": 0.1, "medium": "water"})";
+    };
+    EXPECT_EQ(sceneErrorOf(sceneWithShapes(blob(kMaxBlobSpheres + 1, kMaxBlobSpheres + 1))),
+              "scene.json: shapes[0].centers: a blob has at most 64 spheres, got 65 (its load and trace time grow "
+              "with the square of their number); model more droplets as separate shapes or a droplet cloud "
+              "(docs/limits.md)");
+    // 64 are read (and refused here for the radii, before the blob would be built).
+    EXPECT_EQ(sceneErrorOf(sceneWithShapes(blob(kMaxBlobSpheres, kMaxBlobSpheres - 1))),
+              "scene.json: shapes[0].radii: must give one radius per center (64 centers, 63 radii)");
+
+    const auto superellipsoids = [](std::size_t count, bool distinct) {
+        std::string shapes;
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::string axis = distinct ? std::to_string(1.0 + 1e-4 * static_cast<double>(i)) : "1";
+            shapes += (i ? ", " : "") +
+                      std::string(R"({"type": "implicit", "preset": "superellipsoid", "semi_axes": [)") + axis +
+                      R"(, 1, 1], "exponents": [0.5, 0.5], "medium": "water", "transform": {"translation": [)" +
+                      std::to_string(5 * i) + R"(, 0, 0]}})";
+        }
+        return shapes;
+    };
+    EXPECT_EQ(sceneErrorOf(sceneWithShapes(superellipsoids(kMaxImplicitBases + 1, true))),
+              "scene.json: shapes[1000]: a scene has at most 1000 distinct implicit shapes (presets with different "
+              "parameters; each takes about 0.13 s to load); shapes that differ only in transform share one, so vary "
+              "the transform's scale instead of the parameters (docs/limits.md)");
+    // Shapes differing only in placement, medium or name share one base.
+    const std::string origin = "scene.json";
+    const Json sharing = parseJsonDocument("[" + superellipsoids(kMaxImplicitBases + 1, false) + "]", origin);
+    EXPECT_NO_THROW(checkImplicitBaseCount(JsonReader(sharing, "shapes", origin)));
 }
 
 TEST(GeneralShapeReader, OverlappingShapesAreRefusedAndAShapeInATorusHoleIsNot) {
