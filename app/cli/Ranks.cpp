@@ -3,6 +3,7 @@
 #include "cli/BadInput.hpp"
 #include "cli/Cli.hpp"
 #include "cli/RayCsv.hpp"
+#include "scene/MachineMemory.hpp"
 #include "scene/SceneLoader.hpp"
 
 #include <algorithm>
@@ -63,6 +64,14 @@ Ranks::Ranks() {
     }
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    // The ranks on this node share its memory: each estimate is held to its share (docs/limits.md).
+    MPI_Comm node = MPI_COMM_NULL;
+    int onThisNode = 1;
+    if (MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node) == MPI_SUCCESS) {
+        MPI_Comm_size(node, &onThisNode);
+        MPI_Comm_free(&node);
+    }
+    shareMachineMemory(onThisNode);
 #else
     // N copies of a whole run would all write the same files at once.
     if (const long processes = launchedProcesses(); processes > 1) {

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <new>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -164,11 +165,13 @@ public:
     FolderOfThisRun(fs::path path, bool created) : path_(std::move(path)), created_(created) {}
     FolderOfThisRun(const FolderOfThisRun&) = delete;
     FolderOfThisRun& operator=(const FolderOfThisRun&) = delete;
-    ~FolderOfThisRun() {
+    ~FolderOfThisRun() { discard(); }
+    void keep() { kept_ = true; }
+    // Now, for an exit that will not unwind (MPI_Abort).
+    void discard() {
         std::error_code ignored;
         if (created_ && !kept_) fs::remove(path_, ignored);
     }
-    void keep() { kept_ = true; }
 
 private:
     fs::path path_;
@@ -207,6 +210,15 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
     TraceResult result;
     try {
         result = traceOnRanks(ranks, *setup.optical, scene.sources, info.settings, setup.prepared.tallies, control);
+    } catch (const std::bad_alloc&) {
+        if (!ranks.parallel()) throw;
+        // As for one process (exit 2, nothing written), but every rank must end: the others may be waiting for
+        // this one's messages. The folder rank 0 created stays when another rank ran out.
+        err << "dropscope: out of memory on rank " << ranks.rank()
+            << ": this run needs more than the machine allows (docs/limits.md); nothing was written\n"
+            << std::flush;
+        createdFolder.discard();
+        ranks.abort(kExitBadInput);
     } catch (const std::exception& error) {
         if (!ranks.parallel()) throw;
         err << "dropscope: internal error on rank " << ranks.rank() << ": " << error.what() << '\n' << std::flush;

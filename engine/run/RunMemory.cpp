@@ -27,8 +27,8 @@ std::optional<std::string> traceMemoryProblem(const TraceMemory& need, double av
     if (!(need.total() > availableBytes)) return std::nullopt;
     return "this trace needs about " + bytesText(need.total()) + " (tallies " + bytesText(need.tallyBytes) +
            " per thread x " + std::to_string(need.threads) + " threads and two more copies, paths " +
-           bytesText(need.pathBytes) + ", detector records " + bytesText(need.recordBytes) + "), more than the " +
-           bytesText(availableBytes) + " this machine has available (docs/limits.md)";
+           bytesText(need.pathBytes) + ", detector records " + bytesText(need.recordBytes) + "), more than " +
+           availableMemoryText(availableBytes) + " (docs/limits.md)";
 }
 
 }  // namespace dropscope

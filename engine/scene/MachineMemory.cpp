@@ -41,7 +41,17 @@ std::uint64_t addressSpaceInUse() {
     return pageSize > 0 ? pages * static_cast<std::uint64_t>(pageSize) : 0;
 }
 
+int processesSharing = 1;
+
 }  // namespace
+
+void shareMachineMemory(int processes) { processesSharing = std::max(processes, 1); }
+
+std::string availableMemoryText(double availableBytes) {
+    std::string text = "the " + bytesText(availableBytes) + " this machine has available";
+    if (processesSharing > 1) text += " for each of its " + std::to_string(processesSharing) + " ranks";
+    return text;
+}
 
 std::uint64_t availableMemoryBytes() {
     std::uint64_t available = memAvailable();
@@ -51,6 +61,7 @@ std::uint64_t availableMemoryBytes() {
         available = pages > 0 && pageSize > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(pageSize)
                                               : UINT64_MAX;
     }
+    available /= static_cast<std::uint64_t>(processesSharing);
     const std::uint64_t addressLimit = softLimit(RLIMIT_AS);
     const std::uint64_t inUse = addressSpaceInUse();
     const std::uint64_t addressLeft =
@@ -75,8 +86,8 @@ std::optional<std::string> cloudMemoryProblem(std::size_t shapes, std::size_t dr
     const auto available = static_cast<double>(availableMemoryBytes());
     if (need <= available) return std::nullopt;
     return std::to_string(droplets) + " droplets need about " + bytesText(need) + " to load (" +
-           bytesText(kGeneratedDropletBytes) + " each, with the scene's other shapes), more than the " +
-           bytesText(available) + " this machine has available (docs/limits.md)";
+           bytesText(kGeneratedDropletBytes) + " each, with the scene's other shapes), more than " +
+           availableMemoryText(available) + " (docs/limits.md)";
 }
 
 }  // namespace dropscope

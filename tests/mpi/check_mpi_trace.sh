@@ -76,3 +76,30 @@ status=0
 [ "$(grep -c 'no-such-scene.json' "$work/bad.err")" = 1 ] || fail "bad scene: not said once: $(cat "$work/bad.err")"
 [ ! -e "$work/bad" ] || fail "bad scene: the output folder was created"
 echo "bad input: exit 2, said once"
+
+# The ranks on one node share its memory (docs/limits.md, "Memory"): a trace too big for the machine is refused
+# by one process against MemAvailable and by 3 ranks against a third of it each, said once, before anything is
+# traced or created.
+huge=(trace "$source_dir/assets/scenes/rainbow-sky.json" --photons 10 --threads 1024 --bins 10000
+      --wavelength-bins 100)
+status=0
+"$dropscope" "${huge[@]}" --out "$work/huge-one" > /dev/null 2> "$work/huge-one.err" || status=$?
+[ "$status" = 2 ] || fail "huge trace, one process: exit $status, not 2: $(cat "$work/huge-one.err")"
+status=0
+"${launch[@]}" "$dropscope" "${huge[@]}" --out "$work/huge-three" > /dev/null 2> "$work/huge-three.err" || status=$?
+[ "$status" = 2 ] || fail "huge trace, 3 ranks: exit $status, not 2: $(cat "$work/huge-three.err")"
+[ "$(grep -c 'this machine has available for each of its 3 ranks' "$work/huge-three.err")" = 1 ] ||
+    fail "huge trace, 3 ranks: not refused once for the ranks' share: $(cat "$work/huge-three.err")"
+[ ! -e "$work/huge-one" ] && [ ! -e "$work/huge-three" ] || fail "huge trace: an output folder was created"
+"$python" - "$work/huge-one.err" "$work/huge-three.err" <<'PY'
+import re, sys
+units = {"bytes": 1, "kB": 1e3, "MB": 1e6, "GB": 1e9, "TB": 1e12, "PB": 1e15}
+def available(path):
+    match = re.search(r"more than the ([0-9.e+]+) (\w+) this machine has available", open(path).read())
+    assert match, open(path).read()
+    return float(match.group(1)) * units[match.group(2)]
+one, three = available(sys.argv[1]), available(sys.argv[2])
+# MemAvailable moves between the runs, also as the ranks build their (empty) tallies.
+assert 0.8 < three * 3 / one < 1.05, (one, three)
+print(f"memory shared by 3 ranks: {one / 1e9:.3g} GB for one process, {three / 1e9:.3g} GB for each rank")
+PY
