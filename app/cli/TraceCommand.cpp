@@ -11,6 +11,7 @@
 #include "results/TraceFiles.hpp"
 #include "run/TraceRun.hpp"
 #include "scene/JsonDocument.hpp"
+#include "scene/SceneLimits.hpp"
 #include "scene/SceneLoader.hpp"
 #include "tally/FateTally.hpp"
 #include "tally/OrderTally.hpp"
@@ -228,6 +229,7 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
     // end the job while rank 0 still writes.
     if (!ranks.root()) return kExitSuccess;
     if (progress) progress->finish({result.photons, result.requested, result.seconds});
+    result.tallies.get<FateTally>().nameShapes([&scene](ShapeId id) { return shapeLabel(scene, id); });
 
     try {
         writeTraceFiles(directory, result, info, setup.optical->media());

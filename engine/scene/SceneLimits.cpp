@@ -59,6 +59,11 @@ std::string beyondCoordinateLimit() {
     return "beyond the limit " + roughly(kMaxCoordinate) + " on any coordinate (docs/limits.md)";
 }
 
+std::string shapeLabel(const Scene& scene, std::size_t id) {
+    if (id >= scene.shapes.size()) return "shape " + std::to_string(id);
+    return shapePlace(scene, id).text();
+}
+
 double smallestFeature(const Shape& shape) { return 3.0 * shape.volume() / shape.surfaceArea(); }
 
 std::optional<std::string> shapeLimitProblem(const Shape& shape) {

@@ -56,6 +56,10 @@ std::string scaleLimitMessage(double feature, double reach, const std::string& u
 std::optional<std::string> sourceLimitProblem(const Source& source);
 std::optional<std::string> detectorLimitProblem(const Detector& detector);
 
+// Where shape `id` (its index in scene.shapes, and its octree id) is in the scene file and what it is, as
+// messages name it: `shapes[3]: sphere "d1"`, `generators[0]: droplet 17`.
+std::string shapeLabel(const Scene& scene, std::size_t id);
+
 // The scene's reach against its smallest feature (kMaxScaleRatio), and the sources and plane detectors
 // against kMaxCoordinate. Throws SceneError naming the shape, source or detector, e.g.
 // `scene.json: shapes[2]: sphere "d": its smallest feature 0.001 mm is 1e+15 times smaller than the

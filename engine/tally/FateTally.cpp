@@ -101,7 +101,10 @@ std::optional<std::string> FateTally::lossWarning() const {
                   std::string(lostReasonMeaning(main)).c_str(), std::string(lostReasonName(main)).c_str(),
                   static_cast<unsigned long long>(lost(main)), static_cast<unsigned long long>(firstLost_->photon));
     std::string text = line;
-    if (firstLost_->shape != RayHit::kNone) text += "at shape " + std::to_string(firstLost_->shape) + " ";
+    if (firstLost_->shape != RayHit::kNone) {
+        text += shapeLabel_ ? "on " + shapeLabel_(firstLost_->shape) + " at "
+                            : "at shape " + std::to_string(firstLost_->shape) + " ";
+    }
     const Point& p = firstLost_->position;
     std::snprintf(line, sizeof line, "(%.6g, %.6g, %.6g), %s", p.x(), p.y(), p.z(),
                   std::string(lostReasonName(firstLost_->reason)).c_str());
@@ -140,6 +143,8 @@ void FateTally::report(ResultReport& report) const {
         report.set({"first_lost", "shape"}, firstLost_->shape == RayHit::kNone
                                                 ? SummaryValue(nullptr)
                                                 : SummaryValue(static_cast<std::uint64_t>(firstLost_->shape)));
+        if (shapeLabel_ && firstLost_->shape != RayHit::kNone)
+            report.set({"first_lost", "shape_label"}, shapeLabel_(firstLost_->shape));
         report.set({"first_lost", "x"}, firstLost_->position.x());
         report.set({"first_lost", "y"}, firstLost_->position.y());
         report.set({"first_lost", "z"}, firstLost_->position.z());

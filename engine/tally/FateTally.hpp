@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -47,8 +48,12 @@ public:
     LostReason mainLostReason() const;
     // One line for stderr, summary.json's "lost_warning" and the app's status bar when a photon was lost:
     // "lost 0.3 % of the photons (3 of 1000), mostly at box edges or vertices (undefined_normal: 3); the first,
-    // photon 17, at shape 0 (1, 0, -0.5)"; nothing when none was.
+    // photon 17, at shape 0 (1, 0, -0.5)"; nothing when none was. With nameShapes, "... photon 17, on
+    // shapes[0]: box \"b\" at (1, 0, -0.5)".
     std::optional<std::string> lossWarning() const;
+    // How the warning and summary.json's first_lost.shape_label name a shape, where the scene is known (the
+    // CLI, Python): `shapes[3]: sphere "d1"`, `generators[0]: droplet 17`. Not part of the scores.
+    void nameShapes(std::function<std::string(ShapeId)> label) { shapeLabel_ = std::move(label); }
 
     friend bool operator==(const FateTally& a, const FateTally& b) {
         return a.photons_ == b.photons_ && a.escaped_ == b.escaped_ && a.absorbed_ == b.absorbed_ &&
@@ -66,6 +71,7 @@ private:
     std::array<std::uint64_t, kLostReasonCount> lostReasons_{};
     EventCounts events_;
     std::optional<FirstLost> firstLost_;
+    std::function<std::string(ShapeId)> shapeLabel_;
 };
 
 }  // namespace dropscope

@@ -3,6 +3,7 @@
 #include "tally/Tally.hpp"
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace dropscope {
@@ -26,6 +27,10 @@ public:
     const T& get() const {
         if (const T* tally = find<T>()) return *tally;
         throw std::logic_error("the run has no tally of the type asked for");
+    }
+    template <class T>
+    T& get() {
+        return const_cast<T&>(std::as_const(*this).template get<T>());
     }
     template <class T>
     const T* find() const {

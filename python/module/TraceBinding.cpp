@@ -6,6 +6,8 @@
 #include "results/PathsJsonl.hpp"
 #include "results/TraceFiles.hpp"
 #include "run/TraceRun.hpp"
+#include "scene/SceneLimits.hpp"
+#include "tally/FateTally.hpp"
 #include "transport/OpticalScene.hpp"
 
 #include <pybind11/functional.h>
@@ -142,6 +144,7 @@ std::shared_ptr<TraceRunCore> trace(const PythonScene& pythonScene, std::uint64_
         run->result = runTrace(optical, scene->sources, prepared.settings, prepared.tallies, control);
     }
     if (raised) throw std::move(*raised);
+    run->result.tallies.get<FateTally>().nameShapes([scene](ShapeId id) { return shapeLabel(*scene, id); });
     if (!progress.is_none()) progress(run->result.photons, run->result.requested);
     run->report = traceReport(run->result, run->info);
     return run;

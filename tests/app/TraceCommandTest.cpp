@@ -178,7 +178,8 @@ TEST_F(TraceCommand, WritesTheFourFilesWithTheDocumentedKeys) {
 const std::string kEdgeScene = kDataDir + "/scenes/pencil_at_box_edge.json";
 const std::string kEdgeWarning =
     "dropscope: warning: lost 50 % of the photons (1000 of 2000), mostly at box edges or vertices, where a surface "
-    "has no normal (undefined_normal: 1000); the first, photon 0, at shape 0 (-1, -1, 0), undefined_normal\n";
+    "has no normal (undefined_normal: 1000); the first, photon 0, on shapes[0]: box \"block\" at (-1, -1, 0), "
+    "undefined_normal\n";
 
 TEST_F(TraceCommand, LostPhotonsAreWarnedOnStderrAndInTheSummary) {
     const CliRun run = trace(kEdgeScene, "2000", {"--threads", "2"});
@@ -187,9 +188,10 @@ TEST_F(TraceCommand, LostPhotonsAreWarnedOnStderrAndInTheSummary) {
     const Json s = summary();
     EXPECT_EQ(s["counts"]["lost"], 1000);
     EXPECT_EQ(s["lost_warning"], kEdgeWarning.substr(20, kEdgeWarning.size() - 21));
-    EXPECT_EQ(
-        s["first_lost"],
-        Json::parse(R"({"photon": 0, "reason": "undefined_normal", "shape": 0, "x": -1.0, "y": -1.0, "z": 0.0})"));
+    EXPECT_EQ(s["first_lost"],
+              Json::parse(
+                  R"({"photon": 0, "reason": "undefined_normal", "shape": 0, "shape_label": "shapes[0]: box \"block\"",
+                       "x": -1.0, "y": -1.0, "z": 0.0})"));
     EXPECT_TRUE(s["max_lost"].is_null());
 }
 

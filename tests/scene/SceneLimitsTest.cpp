@@ -105,5 +105,21 @@ TEST(SceneLimits, GeneratedDropletsAreNamedByTheirGenerator) {
     EXPECT_NE(error.find("reach 2e+09 mm (sources[0])"), std::string::npos) << error;
 }
 
+// The labels the loss warning and first_lost.shape_label give shapes by their octree id.
+TEST(SceneLimits, ShapeLabelsNameTheFileEntry) {
+    const Scene scene = parseScene(R"({"dropscope": 1, "media": {"water": {"n": 1.333}},
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water", "name": "d"},
+                   {"type": "box", "min": [5, 5, 5], "max": [6, 6, 6], "medium": "water"}],
+        "generators": [{"type": "droplet_cloud", "region": {"min": [10, 0, 0], "max": [20, 10, 10]},
+                        "count": 3, "radius": {"distribution": "fixed", "value": 0.5}, "medium": "water"}]})",
+                                   "scene.json");
+    ASSERT_EQ(scene.shapes.size(), 5u);
+    EXPECT_EQ(shapeLabel(scene, 0), R"(shapes[0]: sphere "d")");
+    EXPECT_EQ(shapeLabel(scene, 1), "shapes[1]: box");
+    EXPECT_EQ(shapeLabel(scene, 2), "generators[0]: droplet 0");
+    EXPECT_EQ(shapeLabel(scene, 4), "generators[0]: droplet 2");
+    EXPECT_EQ(shapeLabel(scene, 5), "shape 5");
+}
+
 }  // namespace
 }  // namespace dropscope

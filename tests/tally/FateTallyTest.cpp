@@ -59,6 +59,11 @@ TEST(FateTally, TheFirstLostIsTheLowestIndexInAnyMergeOrder) {
     EXPECT_EQ(forwards.lossWarning().value_or(""),
               "lost 60 % of the photons (3 of 5), mostly at box edges or vertices, where a surface has no normal "
               "(undefined_normal: 2); the first, photon 4, at shape 0 (-1, -1, 0.5), undefined_normal");
+    forwards.nameShapes([](ShapeId id) { return "generators[0]: droplet " + std::to_string(id + 10); });
+    EXPECT_EQ(forwards.lossWarning().value_or(""),
+              "lost 60 % of the photons (3 of 5), mostly at box edges or vertices, where a surface has no normal "
+              "(undefined_normal: 2); the first, photon 4, on generators[0]: droplet 10 at (-1, -1, 0.5), "
+              "undefined_normal");
 }
 
 TEST(FateTally, TheFirstLostTravelsThroughScoreBytes) {
