@@ -37,24 +37,48 @@ ExactCoverage::ExactCoverage(const Shape& shape, const render::Camera& camera, i
 
 ExactCoverage::ExactCoverage(const std::vector<std::unique_ptr<Shape>>& shapes, const render::Camera& camera, int width,
                              int height)
-    : width_(width), height_(height), hit_(static_cast<std::size_t>(width * height)) {
+    : width_(width),
+      height_(height),
+      hit_(static_cast<std::size_t>(width * height)),
+      silhouette_(static_cast<std::size_t>(width * height)) {
     const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
     for (int y = 0; y < height_; ++y) {
         for (int x = 0; x < width_; ++x) {
             const Direction ray = pixelRay(camera, x, y, width_, height_);
             const Eigen::ParametrizedLine<double, 3> line(eye, ray);
+            const auto near = [&](const Shape& shape, double slack) {
+                const Eigen::AlignedBox3d box = shape.bounds();
+                return line.distance(box.center()) <= 0.5 * box.diagonal().norm() + slack;
+            };
             hit_[index(x, y)] = std::any_of(shapes.begin(), shapes.end(), [&](const std::unique_ptr<Shape>& shape) {
-                const Eigen::AlignedBox3d box = shape->bounds();
-                const Point centre = box.center();
-                const double reach = 0.5 * box.diagonal().norm();
-                if (line.distance(centre) > reach) return false;
-                return !std::isnan(shape->distanceToSurface(eye, ray));
+                return near(*shape, 0.0) && !std::isnan(shape->distanceToSurface(eye, ray));
             });
+            // A shape's own silhouette through this pixel: its rays here and at some 8-neighbour meet it
+            // differently. Where shapes overlap on screen the union's boundary misses it, and a ray that
+            // grazes one shape is a coin toss for any rasteriser.
+            for (const auto& shape : shapes) {
+                const double slack =
+                    2.0 * line.distance(eye + pixelRay(camera, x + 1, y + 1, width_, height_).vector() *
+                                                  (shape->bounds().center() - eye).norm());
+                if (!near(*shape, slack)) continue;
+                const bool here = !std::isnan(shape->distanceToSurface(eye, ray));
+                for (int ny = y - 1; ny <= y + 1 && !silhouette_[index(x, y)]; ++ny) {
+                    for (int nx = x - 1; nx <= x + 1; ++nx) {
+                        const Direction next = pixelRay(camera, nx, ny, width_, height_);
+                        if (!std::isnan(shape->distanceToSurface(eye, next)) != here) {
+                            silhouette_[index(x, y)] = 1;
+                            break;
+                        }
+                    }
+                }
+                if (silhouette_[index(x, y)]) break;
+            }
         }
     }
 }
 
 bool ExactCoverage::onBoundary(int x, int y) const {
+    if (!silhouette_.empty() && silhouette_[index(x, y)]) return true;
     const char here = hit_[index(x, y)];
     for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height_ - 1); ++ny) {
         for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width_ - 1); ++nx) {

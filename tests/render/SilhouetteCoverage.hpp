@@ -29,7 +29,8 @@ public:
                   int height);
 
     bool hit(int x, int y) const { return hit_[index(x, y)] != 0; }
-    // Within one pixel of the exact silhouette: some 8-neighbour is classified the other way.
+    // Within one pixel of the exact silhouette: some 8-neighbour is classified the other way, by the union
+    // of the shapes or (with several) by one shape alone.
     bool onBoundary(int x, int y) const;
     int hits() const;
     int width() const { return width_; }
@@ -41,6 +42,7 @@ private:
     int width_;
     int height_;
     std::vector<char> hit_;
+    std::vector<char> silhouette_;  // with several shapes: on some shape's own silhouette (onBoundary)
 };
 
 // How a drawing's coverage agrees with the expected one.
