@@ -142,7 +142,8 @@ struct TraceSetup {
     bool createdOutput = false;  // --out did not exist before this run
 };
 
-void prepareTraceSetup(const TraceOptions& options, bool writes, TraceSetup& setup) {
+void prepareTraceSetup(const TraceOptions& options, const Ranks& ranks, TraceSetup& setup) {
+    const bool writes = ranks.root();
     const fs::path directory = options.outDir;
     const PolarisationModel polarisation = checkedTraceSettings(options).transport.polarisation;
     // The file names do not depend on the bins: checked before the scene is read.
@@ -153,7 +154,7 @@ void prepareTraceSetup(const TraceOptions& options, bool writes, TraceSetup& set
     // The text read once: results.h5 keeps exactly what was traced.
     setup.sceneJson = readJsonFileText(options.scenePath);
     setup.scene = parseScene(setup.sceneJson, options.scenePath);
-    setup.prepared = prepareTrace(options, setup.scene);
+    setup.prepared = prepareTrace(options, setup.scene, ranks.size());
     // The detectors' files are named after them: checked now that they are known.
     if (writes) checkOutputDirectory(directory, traceFileNames(setup.prepared.tallies));
     setup.optical.emplace(setup.scene, setup.prepared.settings.transport.diffraction != DiffractionModel::None);
@@ -183,7 +184,7 @@ private:
 int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream& out, std::ostream& err) {
     const fs::path directory = options.outDir;
     TraceSetup setup;
-    ranks.together([&] { prepareTraceSetup(options, ranks.root(), setup); });
+    ranks.together([&] { prepareTraceSetup(options, ranks, setup); });
     ranks.together([&] {
         if (!ranks.root()) return;
         std::error_code unknown;  // createOutputDirectory reports a path that cannot be used

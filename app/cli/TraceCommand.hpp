@@ -43,12 +43,13 @@ inline constexpr std::uint64_t kMaxSpectralCells = 10'000'000;  // 80 MB of coun
 
 // What a trace of `scene` with these options runs: the settings and the unscored tallies (standard, orders,
 // detectors), checked. The CLI and the Python module both trace through it, so the same options give the same
-// files. Throws BadInputError (options) or SceneError (a scene without sources).
+// files. `ranks`: the MPI ranks of the run, for the memory estimate (rank 0 merges their results). Throws
+// BadInputError (options) or SceneError (a scene without sources).
 struct PreparedTrace {
     TraceSettings settings;
     TallySet tallies;
 };
-PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene);
+PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene, int ranks = 1);
 // The settings alone, with the checks that need no scene (BadInputError): what trace refuses before reading it.
 TraceSettings checkedTraceSettings(const TraceOptions& options);
 

@@ -58,7 +58,7 @@ TraceSettings checkedTraceSettings(const TraceOptions& options) {
     return settings;
 }
 
-PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene) {
+PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene, int ranks) {
     PreparedTrace prepared{checkedTraceSettings(options), {}};
     const TraceSettings& settings = prepared.settings;
     if (scene.sources.empty()) throw SceneError(scene.origin, "sources", "the scene has no light sources to trace");
@@ -77,7 +77,7 @@ PreparedTrace prepareTrace(const TraceOptions& options, const Scene& scene) {
     addDetectorTallies(prepared.tallies, scene, settings.transport.polarisation);
     std::uint64_t records = 0;
     for (const Detector& detector : scene.detectors) records += detector.record;
-    const TraceMemory need = estimateTraceMemory(prepared.tallies, settings, records);
+    const TraceMemory need = estimateTraceMemory(prepared.tallies, settings, records, ranks);
     if (const auto problem = traceMemoryProblem(need, static_cast<double>(availableMemoryBytes()))) {
         throw BadInputError("dropscope: " + *problem +
                             "; use fewer --threads, --bins, --wavelength-bins, --paths, detector pixels or records");

@@ -8,8 +8,10 @@
 
 namespace dropscope {
 
-TraceMemory estimateTraceMemory(const TallySet& tallies, const TraceSettings& settings, std::uint64_t records) {
+TraceMemory estimateTraceMemory(const TallySet& tallies, const TraceSettings& settings, std::uint64_t records,
+                                int ranks) {
     TraceMemory need;
+    need.mergesRanks = ranks > 1;
     // An empty tally's scores are its counters, as the bytes ranks exchange: the size of one copy.
     std::vector<std::byte> bytes;
     ScoreWriter out(bytes);
@@ -26,7 +28,8 @@ TraceMemory estimateTraceMemory(const TallySet& tallies, const TraceSettings& se
 std::optional<std::string> traceMemoryProblem(const TraceMemory& need, double availableBytes) {
     if (!(need.total() > availableBytes)) return std::nullopt;
     return "this trace needs about " + bytesText(need.total()) + " (tallies " + bytesText(need.tallyBytes) +
-           " per thread x " + std::to_string(need.threads) + " threads and two more copies, paths " +
+           " per thread x " + std::to_string(need.threads) + " threads and " +
+           (need.mergesRanks ? "four more copies to merge the ranks" : "two more copies") + ", paths " +
            bytesText(need.pathBytes) + ", detector records " + bytesText(need.recordBytes) + "), more than " +
            availableMemoryText(availableBytes) + " (docs/limits.md)";
 }

@@ -28,6 +28,10 @@ TEST(RunMemory, CountsATallyCopyPerThreadAndTheMergedOnePathsAndRecords) {
     EXPECT_EQ(need.pathBytes, 1000 * kPathBytesEstimate);
     EXPECT_EQ(need.recordBytes, 16'000.0 * sizeof(DetectorHit) * 4);  // at most 16 hits per photon, per copy
     EXPECT_EQ(need.total(), 5 * need.tallyBytes + need.pathBytes + need.recordBytes);
+    // Rank 0 of an MPI run also holds one other rank's result while merging: two tally copies, its records
+    // as bytes and as records, its paths as bytes.
+    const TraceMemory merging = estimateTraceMemory(tallies, settings, 20'000, 3);
+    EXPECT_EQ(merging.total(), 7 * need.tallyBytes + 2 * need.pathBytes + 1.5 * need.recordBytes);
 }
 
 TEST(RunMemory, RefusesOnlyWhatDoesNotFit) {
@@ -39,6 +43,11 @@ TEST(RunMemory, RefusesOnlyWhatDoesNotFit) {
     EXPECT_EQ(traceMemoryProblem(need, 8.5e9).value_or("none"),
               "this trace needs about 9 GB (tallies 2 GB per thread x 2 threads and two more copies, paths 1 GB, "
               "detector records 0 bytes), more than the 8.5 GB this machine has available (docs/limits.md)");
+    need.mergesRanks = true;
+    EXPECT_EQ(traceMemoryProblem(need, 8.5e9).value_or("none"),
+              "this trace needs about 14 GB (tallies 2 GB per thread x 2 threads and four more copies to merge the "
+              "ranks, paths 1 GB, detector records 0 bytes), more than the 8.5 GB this machine has available "
+              "(docs/limits.md)");
     // --photons near 2^64: the records' cap of 16 per photon must not wrap around.
     TraceSettings huge;
     huge.photons = std::uint64_t{1} << 62;
