@@ -4,6 +4,7 @@
 #include "cli/InspectCommand.hpp"
 #include "cli/MieCommand.hpp"
 #include "cli/QueryCommand.hpp"
+#include "cli/Ranks.hpp"
 #include "cli/RayCsv.hpp"
 #include "cli/SnapshotCommand.hpp"
 #include "cli/TraceCommand.hpp"
@@ -12,18 +13,27 @@
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <exception>
 #include <new>
 #include <optional>
 #include <ostream>
 #include <string>
+#include <thread>
 
 namespace dropscope {
 
 namespace {
 
+// Every process an MPI launcher started parses the same arguments before MPI starts: only the first says
+// what is wrong. The others wait a moment before their exit 2, on which mpirun ends the job, so that the
+// first has said it (docs/scaling.md).
 int reportUsageError(const std::string& message, std::ostream& err) {
-    err << "dropscope: " << message << " (see dropscope --help)\n";
+    if (launcherRank() == 0) {
+        err << "dropscope: " << message << " (see dropscope --help)\n";
+    } else {
+        std::this_thread::sleep_for(std::chrono::seconds(1));
+    }
     return kExitBadInput;
 }
 
@@ -87,6 +97,14 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         out << app.help();
         err << "dropscope: no command given (see the commands above)\n";
         return kExitBadInput;
+    } catch (const std::exception&) {
+        return reportFailure(std::current_exception(), err);
+    }
+}
+
+int reportFailure(const std::exception_ptr& failure, std::ostream& err) {
+    try {
+        std::rethrow_exception(failure);
     } catch (const SceneError& error) {  // bad input found by any command: its one line
         err << error.what() << '\n';
         return kExitBadInput;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <exception>
 #include <iosfwd>
 
 namespace dropscope {
@@ -14,5 +15,9 @@ inline constexpr int kExitInterrupted = 130;  // stopped by Ctrl-C (128 + SIGINT
 // The dropscope command line: parses argv (argv[0] is the program), runs the subcommand, and returns
 // the exit status. Never throws. Results go to `out`; a failure prints exactly one line to `err`.
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+// Says what `failure` (a std::exception) was on `err`, one line, and gives the exit status for it: kExitBadInput
+// for bad input and memory, kExitInternalError otherwise.
+int reportFailure(const std::exception_ptr& failure, std::ostream& err);
 
 }  // namespace dropscope

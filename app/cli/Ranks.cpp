@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 
@@ -41,6 +42,13 @@ long launchedProcesses() {
 #endif
 
 }  // namespace
+
+int launcherRank() {
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK", "MV2_COMM_WORLD_RANK"}) {
+        if (const char* value = std::getenv(name)) return static_cast<int>(std::strtol(value, nullptr, 10));
+    }
+    return 0;
+}
 
 Ranks::Ranks() {
     if (!launchedByMpi()) return;
@@ -92,12 +100,9 @@ Ranks::~Ranks() {
 int exitStatusOf(const std::exception_ptr& failure) {
     try {
         std::rethrow_exception(failure);
-    } catch (const SceneError&) {
-        return kExitBadInput;
-    } catch (const RayCsvError&) {
-        return kExitBadInput;
-    } catch (const BadInputError&) {
-        return kExitBadInput;
+    } catch (const std::exception&) {
+        std::ostream nowhere(nullptr);  // the status alone; the failing rank says the message
+        return reportFailure(failure, nowhere);
     } catch (...) {
         return kExitInternalError;
     }

@@ -38,6 +38,10 @@ private:
     bool initialised_ = false;
 };
 
+// The rank an MPI launcher gave this process in its environment (before MPI starts, and in a build without
+// MPI); 0 when not started by one.
+int launcherRank();
+
 // The exit status runCli gives an exception: kExitBadInput for bad input, kExitInternalError otherwise.
 int exitStatusOf(const std::exception_ptr& failure);
 

@@ -267,6 +267,13 @@ int runTraceCommand(const TraceOptions& options, std::ostream& out, std::ostream
         return traceAndWrite(options, ranks, out, err);
     } catch (const RankFailed& failed) {
         return failed.status;  // the lower rank that failed has said why
+    } catch (const std::exception&) {
+        if (!ranks.parallel()) throw;
+        // Said before ~Ranks (MPI_Finalize) lets the other ranks exit: mpirun ends the job at their first exit
+        // status that is not 0, and this rank's message would be lost with it.
+        const int status = reportFailure(std::current_exception(), err);
+        err.flush();
+        return status;
     }
 }
 

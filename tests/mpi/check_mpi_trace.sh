@@ -76,6 +76,14 @@ status=0
 [ "$(grep -c 'no-such-scene.json' "$work/bad.err")" = 1 ] || fail "bad scene: not said once: $(cat "$work/bad.err")"
 [ ! -e "$work/bad" ] || fail "bad scene: the output folder was created"
 echo "bad input: exit 2, said once"
+# A bad option too, though it is found before MPI starts.
+status=0
+"${launch[@]}" "$dropscope" trace "$source_dir/assets/scenes/rainbow-sky.json" --paths 99999999999 --out "$work/bad" \
+    > "$work/bad-option.out" 2> "$work/bad-option.err" || status=$?
+[ "$status" = 2 ] || fail "bad option: exit $status, not 2: $(cat "$work/bad-option.err")"
+[ "$(grep -c 'dropscope: --paths' "$work/bad-option.err")" = 1 ] ||
+    fail "bad option: not said once: $(cat "$work/bad-option.err")"
+echo "bad option: exit 2, said once"
 
 # The ranks on one node share its memory (docs/limits.md, "Memory"): a trace too big for the machine is refused
 # by one process against MemAvailable and by 3 ranks against a third of it each, said once, before anything is
