@@ -99,8 +99,15 @@ void updateTraces(AppState& state) {
             ++traces.shownId;
             const auto paths = static_cast<int>(traces.trace->outcome.result.paths.size());
             selectEvent(traces, traces.selectedPath < paths ? traces.selectedPath : -1, traces.selectedEvent);
-            // A loss is always said, live firing included, as an error: the results lack those photons.
-            if (const auto warning = traces.trace->outcome.result.tallies.get<FateTally>().lossWarning()) {
+            // A loss is always said, live firing included, as an error: the results lack those photons. The
+            // shape is named as the document names it now, through the run's map back to its slots.
+            FateTally fates = traces.trace->outcome.result.tallies.get<FateTally>();
+            const std::vector<ShapeId>& slots = traces.trace->slotOfShape;
+            const SceneDocument& document = state.scene.document();
+            fates.nameShapes([&](ShapeId id) {
+                return id < slots.size() ? document.shapeTitle(slots[id]) : "shape " + std::to_string(id);
+            });
+            if (const auto warning = fates.lossWarning()) {
                 state.ui.status.refuse(text.str() + "; " + *warning);
             } else if (!traces.automatic) {
                 state.ui.status.say(text.str());

@@ -83,6 +83,29 @@ TEST(AppUi, AClickInPlacementModeDropsADropletOnThePlacementPlaneUnderTheCursor)
     EXPECT_TRUE(differsFromBackground(harness.image(), 740.0f, 480.0f));
 }
 
+// A pencil at a glass block's edge, where photons are lost, with a droplet before it that is then removed:
+// the status bar says the loss as an error and names the block as the document does, though the trace
+// numbered it 0 of the shapes left.
+TEST(AppUi, LostPhotonsAreSaidInTheStatusBarNamingTheShape) {
+    AppHarness harness(R"({
+      "dropscope": 1, "ambient": "air",
+      "media": {"air": {"n": 1}, "glass": {"n": 1.5}},
+      "shapes": [{"type": "sphere", "center": [5, 5, 5], "radius": 0.5, "medium": "glass"},
+                 {"type": "box", "name": "block", "min": [-1, -1, -1], "max": [1, 1, 1], "medium": "glass"}],
+      "sources": [{"type": "ray", "origin": [-3, -3, 0], "direction": [1, 1, 0]}],
+      "view": {"eye": [6, 3, -4], "target": [0, 0, 0]}
+    })");
+    harness.state().scene.document().removeShape(0);
+    fire(harness, 20, 0);
+    EXPECT_TRUE(harness.state().ui.status.error());
+    EXPECT_NE(harness.state().ui.status.text().find(
+                  "lost 100 % of the photons (20 of 20), mostly at box edges or vertices, where a surface has no "
+                  "normal (undefined_normal: 20); the first, photon 0, on box \"block\" at (-1, -1, 0), "
+                  "undefined_normal"),
+              std::string::npos)
+        << harness.state().ui.status.text();
+}
+
 TEST(AppUi, APlacementThatWouldOverlapIsRefusedWithAVisibleMessage) {
     AppHarness harness(kTopDownScene);
     harness.state().placement.radius = 0.3;
