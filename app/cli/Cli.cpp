@@ -26,13 +26,13 @@ namespace dropscope {
 namespace {
 
 // Every process an MPI launcher started parses the same arguments before MPI starts: only the first says
-// what is wrong. The others wait a moment before their exit 2, on which mpirun ends the job, so that the
-// first has said it (docs/scaling.md).
+// what is wrong. The others wait before their exit 2, on which mpirun would end the job, so that the first
+// has said it; its own exit 2 ends them sooner (docs/scaling.md).
 int reportUsageError(const std::string& message, std::ostream& err) {
     if (launcherRank() == 0) {
         err << "dropscope: " << message << " (see dropscope --help)\n";
     } else {
-        std::this_thread::sleep_for(std::chrono::seconds(1));
+        std::this_thread::sleep_for(std::chrono::seconds(10));
     }
     return kExitBadInput;
 }

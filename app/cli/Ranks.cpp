@@ -92,6 +92,7 @@ Ranks::Ranks() {
 }
 
 Ranks::~Ranks() {
+    shareMachineMemory(1);
 #ifdef DROPSCOPE_WITH_MPI
     if (initialised_) MPI_Finalize();
 #endif

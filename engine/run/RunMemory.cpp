@@ -30,7 +30,7 @@ std::optional<std::string> traceMemoryProblem(const TraceMemory& need, double av
     return "this trace needs about " + bytesText(need.total()) + " (tallies " + bytesText(need.tallyBytes) +
            " per thread x " + std::to_string(need.threads) + " threads and " +
            (need.mergesRanks ? "four more copies to merge the ranks" : "two more copies") + ", paths " +
-           bytesText(need.pathBytes) + ", detector records " + bytesText(need.recordBytes) + "), more than " +
+           bytesText(need.pathTotal()) + ", detector records " + bytesText(need.recordTotal()) + "), more than " +
            availableMemoryText(availableBytes) + " (docs/limits.md)";
 }
 

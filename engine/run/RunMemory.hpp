@@ -19,8 +19,9 @@ struct TraceMemory {
     double recordBytes = 0.0;  // every copy: threads + 1 of them
     bool mergesRanks = false;
     int tallyCopies() const { return threads + (mergesRanks ? 4 : 2); }
-    double mergeBytes() const { return mergesRanks ? pathBytes + 2.0 * recordBytes / (threads + 1) : 0.0; }
-    double total() const { return tallyBytes * tallyCopies() + pathBytes + recordBytes + mergeBytes(); }
+    double pathTotal() const { return mergesRanks ? 2.0 * pathBytes : pathBytes; }
+    double recordTotal() const { return recordBytes + (mergesRanks ? 2.0 * recordBytes / (threads + 1) : 0.0); }
+    double total() const { return tallyBytes * tallyCopies() + pathTotal() + recordTotal(); }
 };
 
 // Bytes a recorded path is estimated at: room for 16 events (a vector grown by doubling past 8 to 15 events,
@@ -31,7 +32,7 @@ inline constexpr double kPathBytesEstimate = sizeof(PhotonPath) + 16 * sizeof(Ev
 TraceMemory estimateTraceMemory(const TallySet& tallies, const TraceSettings& settings, std::uint64_t records,
                                 int ranks = 1);
 
-// "this trace needs about 34 GB (tallies 16 GB per thread x 2 threads and the merged copy, paths 1 GB,
+// "this trace needs about 65 GB (tallies 16 GB per thread x 2 threads and two more copies, paths 1 GB,
 // detector records 0 bytes), more than the 8 GB this machine has available (docs/limits.md)", or nothing.
 std::optional<std::string> traceMemoryProblem(const TraceMemory& need, double availableBytes);
 

@@ -10,6 +10,7 @@
 
 namespace dropscope {
 
+class ImplicitFunction;
 class ParametricSurface;
 
 // The bases read so far, by preset and parameters: shapes with equal presets share one base
@@ -27,14 +28,18 @@ private:
 // (preset and parameters; shapes that differ only in transform, medium or name share one), measured at about
 // 0.13 s for a superellipsoid or a blob of 4 spheres (Release, one core). A blob evaluates every sphere at
 // every point, and a line crosses more of them the more there are, so its cost grows with the square of
-// their number: 3 s for 64 spheres, 39 s for 256. The limits keep a scene's load under a few minutes
-// (docs/limits.md).
+// their number: 0.59 s for 16 spheres, 3.1 s for 64, 39 s for 256. The limits keep a scene's load under
+// three minutes (docs/limits.md).
 inline constexpr std::size_t kMaxBlobSpheres = 64;
-inline constexpr std::size_t kMaxImplicitBases = 1000;
+inline constexpr double kMaxImplicitLoadSeconds = 150.0;
 
-// Refuses `shapes` (the scene's "shapes" array) when it holds more than kMaxImplicitBases distinct implicit
-// bases, naming the first beyond the limit, before any is built.
-void checkImplicitBaseCount(const JsonReader& shapes);
+// The estimated seconds to load one implicit base (Release, one core): 0.13 s for a superellipsoid, and for a
+// blob a fit to the measured times.
+double implicitLoadSeconds(const ImplicitFunction& function);
+
+// Refuses `shapes` (the scene's "shapes" array) when its distinct implicit bases would take more than
+// kMaxImplicitLoadSeconds to load, naming the shape that crosses the limit, before any is built.
+void checkImplicitLoadTime(const JsonReader& shapes);
 
 // {"type": "parametric", "preset": "sphere" | "ellipsoid" | "torus" | "bezier", its parameters, "transform"}
 // and {"type": "implicit", "preset": "superellipsoid" | "blob", ...}, without the medium (the caller sets

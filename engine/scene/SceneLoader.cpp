@@ -76,7 +76,7 @@ void readAmbient(const JsonReader& root, Scene& scene) {
 }
 
 void readShapes(const JsonReader& shapes, Scene& scene) {
-    checkImplicitBaseCount(shapes);
+    checkImplicitLoadTime(shapes);
     BaseCache cache;
     for (const JsonReader& json : shapes.elements()) {
         NamedShape shape = readShape(json, scene.media, cache);

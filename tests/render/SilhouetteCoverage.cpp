@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace dropscope::test {
 
@@ -42,33 +45,51 @@ ExactCoverage::ExactCoverage(const std::vector<std::unique_ptr<Shape>>& shapes, 
       hit_(static_cast<std::size_t>(width * height)),
       silhouette_(static_cast<std::size_t>(width * height)) {
     const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+    constexpr double kMiss = std::numeric_limits<double>::infinity();
+    // Each shape tried only where its bounds (grown by `slack`) meet the ray.
+    const auto distance = [&](const Shape& shape, const Direction& ray, double slack) {
+        const Eigen::AlignedBox3d box = shape.bounds();
+        if (Eigen::ParametrizedLine<double, 3>(eye, ray).distance(box.center()) > 0.5 * box.diagonal().norm() + slack)
+            return kMiss;
+        const double t = shape.distanceToSurface(eye, ray);
+        return std::isnan(t) ? kMiss : t;
+    };
+    // The nearest hit through every pixel and the ring of pixels around the image.
+    const int paddedWidth = width_ + 2;
+    std::vector<double> nearest(static_cast<std::size_t>(paddedWidth * (height_ + 2)), kMiss);
+    const auto nearestAt = [&](int x, int y) -> double& {
+        return nearest[static_cast<std::size_t>((y + 1) * paddedWidth + x + 1)];
+    };
+    for (int y = -1; y <= height_; ++y) {
+        for (int x = -1; x <= width_; ++x) {
+            const Direction ray = pixelRay(camera, x, y, width_, height_);
+            for (const auto& shape : shapes) nearestAt(x, y) = std::min(nearestAt(x, y), distance(*shape, ray, 0.0));
+            if (x >= 0 && x < width_ && y >= 0 && y < height_) hit_[index(x, y)] = nearestAt(x, y) < kMiss ? 1 : 0;
+        }
+    }
+    // A shape's own silhouette through this pixel, where it is in front: its rays here and at some 8-neighbour
+    // meet it differently, and it is the nearest shape on the side that meets it. Where shapes overlap on
+    // screen the union's boundary misses such a pixel, and a ray that grazes a shape is a coin toss for any
+    // rasteriser; outlines hidden behind nearer shapes stay outside the band.
     for (int y = 0; y < height_; ++y) {
         for (int x = 0; x < width_; ++x) {
-            const Direction ray = pixelRay(camera, x, y, width_, height_);
-            const Eigen::ParametrizedLine<double, 3> line(eye, ray);
-            const auto near = [&](const Shape& shape, double slack) {
-                const Eigen::AlignedBox3d box = shape.bounds();
-                return line.distance(box.center()) <= 0.5 * box.diagonal().norm() + slack;
-            };
-            hit_[index(x, y)] = std::any_of(shapes.begin(), shapes.end(), [&](const std::unique_ptr<Shape>& shape) {
-                return near(*shape, 0.0) && !std::isnan(shape->distanceToSurface(eye, ray));
-            });
-            // A shape's own silhouette through this pixel: its rays here and at some 8-neighbour meet it
-            // differently. Where shapes overlap on screen the union's boundary misses it, and a ray that
-            // grazes one shape is a coin toss for any rasteriser.
+            std::array<Direction, 9> rays;  // this pixel's (4) and its neighbours'
+            for (int k = 0; k < 9; ++k) rays[k] = pixelRay(camera, x + k % 3 - 1, y + k / 3 - 1, width_, height_);
+            // The sine of the angle between the rays of diagonal neighbours, twice: at a shape's distance, a
+            // neighbour's ray passes within that times the distance of this pixel's.
+            const double spread = 2.0 * rays[4].vector().cross(rays[8].vector()).norm();
+            const Eigen::ParametrizedLine<double, 3> line(eye, rays[4]);
             for (const auto& shape : shapes) {
-                const double slack =
-                    2.0 * line.distance(eye + pixelRay(camera, x + 1, y + 1, width_, height_).vector() *
-                                                  (shape->bounds().center() - eye).norm());
-                if (!near(*shape, slack)) continue;
-                const bool here = !std::isnan(shape->distanceToSurface(eye, ray));
-                for (int ny = y - 1; ny <= y + 1 && !silhouette_[index(x, y)]; ++ny) {
-                    for (int nx = x - 1; nx <= x + 1; ++nx) {
-                        const Direction next = pixelRay(camera, nx, ny, width_, height_);
-                        if (!std::isnan(shape->distanceToSurface(eye, next)) != here) {
-                            silhouette_[index(x, y)] = 1;
-                            break;
-                        }
+                const Eigen::AlignedBox3d box = shape->bounds();
+                const double slack = spread * (box.center() - eye).norm();
+                if (line.distance(box.center()) > 0.5 * box.diagonal().norm() + slack) continue;
+                const double here = distance(*shape, rays[4], slack);
+                for (int k = 0; k < 9; ++k) {
+                    const double there = distance(*shape, rays[k], slack);
+                    if ((here < kMiss) == (there < kMiss)) continue;
+                    if (here < kMiss ? here == nearestAt(x, y) : there == nearestAt(x + k % 3 - 1, y + k / 3 - 1)) {
+                        silhouette_[index(x, y)] = 1;
+                        break;
                     }
                 }
                 if (silhouette_[index(x, y)]) break;

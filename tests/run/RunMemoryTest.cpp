@@ -46,7 +46,7 @@ TEST(RunMemory, RefusesOnlyWhatDoesNotFit) {
     need.mergesRanks = true;
     EXPECT_EQ(traceMemoryProblem(need, 8.5e9).value_or("none"),
               "this trace needs about 14 GB (tallies 2 GB per thread x 2 threads and four more copies to merge the "
-              "ranks, paths 1 GB, detector records 0 bytes), more than the 8.5 GB this machine has available "
+              "ranks, paths 2 GB, detector records 0 bytes), more than the 8.5 GB this machine has available "
               "(docs/limits.md)");
     // --photons near 2^64: the records' cap of 16 per photon must not wrap around.
     TraceSettings huge;
