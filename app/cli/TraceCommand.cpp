@@ -212,19 +212,21 @@ int traceAndWrite(const TraceOptions& options, const Ranks& ranks, std::ostream&
     TraceResult result;
     try {
         result = traceOnRanks(ranks, *setup.optical, scene.sources, info.settings, setup.prepared.tallies, control);
-    } catch (const std::bad_alloc&) {
-        if (!ranks.parallel()) throw;
-        // As for one process (exit 2, nothing written), but every rank must end: the others may be waiting for
-        // this one's messages. The folder rank 0 created stays when another rank ran out.
-        err << "dropscope: out of memory on rank " << ranks.rank()
-            << ": this run needs more than the machine allows (docs/limits.md); nothing was written\n"
-            << std::flush;
-        createdFolder.discard();
-        ranks.abort(kExitBadInput);
     } catch (const std::exception& error) {
         if (!ranks.parallel()) throw;
-        err << "dropscope: internal error on rank " << ranks.rank() << ": " << error.what() << '\n' << std::flush;
-        ranks.abort(kExitInternalError);  // the other ranks may be waiting for this one's messages
+        // As for one process (exit 2 out of memory, 1 otherwise; nothing written), but every rank must end: the
+        // others may be waiting for this one's messages. The folder rank 0 created stays when another rank
+        // failed: MPI_Abort ends rank 0 without unwinding.
+        const bool outOfMemory = dynamic_cast<const std::bad_alloc*>(&error) != nullptr;
+        if (outOfMemory) {
+            err << "dropscope: out of memory on rank " << ranks.rank()
+                << ": this run needs more than the machine allows (docs/limits.md); nothing was written\n";
+        } else {
+            err << "dropscope: internal error on rank " << ranks.rank() << ": " << error.what() << '\n';
+        }
+        err.flush();
+        createdFolder.discard();
+        ranks.abort(outOfMemory ? kExitBadInput : kExitInternalError);
     }
     // Rank 0 owns the run's exit status: a rank that ended early with a status of its own could make mpirun
     // end the job while rank 0 still writes.

@@ -52,8 +52,6 @@ public:
     bool isString() const { return value_.is_string(); }
     bool isObject() const { return value_.is_object(); }
     bool isArray() const { return value_.is_array(); }
-    // The value as compact JSON text, e.g. to tell equal values apart from different ones.
-    std::string text() const { return value_.dump(); }
 
     // Scalars. number() is finite; positive() is finite and > 0; nonNegative() finite and >= 0.
     double number() const;
