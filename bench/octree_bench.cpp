@@ -160,6 +160,7 @@ struct SizeResult {
     double floatBytes = 0.0;       // per droplet: Embree's memory monitor
     double userBytes = 0.0;        // per droplet: Embree's memory monitor + our packed spheres
     int depth = 0;
+    int gridLevel = 0;
     std::size_t leaves = 0;
     double referencesPerDroplet = 0.0;
     std::vector<OrderResult> orders;
@@ -249,6 +250,7 @@ SizeResult runSize(std::size_t count, const Options& options) {
     result.octreeBytesUsed = perDroplet(static_cast<double>(octree.bytesUsed()));
     result.octreeHeap = perDroplet(static_cast<double>(heapOctree) - static_cast<double>(heapShapes));
     result.octreeTotal = perDroplet(static_cast<double>(heapOctree) - static_cast<double>(heapStart));
+    result.gridLevel = octree.gridLevel();
     for (const LevelStatistics& level : octree.statistics()) {
         result.depth = std::max(result.depth, level.level);
         result.leaves += level.leaves;
@@ -295,14 +297,14 @@ void printTables(const std::vector<SizeResult>& results, double floatTnearRelati
     std::cout << "\n### Build and memory (bytes per droplet)\n\n"
                  "| N | cube half-side | octree build s | Embree float build s | Embree user build s | "
                  "octree bytesUsed | octree heap | octree + Spheres heap | Embree float | Embree user + spheres | "
-                 "octree depth | leaves | references per droplet |\n"
-                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+                 "octree depth | top grid level | leaves | references per droplet |\n"
+                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SizeResult& r : results) {
         std::cout << "| " << r.count << " | " << fixed(r.halfSide, 3) << " | " << fixed(r.octreeBuild, 3) << " | "
                   << fixed(r.floatBuild, 3) << " | " << fixed(r.userBuild, 3) << " | " << fixed(r.octreeBytesUsed, 0)
                   << " | " << fixed(r.octreeHeap, 0) << " | " << fixed(r.octreeTotal, 0) << " | "
-                  << fixed(r.floatBytes, 0) << " | " << fixed(r.userBytes, 0) << " | " << r.depth << " | " << r.leaves
-                  << " | " << fixed(r.referencesPerDroplet, 2) << " |\n";
+                  << fixed(r.floatBytes, 0) << " | " << fixed(r.userBytes, 0) << " | " << r.depth << " | "
+                  << r.gridLevel << " | " << r.leaves << " | " << fixed(r.referencesPerDroplet, 2) << " |\n";
     }
     std::cout << "\n### Throughput (Mrays/s, one thread)\n\n"
                  "| N | rays | brute force | octree | Embree float | Embree user (double) | octree / Embree float | "

@@ -21,6 +21,12 @@ constexpr double kMarginRelative = 1e-8;
 // 1e6, 46 MB, cost up to a quarter of random-ray throughput). 8 MiB: a few times a core's L2, inside L3.
 constexpr std::size_t kPrefetchBytes = std::size_t{8} << 20;
 
+// The top grid (docs/octree.md): below level 2 it would skip at most the root's visit; above level 6 its
+// table (8^level cell indices) would pass 1 MiB, and in a tree that deep the levels below the grid are
+// few against those it skips.
+constexpr int kMinGridLevel = 2;
+constexpr int kMaxGridLevel = 6;
+
 CellBounds inflated(const CellBounds& b, double by) { return CellBounds(b.min().array() - by, b.max().array() + by); }
 
 // A cube around all the shapes, so that cells are cubes too.
@@ -137,6 +143,55 @@ void Octree::freeze() {
     const CellBounds root = inflated(rootBounds_, margin_);
     coordinateScale_ = largestCoordinate(root);
     prefetch_ = blocks_.size() * sizeof(SphereBlock) > kPrefetchBytes;
+    buildGrid();
+}
+
+// The deepest level (up to kMaxGridLevel) above which every cell is an inner cell: its 8^level cells are
+// then all present, and a ray can walk them as a uniform grid without visiting the levels above. Inner
+// cells may hold shapes (those reaching all 8 children); the levels between the root and the grid are
+// kept as tables too when any of them does, so the walk can test them as it enters their cells.
+void Octree::buildGrid() {
+    gridLevel_ = 0;
+    grid_.clear();
+    gridAbove_.clear();
+    struct Placed {
+        std::uint32_t cell;
+        std::uint32_t x, y, z;
+    };
+    std::vector<std::vector<Placed>> levels{{{0, 0, 0, 0}}};
+    while (static_cast<int>(levels.size()) <= kMaxGridLevel) {
+        const std::vector<Placed>& level = levels.back();
+        const bool allInner = std::none_of(level.begin(), level.end(),
+                                           [&](const Placed& placed) { return cells_[placed.cell].isLeaf(); });
+        if (!allInner) break;
+        std::vector<Placed> children;
+        children.reserve(level.size() * 8);
+        for (const Placed& placed : level) {
+            for (std::uint32_t child = 0; child < 8; ++child) {
+                children.push_back({cells_[placed.cell].firstChild + child, 2 * placed.x + (child & 1),
+                                    2 * placed.y + ((child >> 1) & 1), 2 * placed.z + ((child >> 2) & 1)});
+            }
+        }
+        levels.push_back(std::move(children));
+    }
+    const int depth = static_cast<int>(levels.size()) - 1;
+    if (depth < kMinGridLevel) return;
+    gridLevel_ = depth;
+    const auto table = [&](const std::vector<Placed>& level, int at, std::vector<std::uint32_t>& into) {
+        const std::size_t side = std::size_t{1} << at;
+        const std::size_t offset = into.size();
+        into.resize(offset + side * side * side);
+        for (const Placed& placed : level) into[offset + (placed.z * side + placed.y) * side + placed.x] = placed.cell;
+    };
+    table(levels[static_cast<std::size_t>(depth)], depth, grid_);
+    grid_.shrink_to_fit();
+    bool innerShapes = false;
+    for (int at = 1; at < depth; ++at) {
+        for (const Placed& placed : levels[static_cast<std::size_t>(at)]) innerShapes |= cells_[placed.cell].size() > 0;
+    }
+    if (!innerShapes) return;
+    for (int at = 1; at < depth; ++at) table(levels[static_cast<std::size_t>(at)], at, gridAbove_);
+    gridAbove_.shrink_to_fit();
 }
 
 void Octree::thaw() {
@@ -302,7 +357,8 @@ std::vector<LevelStatistics> Octree::statistics() const {
 std::size_t Octree::bytesUsed() const {
     return sizeof(*this) + cells_.capacity() * sizeof(Cell) + blocks_.capacity() * sizeof(SphereBlock) +
            sphereIds_.capacity() * sizeof(ShapeId) + others_.capacity() * sizeof(ShapeId) +
-           shapes_.capacity() * sizeof(std::unique_ptr<Shape>);
+           shapes_.capacity() * sizeof(std::unique_ptr<Shape>) +
+           (grid_.capacity() + gridAbove_.capacity()) * sizeof(std::uint32_t);
 }
 
 }  // namespace dropscope

@@ -66,6 +66,10 @@ public:
     void insertAt(ShapeId id, std::unique_ptr<Shape> shape);
     std::unique_ptr<Shape> remove(ShapeId id);
 
+    // The level whose cells the traversal walks as a uniform grid (0: none): every cell above it is an
+    // inner cell (docs/octree.md, "The top grid").
+    int gridLevel() const { return gridLevel_; }
+
     std::vector<LevelStatistics> statistics() const;
     // Calls visit(bounds, level, isLeaf, shapesStored) for every cell, depth first from the root, for
     // drawing; descends into a cell's children only when visit returns true.
@@ -106,6 +110,7 @@ private:
     // insert and insertAt: stores `shape` in the empty slot `id` and places it.
     void fillSlot(ShapeId id, std::unique_ptr<Shape> shape);
     void freeze();
+    void buildGrid();
     void thaw();
     void place(std::uint32_t node, const CellBounds& bounds, ShapeId id, const CellBounds& extent);
     void store(Node& node, ShapeId id) const;
@@ -137,10 +142,14 @@ private:
     std::vector<SphereBlock> blocks_;  // each cell's spheres, relative to its centre, padded to 4
     std::vector<ShapeId> sphereIds_;   // 4 per block, RayHit::kNone in padding
     std::vector<ShapeId> others_;
-    double rootHalf_ = 0.0;  // half the root's side
-    double coordinateScale_ = 0.0;
-    bool prefetch_ = false;  // whether the traversal prefetches children (a tree too large for the caches)  // largest
-                             // |coordinate| of the inflated root, for the prefilter's slack
+    double rootHalf_ = 0.0;         // half the root's side
+    double coordinateScale_ = 0.0;  // largest |coordinate| of the inflated root, for the prefilter's slack
+    bool prefetch_ = false;         // whether the traversal prefetches children (a tree too large for the caches)
+    int gridLevel_ = 0;
+    std::vector<std::uint32_t> grid_;  // the cells of level gridLevel_, x fastest, then y, then z
+    // Levels 1 .. gridLevel_ - 1 in the same order, one after the other, when any of their cells holds a
+    // shape; empty otherwise.
+    std::vector<std::uint32_t> gridAbove_;
 };
 
 template <class F>

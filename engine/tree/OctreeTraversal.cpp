@@ -106,19 +106,101 @@ struct Octree::Traversal {
         // In a large tree memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask
         // for the children's first sphere blocks (up to 8 cache lines each) before testing the first child.
         for (int k = 0; k < count && tree.prefetch_; ++k) {
-            const Cell& next = tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])];
-            const SphereBlock* blocks = tree.blocks_.data() + next.firstBlock;
-            const std::uint32_t blockCount = (std::min<std::uint32_t>(next.sphereCount, 16) + 3) / 4;
-            for (std::uint32_t b = 0; b < blockCount; ++b) {
-                __builtin_prefetch(blocks + b);
-                __builtin_prefetch(reinterpret_cast<const char*>(blocks + b) + 64);
-            }
-            if (!next.isLeaf()) __builtin_prefetch(tree.cells_.data() + next.firstChild);
+            prefetchCell(tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])]);
         }
         for (int k = 0; k < count; ++k) {
             if (hit.distance < from[k]) return;  // nothing further on can be nearer
             visit(cell.firstChild + static_cast<std::uint32_t>(order[k]), childCentre(mid, half, order[k]), 0.5 * half,
                   level + 1, from[k], to[k]);
+        }
+    }
+
+    // Asks for a cell's first sphere blocks (up to 16 spheres, 8 cache lines) and its children's cells.
+    void prefetchCell(const Cell& cell) const {
+        const SphereBlock* blocks = tree.blocks_.data() + cell.firstBlock;
+        const std::uint32_t blockCount = (std::min<std::uint32_t>(cell.sphereCount, 16) + 3) / 4;
+        for (std::uint32_t b = 0; b < blockCount; ++b) {
+            __builtin_prefetch(blocks + b);
+            __builtin_prefetch(reinterpret_cast<const char*>(blocks + b) + 64);
+        }
+        if (!cell.isLeaf()) __builtin_prefetch(tree.cells_.data() + cell.firstChild);
+    }
+
+    // Tests the shapes of the inner cells between the root and the grid that the ray enters together with
+    // grid cell `here` (coming from grid cell `previous`, unless `first`), outermost first, as visit()
+    // would on entering them.
+    void enterAbove(const int* here, const int* previous, int gridLevel, bool first) {
+        std::size_t offset = 0;
+        for (int level = 1; level < gridLevel; ++level) {
+            const int shift = gridLevel - level;
+            const std::size_t side = std::size_t{1} << level;
+            const bool entered = first || (here[0] >> shift) != (previous[0] >> shift) ||
+                                 (here[1] >> shift) != (previous[1] >> shift) ||
+                                 (here[2] >> shift) != (previous[2] >> shift);
+            if (entered) {
+                const std::size_t at = (std::size_t(here[2] >> shift) * side + std::size_t(here[1] >> shift)) * side +
+                                       std::size_t(here[0] >> shift);
+                const Cell& cell = tree.cells_[tree.gridAbove_[offset + at]];
+                if (cell.size() > 0) testShapes(cell);
+            }
+            offset += side * side * side;
+        }
+    }
+
+    // The same walk as visit() from the root, without the empty levels above the top grid: the root's
+    // own shapes, then the grid's cells the ray crosses over [tEnter, tExit], in order (a 3D DDA: the next
+    // cell is across the nearest of the three planes ahead; two or three at once through an edge or
+    // corner), each visited as visit() would, stopping once the best hit lies before the next cell.
+    void walkGrid(double tEnter, double tExit) {
+        const Cell& root = tree.cells_[0];
+        if (root.size() > 0) testShapes(root);
+        const int level = tree.gridLevel_;
+        const int side = 1 << level;
+        const double half = std::ldexp(tree.rootHalf_, -level);
+        const Point low = tree.rootBounds_.center().array() - tree.rootHalf_;
+        int index[3];
+        int step[3];
+        double next[3];  // where the ray crosses the plane ahead on each axis
+        for (int axis = 0; axis < 3; ++axis) {
+            const double at = d[axis] == 0.0 ? p[axis] : p[axis] + tEnter * d[axis];
+            const double cell = std::floor((at - low[axis]) / (2.0 * half));
+            index[axis] = cell < 0.0 ? 0 : cell >= side ? side - 1 : static_cast<int>(cell);
+            step[axis] = d[axis] > 0.0 ? 1 : -1;
+            next[axis] = crossing(axis, low[axis] + 2.0 * half * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
+        }
+        double t = tEnter;
+        int previous[3] = {0, 0, 0};
+        std::uint32_t current = tree.grid_[(std::size_t(index[2]) * side + index[1]) * side + index[0]];
+        for (;;) {
+            const double out = std::min({next[0], next[1], next[2], tExit});
+            const int here[3] = {index[0], index[1], index[2]};
+            bool last = out >= tExit;
+            std::uint32_t following = 0;
+            if (!last) {
+                for (int axis = 0; axis < 3; ++axis) {
+                    if (next[axis] != out) continue;
+                    index[axis] += step[axis];
+                    if (index[axis] < 0 || index[axis] >= side) last = true;
+                    next[axis] = crossing(axis, low[axis] + 2.0 * half * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
+                }
+                if (!last) {
+                    following = tree.grid_[(std::size_t(index[2]) * side + index[1]) * side + index[0]];
+                    if (tree.prefetch_) prefetchCell(tree.cells_[following]);
+                }
+            }
+            if (!tree.gridAbove_.empty()) enterAbove(here, previous, level, t == tEnter);
+            const Cell& cell = tree.cells_[current];
+            if (cell.isLeaf()) {
+                if (cell.size() > 0) testShapes(cell);
+            } else {
+                const Point mid(low.x() + (2 * here[0] + 1) * half, low.y() + (2 * here[1] + 1) * half,
+                                low.z() + (2 * here[2] + 1) * half);
+                visit(current, mid, half, level, t, out);
+            }
+            if (last || hit.distance < out) return;  // nothing further on can be nearer
+            std::copy(here, here + 3, previous);
+            t = out;
+            current = following;
         }
     }
 
@@ -128,7 +210,12 @@ struct Octree::Traversal {
         slack = kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_);
         const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d);
         if (!span) return;
-        visit(0, tree.rootBounds_.center(), tree.rootHalf_, 0, span->first, span->second);
+        // The debugger's record lists every level's cells, so it takes the walk from the root.
+        if (tree.gridLevel_ > 0 && !record) {
+            walkGrid(span->first, span->second);
+        } else {
+            visit(0, tree.rootBounds_.center(), tree.rootHalf_, 0, span->first, span->second);
+        }
         if (record) record->hit = hit;
     }
 };

@@ -99,6 +99,60 @@ TEST(Octree, FirstHitEqualsBruteForceOnMixedScenes) {
     }
 }
 
+// The walk over the top grid (docs/octree.md, "The top grid") must find what the walk from the root finds.
+// A droplet cloud fills every cell down to level 3; a box around the cloud stays in the root; a sphere on
+// the centre of a level-1 cell reaches all 8 of its children, so it stays in that inner cell, above the
+// grid, where only the walk's test of the cells it enters on the way finds it.
+TEST(Octree, TopGridWalkEqualsBruteForce) {
+    Rng rng(31);
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int i = 0; i < 4000; ++i) {
+        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 2.0), testing::uniform(rng, 0.01, 0.08)));
+    }
+    shapes.push_back(std::make_unique<Box>(Point(-2.1, -2.1, -2.1), Point(2.1, 2.1, 2.1)));  // fixes the root
+    const Point straddler = Point::Constant(0.5 * 2.1 * (1.0 + 1e-6));  // centre of the (+, +, +) level-1 cell
+    shapes.push_back(std::make_unique<Sphere>(straddler, 0.05));
+    const auto straddlerId = static_cast<ShapeId>(shapes.size() - 1);
+    const Octree tree(std::move(shapes), OctreeSettings{10, 16});
+    ASSERT_EQ(tree.rootBounds().center(), Point::Zero());
+    ASSERT_GE(tree.gridLevel(), 3);
+
+    std::vector<Ray> rays = awkwardRays(rng, tree, 6000);
+    for (int i = 0; i < 500; ++i) {  // at the straddler from near it, across the inner cell's mid-planes
+        const Point from = testing::randomPoint(rng, 0.25, straddler);
+        rays.push_back({from, Direction(straddler - from)});
+    }
+    const double cell = tree.rootBounds().sizes().maxCoeff() / std::pow(2.0, tree.gridLevel());
+    for (int i = 0; i < 500; ++i) {  // along the grid's planes and edges, parallel to an axis
+        Point o =
+            tree.rootBounds().min().array() + cell * (Eigen::Array3d() << static_cast<double>(rng() % 9),
+                                                      static_cast<double>(rng() % 9), static_cast<double>(rng() % 9))
+                                                         .finished();
+        const int axis = static_cast<int>(rng() % 3);
+        o[axis] = tree.rootBounds().min()[axis] - 1.0;
+        Eigen::Vector3d v = Eigen::Vector3d::Zero();
+        v[axis] = 1.0;
+        rays.push_back({o, Direction(v)});
+    }
+    int straddlerHits = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        SCOPED_TRACE(::testing::Message() << "ray " << i);
+        const RayHit expected = bruteForceFirstHit(tree.shapes(), rays[i].origin, rays[i].direction);
+        straddlerHits += expected.shape == straddlerId ? 1 : 0;
+        expectSameHit(tree.firstHit(rays[i].origin, rays[i].direction), expected);
+        TraversalRecord record;  // the walk from the root, every level
+        expectSameHit(tree.firstHit(rays[i].origin, rays[i].direction, record), expected);
+    }
+    EXPECT_GT(straddlerHits, 300);
+}
+
+TEST(Octree, NoTopGridWhereALevelHasLeaves) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::make_unique<Sphere>(Point(-7, -7, -7), 0.5));
+    shapes.push_back(std::make_unique<Sphere>(Point(7, 7, 7), 0.5));
+    EXPECT_EQ(Octree(std::move(shapes), OctreeSettings{8, 1}).gridLevel(), 0);
+}
+
 TEST(Octree, ReferenceTreeEqualsBruteForceAndRespectsTheSeedModel) {
     Rng rng(7);
     const Octree tree(randomScene(rng, 600, 4.0), OctreeSettings{6, 4});
