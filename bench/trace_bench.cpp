@@ -258,15 +258,16 @@ FirstHitTimes timeFirstHits(const Octree& octree, const std::vector<Ray>& rays, 
 }
 
 void printScene(const Scene& scene, const std::string& name, const BuildTimes& build, double parseSeconds,
-                bool builtIn) {
+                bool builtIn, int gridLevel) {
     std::cout << "\n### Scene and build (median of the repeats; one thread)\n\n"
                  "| scene | shapes | volume fraction | mean optical depth | parse + generate s | clone s | "
-                 "octree alone s | OpticalScene s | of which parents s |\n|---|---|---|---|---|---|---|---|---|\n"
+                 "octree alone s | OpticalScene s | of which parents s | octree top grid level |\n"
+                 "|---|---|---|---|---|---|---|---|---|---|\n"
               << "| " << name << " | " << scene.shapes.size() << " | "
               << (builtIn ? fixed(100.0 * volumeFraction(scene), 2) + " %" : "-") << " | "
               << (builtIn ? fixed(builtInOpticalDepth(scene), 2) : "-") << " | " << fixed(parseSeconds, 3) << " | "
               << fixed(build.clone, 3) << " | " << fixed(build.octree, 3) << " | " << fixed(build.opticalScene, 3)
-              << " | " << fixed(build.opticalScene - build.clone - build.octree, 3) << " |\n";
+              << " | " << fixed(build.opticalScene - build.clone - build.octree, 3) << " | " << gridLevel << " |\n";
 }
 
 void printPhotons(const FateTally& tally, double expectedUnscattered) {
@@ -362,7 +363,7 @@ int main(int argc, char** argv) {
                   << ", photons " << options.photons << ", repeat " << options.repeat << ", threads 1 and "
                   << options.threads << ", seed " << options.seed << ", reference photons " << options.referencePhotons
                   << '\n';
-        printScene(scene, name, build, parseSeconds, builtIn);
+        printScene(scene, name, build, parseSeconds, builtIn, optical->octree().gridLevel());
         printPhotons(tally, builtIn ? std::exp(-builtInOpticalDepth(scene)) : -1.0);
         printTransport(runs, tally);
         printReference(hits, runs.front(), tally, options.threads);

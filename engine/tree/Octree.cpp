@@ -4,6 +4,7 @@
 #include "tree/BoundingBox.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace dropscope {
@@ -177,6 +178,9 @@ void Octree::buildGrid() {
     const int depth = static_cast<int>(levels.size()) - 1;
     if (depth < kMinGridLevel) return;
     gridLevel_ = depth;
+    gridLow_ = rootBounds_.center().array() - rootHalf_;
+    gridCell_ = std::ldexp(2.0 * rootHalf_, -depth);
+    gridCellInverse_ = 1.0 / gridCell_;
     const auto table = [&](const std::vector<Placed>& level, int at, std::vector<std::uint32_t>& into) {
         const std::size_t side = std::size_t{1} << at;
         const std::size_t offset = into.size();

@@ -146,6 +146,9 @@ private:
     double coordinateScale_ = 0.0;  // largest |coordinate| of the inflated root, for the prefilter's slack
     bool prefetch_ = false;         // whether the traversal prefetches children (a tree too large for the caches)
     int gridLevel_ = 0;
+    Point gridLow_ = Point::Zero();  // the root's lowest corner
+    double gridCell_ = 0.0;          // a grid cell's side
+    double gridCellInverse_ = 0.0;
     std::vector<std::uint32_t> grid_;  // the cells of level gridLevel_, x fastest, then y, then z
     // Levels 1 .. gridLevel_ - 1 in the same order, one after the other, when any of their cells holds a
     // shape; empty otherwise.

@@ -25,6 +25,7 @@ struct Octree::Traversal {
     }
 
     double slack;  // the prefilter's, kPrefilterSlackRelative x (|p|_inf + the root's coordinate scale)
+    PrefilterRay prefilterRay;
 
     // The exact distance of one shape, offered to the best hit.
     void testExactly(ShapeId id, double distance) {
@@ -39,7 +40,7 @@ struct Octree::Traversal {
     // then every other shape exactly.
     void testShapes(const Cell& cell) {
         if (cell.sphereCount > 0) {
-            PrefilterRay ray{{p.x(), p.y(), p.z()}, {d.x(), d.y(), d.z()}, slack, 0.0};
+            PrefilterRay& ray = prefilterRay;
             for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
                 ray.limit = hit.distance + slack;
                 const std::uint32_t block = cell.firstBlock + first / SphereBlock::kWidth;
@@ -156,14 +157,14 @@ struct Octree::Traversal {
         if (root.size() > 0) testShapes(root);
         const int level = tree.gridLevel_;
         const int side = 1 << level;
-        const double half = std::ldexp(tree.rootHalf_, -level);
-        const Point low = tree.rootBounds_.center().array() - tree.rootHalf_;
+        const double half = 0.5 * tree.gridCell_;
+        const Point& low = tree.gridLow_;
         int index[3];
         int step[3];
         double next[3];  // where the ray crosses the plane ahead on each axis
         for (int axis = 0; axis < 3; ++axis) {
             const double at = d[axis] == 0.0 ? p[axis] : p[axis] + tEnter * d[axis];
-            const double cell = std::floor((at - low[axis]) / (2.0 * half));
+            const double cell = std::floor((at - low[axis]) * tree.gridCellInverse_);
             index[axis] = cell < 0.0 ? 0 : cell >= side ? side - 1 : static_cast<int>(cell);
             step[axis] = d[axis] > 0.0 ? 1 : -1;
             next[axis] = crossing(axis, low[axis] + 2.0 * half * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
@@ -208,6 +209,7 @@ struct Octree::Traversal {
         if (!d || !p.allFinite()) return;
         inverse = d.vector().cwiseInverse();
         slack = kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_);
+        prefilterRay = {{p.x(), p.y(), p.z()}, {d.x(), d.y(), d.z()}, slack, 0.0};
         const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d);
         if (!span) return;
         // The debugger's record lists every level's cells, so it takes the walk from the root.
@@ -241,14 +243,14 @@ std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const 
 }
 
 RayHit Octree::firstHit(const Point& p, const Direction& d) const {
-    Traversal traversal{*this, p, d, {}, nullptr, {}, 0.0};
+    Traversal traversal{*this, p, d, {}, nullptr, {}, 0.0, {}};
     traversal.run();
     return traversal.hit;
 }
 
 RayHit Octree::firstHit(const Point& p, const Direction& d, TraversalRecord& record) const {
     record = TraversalRecord{};
-    Traversal traversal{*this, p, d, {}, &record, {}, 0.0};
+    Traversal traversal{*this, p, d, {}, &record, {}, 0.0, {}};
     traversal.run();
     return traversal.hit;
 }
