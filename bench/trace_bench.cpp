@@ -257,8 +257,8 @@ FirstHitTimes timeFirstHits(const Octree& octree, const std::vector<Ray>& rays, 
     return times;
 }
 
-void printScene(const Scene& scene, const std::string& name, const BuildTimes& build, double parseSeconds,
-                bool builtIn, int gridLevel) {
+void printScene(const Scene& scene, const std::string& name, const BuildTimes& build, double parseSeconds, bool builtIn,
+                int gridLevel) {
     std::cout << "\n### Scene and build (median of the repeats; one thread)\n\n"
                  "| scene | shapes | volume fraction | mean optical depth | parse + generate s | clone s | "
                  "octree alone s | OpticalScene s | of which parents s | octree top grid level |\n"

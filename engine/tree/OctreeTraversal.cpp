@@ -19,9 +19,10 @@ struct Octree::Traversal {
     TraversalRecord* record;
     RayHit hit;
 
-    // Ray parameter at which it crosses the plane x_axis = value; +inf when parallel to it.
+    // Ray parameter at which it crosses the plane x_axis = value; +inf when parallel to it. 0 when p lies on
+    // it, also for a subnormal d[axis], whose inverse is infinite (0 x inf would be NaN).
     double crossing(int axis, double value) const {
-        return d[axis] == 0.0 ? kInfinity : (value - p[axis]) * inverse[axis];
+        return d[axis] == 0.0 ? kInfinity : value == p[axis] ? 0.0 : (value - p[axis]) * inverse[axis];
     }
 
     double slack;  // the prefilter's, kPrefilterSlackRelative x (|p|_inf + the root's coordinate scale)
@@ -161,35 +162,39 @@ struct Octree::Traversal {
         const Point& low = tree.gridLow_;
         int index[3];
         int step[3];
-        double next[3];  // where the ray crosses the plane ahead on each axis
+        // Where the ray crosses the plane ahead on each axis; +inf in the grid's last cell that way, which
+        // (as the recursive walk's last child) the ray leaves only at tExit, on the inflated root.
+        double next[3];
+        const auto planeAhead = [&](int axis) {
+            if (index[axis] == (d[axis] > 0.0 ? side - 1 : 0)) return kInfinity;
+            return crossing(axis, low[axis] + 2.0 * half * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
+        };
         for (int axis = 0; axis < 3; ++axis) {
             const double at = d[axis] == 0.0 ? p[axis] : p[axis] + tEnter * d[axis];
             const double cell = std::floor((at - low[axis]) * tree.gridCellInverse_);
             index[axis] = cell < 0.0 ? 0 : cell >= side ? side - 1 : static_cast<int>(cell);
             step[axis] = d[axis] > 0.0 ? 1 : -1;
-            next[axis] = crossing(axis, low[axis] + 2.0 * half * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
+            next[axis] = planeAhead(axis);
         }
         double t = tEnter;
+        bool first = true;
         int previous[3] = {0, 0, 0};
         std::uint32_t current = tree.grid_[(std::size_t(index[2]) * side + index[1]) * side + index[0]];
         for (;;) {
             const double out = std::min({next[0], next[1], next[2], tExit});
             const int here[3] = {index[0], index[1], index[2]};
-            bool last = out >= tExit;
+            const bool last = out >= tExit;
             std::uint32_t following = 0;
             if (!last) {
                 for (int axis = 0; axis < 3; ++axis) {
                     if (next[axis] != out) continue;
                     index[axis] += step[axis];
-                    if (index[axis] < 0 || index[axis] >= side) last = true;
-                    next[axis] = crossing(axis, low[axis] + 2.0 * half * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
+                    next[axis] = planeAhead(axis);
                 }
-                if (!last) {
-                    following = tree.grid_[(std::size_t(index[2]) * side + index[1]) * side + index[0]];
-                    if (tree.prefetch_) prefetchCell(tree.cells_[following]);
-                }
+                following = tree.grid_[(std::size_t(index[2]) * side + index[1]) * side + index[0]];
+                if (tree.prefetch_) prefetchCell(tree.cells_[following]);
             }
-            if (!tree.gridAbove_.empty()) enterAbove(here, previous, level, t == tEnter);
+            if (!tree.gridAbove_.empty()) enterAbove(here, previous, level, first);
             const Cell& cell = tree.cells_[current];
             if (cell.isLeaf()) {
                 if (cell.size() > 0) testShapes(cell);
@@ -200,6 +205,7 @@ struct Octree::Traversal {
             }
             if (last || hit.distance < out) return;  // nothing further on can be nearer
             std::copy(here, here + 3, previous);
+            first = false;
             t = out;
             current = following;
         }

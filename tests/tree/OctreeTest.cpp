@@ -122,6 +122,21 @@ TEST(Octree, TopGridWalkEqualsBruteForce) {
         const Point from = testing::randomPoint(rng, 0.25, straddler);
         rays.push_back({from, Direction(straddler - from)});
     }
+    const std::size_t fromOtherCells = rays.size();
+    for (int i = 0; i < 300; ++i) {  // from the neighbouring level-1 cells, entering the straddler's on the way
+        Point from = testing::randomPoint(rng, 0.1, straddler);
+        from[i % 3] -= 1.1;
+        rays.push_back({from, Direction(straddler - from)});
+    }
+    const std::size_t subnormal = rays.size();
+    for (int i = 0; i < 60; ++i) {  // on a grid plane, moving along it by a subnormal component (1/d is inf)
+        Point from = testing::randomPoint(rng, 1.8);
+        const int axis = i % 3;
+        from[axis] = -2.1 * (1.0 + 1e-6) + 4.2 * (1.0 + 1e-6) / 8.0 * static_cast<double>(1 + i % 7);
+        Eigen::Vector3d v = testing::randomDirection(rng).vector();
+        v[axis] = (i % 2 == 0 ? 1e-320 : -1e-320);
+        rays.push_back({from, Direction(v)});
+    }
     const double cell = tree.rootBounds().sizes().maxCoeff() / std::pow(2.0, tree.gridLevel());
     for (int i = 0; i < 500; ++i) {  // along the grid's planes and edges, parallel to an axis
         Point o =
@@ -135,15 +150,56 @@ TEST(Octree, TopGridWalkEqualsBruteForce) {
         rays.push_back({o, Direction(v)});
     }
     int straddlerHits = 0;
+    int straddlerHitsFromOtherCells = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         SCOPED_TRACE(::testing::Message() << "ray " << i);
         const RayHit expected = bruteForceFirstHit(tree.shapes(), rays[i].origin, rays[i].direction);
         straddlerHits += expected.shape == straddlerId ? 1 : 0;
+        straddlerHitsFromOtherCells += expected.shape == straddlerId && i >= fromOtherCells && i < subnormal ? 1 : 0;
         expectSameHit(tree.firstHit(rays[i].origin, rays[i].direction), expected);
         TraversalRecord record;  // the walk from the root, every level
         expectSameHit(tree.firstHit(rays[i].origin, rays[i].direction, record), expected);
     }
     EXPECT_GT(straddlerHits, 300);
+    EXPECT_GT(straddlerHitsFromOtherCells, 60);
+}
+
+// The grid's last cell along an axis reaches to the inflated root, as the recursive walk's last child does. The
+// grid's far face, computed from the root's centre and half-side, can lie an ulp inside the root's face; a ray
+// starting there and leaving by a hair must still find a box inserted against the root's face further on. The
+// clouds are shifted until the rounding falls that way (about 1 in 12 does).
+TEST(Octree, TopGridWalkRunsToTheRootFace) {
+    bool found = false;
+    for (int shift = 0; shift < 400 && !found; ++shift) {
+        Rng rng(static_cast<unsigned>(33 + shift));
+        const Point offset = testing::randomPoint(rng, 5.0);
+        std::vector<std::unique_ptr<Shape>> shapes;
+        for (int i = 0; i < 3000; ++i) {
+            shapes.push_back(
+                std::make_unique<Sphere>(testing::randomPoint(rng, 2.0, offset), testing::uniform(rng, 0.01, 0.06)));
+        }
+        Octree tree(std::move(shapes), OctreeSettings{10, 16});
+        if (tree.gridLevel() < 2) continue;
+        const CellBounds root = tree.rootBounds();
+        const double half = 0.5 * root.sizes().maxCoeff();
+        const Point low = root.center().array() - half;
+        const double cell = std::ldexp(2.0 * half, -tree.gridLevel());
+        const int side = 1 << tree.gridLevel();
+        const double face = low.x() + cell * side;
+        if (!(face < root.max().x())) continue;
+        found = true;
+        const double y = low.y() + cell * (side / 2);
+        const double z = low.z() + cell * (side / 2 + 0.5);
+        const ShapeId box = tree.insert(std::make_unique<Box>(Point(root.max().x() - 0.05, y + 0.1, z - 0.1),
+                                                              Point(root.max().x(), y + 0.2, z + 0.1)));
+        ASSERT_TRUE(tree.rootBounds().isApprox(root, 0.0));  // inside: placed, not rebuilt
+        const Point origin(face, y - 0.5 * cell, z);
+        const Direction along(1e-18, 1.0, 0.0);
+        const RayHit expected = bruteForceFirstHit(tree.shapes(), origin, along);
+        EXPECT_EQ(expected.shape, box);
+        expectSameHit(tree.firstHit(origin, along), expected);
+    }
+    EXPECT_TRUE(found);
 }
 
 TEST(Octree, NoTopGridWhereALevelHasLeaves) {
