@@ -107,7 +107,8 @@ TEST(Octree, TopGridWalkEqualsBruteForce) {
     Rng rng(31);
     std::vector<std::unique_ptr<Shape>> shapes;
     for (int i = 0; i < 4000; ++i) {
-        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 2.0), testing::uniform(rng, 0.01, 0.08)));
+        const double radius = testing::uniform(rng, 0.01, 0.08);  // one draw per statement (RandomGeometry.hpp)
+        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 2.0), radius));
     }
     shapes.push_back(std::make_unique<Box>(Point(-2.1, -2.1, -2.1), Point(2.1, 2.1, 2.1)));  // fixes the root
     const Point straddler = Point::Constant(0.5 * 2.1 * (1.0 + 1e-6));  // centre of the (+, +, +) level-1 cell
@@ -139,10 +140,10 @@ TEST(Octree, TopGridWalkEqualsBruteForce) {
     }
     const double cell = tree.rootBounds().sizes().maxCoeff() / std::pow(2.0, tree.gridLevel());
     for (int i = 0; i < 500; ++i) {  // along the grid's planes and edges, parallel to an axis
-        Point o =
-            tree.rootBounds().min().array() + cell * (Eigen::Array3d() << static_cast<double>(rng() % 9),
-                                                      static_cast<double>(rng() % 9), static_cast<double>(rng() % 9))
-                                                         .finished();
+        const auto x = static_cast<double>(rng() % 9);
+        const auto y = static_cast<double>(rng() % 9);
+        const auto z = static_cast<double>(rng() % 9);
+        Point o = tree.rootBounds().min().array() + cell * Eigen::Array3d(x, y, z);
         const int axis = static_cast<int>(rng() % 3);
         o[axis] = tree.rootBounds().min()[axis] - 1.0;
         Eigen::Vector3d v = Eigen::Vector3d::Zero();
@@ -175,8 +176,8 @@ TEST(Octree, TopGridWalkRunsToTheRootFace) {
         const Point offset = testing::randomPoint(rng, 5.0);
         std::vector<std::unique_ptr<Shape>> shapes;
         for (int i = 0; i < 3000; ++i) {
-            shapes.push_back(
-                std::make_unique<Sphere>(testing::randomPoint(rng, 2.0, offset), testing::uniform(rng, 0.01, 0.06)));
+            const double radius = testing::uniform(rng, 0.01, 0.06);
+            shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 2.0, offset), radius));
         }
         Octree tree(std::move(shapes), OctreeSettings{10, 16});
         if (tree.gridLevel() < 2) continue;
