@@ -185,7 +185,7 @@ void Octree::buildGrid() {
         const std::size_t side = std::size_t{1} << at;
         const std::size_t offset = into.size();
         into.resize(offset + side * side * side);
-        for (const Placed& placed : level) into[offset + (placed.z * side + placed.y) * side + placed.x] = placed.cell;
+        for (const Placed& placed : level) into[offset + gridSlot(placed.x, placed.y, placed.z, side)] = placed.cell;
     };
     table(levels[static_cast<std::size_t>(depth)], depth, grid_);
     grid_.shrink_to_fit();

@@ -125,6 +125,10 @@ private:
                 centre.y() + ((child & 2) != 0 ? quarter : -quarter),
                 centre.z() + ((child & 4) != 0 ? quarter : -quarter)};
     }
+    // The slot of cell (x, y, z) in a grid table of `side` cells a side: x fastest, then y, then z.
+    static std::size_t gridSlot(std::size_t x, std::size_t y, std::size_t z, std::size_t side) {
+        return (z * side + y) * side + x;
+    }
     // Calls f(id) for every shape a frozen cell holds, spheres first.
     template <class F>
     void forEachShapeIn(const Cell& cell, F&& f) const;
@@ -149,7 +153,7 @@ private:
     Point gridLow_ = Point::Zero();  // the root's lowest corner
     double gridCell_ = 0.0;          // a grid cell's side
     double gridCellInverse_ = 0.0;
-    std::vector<std::uint32_t> grid_;  // the cells of level gridLevel_, x fastest, then y, then z
+    std::vector<std::uint32_t> grid_;  // the cells of level gridLevel_, at their gridSlot
     // Levels 1 .. gridLevel_ - 1 in the same order, one after the other, when any of their cells holds a
     // shape; empty otherwise.
     std::vector<std::uint32_t> gridAbove_;

@@ -140,8 +140,8 @@ struct Octree::Traversal {
                                  (here[1] >> shift) != (previous[1] >> shift) ||
                                  (here[2] >> shift) != (previous[2] >> shift);
             if (entered) {
-                const std::size_t at = (std::size_t(here[2] >> shift) * side + std::size_t(here[1] >> shift)) * side +
-                                       std::size_t(here[0] >> shift);
+                const std::size_t at = gridSlot(std::size_t(here[0] >> shift), std::size_t(here[1] >> shift),
+                                                std::size_t(here[2] >> shift), side);
                 const Cell& cell = tree.cells_[tree.gridAbove_[offset + at]];
                 if (cell.size() > 0) testShapes(cell);
             }
@@ -167,7 +167,7 @@ struct Octree::Traversal {
         double next[3];
         const auto planeAhead = [&](int axis) {
             if (index[axis] == (d[axis] > 0.0 ? side - 1 : 0)) return kInfinity;
-            return crossing(axis, low[axis] + 2.0 * half * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
+            return crossing(axis, low[axis] + tree.gridCell_ * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
         };
         for (int axis = 0; axis < 3; ++axis) {
             const double at = d[axis] == 0.0 ? p[axis] : p[axis] + tEnter * d[axis];
@@ -179,7 +179,8 @@ struct Octree::Traversal {
         double t = tEnter;
         bool first = true;
         int previous[3] = {0, 0, 0};
-        std::uint32_t current = tree.grid_[(std::size_t(index[2]) * side + index[1]) * side + index[0]];
+        std::uint32_t current = tree.grid_[gridSlot(std::size_t(index[0]), std::size_t(index[1]), std::size_t(index[2]),
+                                                    std::size_t(side))];
         for (;;) {
             const double out = std::min({next[0], next[1], next[2], tExit});
             const int here[3] = {index[0], index[1], index[2]};
@@ -191,7 +192,8 @@ struct Octree::Traversal {
                     index[axis] += step[axis];
                     next[axis] = planeAhead(axis);
                 }
-                following = tree.grid_[(std::size_t(index[2]) * side + index[1]) * side + index[0]];
+                following = tree.grid_[gridSlot(std::size_t(index[0]), std::size_t(index[1]), std::size_t(index[2]),
+                                                std::size_t(side))];
                 if (tree.prefetch_) prefetchCell(tree.cells_[following]);
             }
             if (!tree.gridAbove_.empty()) enterAbove(here, previous, level, first);
