@@ -3,10 +3,14 @@
 #include "scene/JsonPath.hpp"
 #include "scene/SceneLimits.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <fstream>
 
 namespace dropscope {
@@ -21,6 +25,11 @@ constexpr std::size_t kBlockBytes = std::size_t{1} << 20;
 
 // The part of a text whose lines are counted to reserve room for its rays.
 constexpr std::size_t kSampleBytes = kBlockBytes;
+
+// Ended lines are parsed on up to kMaxParts threads (OpenMP's count), in parts of at least kPartBytes: less is
+// parsed by one thread, where starting a second would cost more than it saves.
+constexpr int kMaxParts = 16;
+constexpr std::size_t kPartBytes = std::size_t{1} << 16;
 
 std::string_view trimmed(std::string_view s) {
     while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
@@ -107,6 +116,7 @@ public:
         rays_.reserve(sampleLines + sampleLines * restBytes / std::max<std::size_t>(sample.size(), 1));
     }
 
+    // One line, in order: the header until it is seen, then a ray.
     void add(std::string_view raw) {
         ++line_;
         const std::string_view content = trimmed(raw);
@@ -122,12 +132,16 @@ public:
 
     // Every line up to the last '\n' of [begin, end); returns where the rest (a line not yet ended) starts.
     const char* addEndedLines(const char* begin, const char* end) {
-        while (const void* newline = std::memchr(begin, '\n', static_cast<std::size_t>(end - begin))) {
-            const char* lineEnd = static_cast<const char*>(newline);
-            add(std::string_view(begin, static_cast<std::size_t>(lineEnd - begin)));
-            begin = lineEnd + 1;
+        while (!headerSeen_) {
+            const void* newline = std::memchr(begin, '\n', static_cast<std::size_t>(end - begin));
+            if (!newline) return begin;
+            add(std::string_view(begin, static_cast<std::size_t>(static_cast<const char*>(newline) - begin)));
+            begin = static_cast<const char*>(newline) + 1;
         }
-        return begin;
+        const char* last = end;
+        while (last != begin && last[-1] != '\n') --last;
+        if (last != begin) addRayLines(begin, last);
+        return last;
     }
 
     std::vector<CsvRay> finish() {
@@ -138,6 +152,74 @@ public:
     }
 
 private:
+    // Lines of rays, [begin, end) ending with '\n', cut into parts at line ends and parsed in parallel, each
+    // part into its own slots of rays_ (as many as its lines; blank lines leave some unused, closed up after).
+    // The first error in the text is the one thrown, with its line number, as if read line by line.
+    void addRayLines(const char* begin, const char* end) {
+        const auto bytes = static_cast<std::size_t>(end - begin);
+        const std::size_t parts =
+            std::clamp<std::size_t>(bytes / kPartBytes, 1, std::min<std::size_t>(omp_get_max_threads(), kMaxParts));
+        std::array<const char*, kMaxParts + 1> cuts{};
+        cuts[0] = begin;
+        cuts[parts] = end;
+        for (std::size_t part = 1; part < parts; ++part) {
+            const char* at = std::max(cuts[part - 1], begin + bytes * part / parts);
+            while (at != begin && at[-1] != '\n') ++at;  // stops at end at the latest
+            cuts[part] = at;
+        }
+        std::array<std::size_t, kMaxParts + 1> linesBefore{};  // of each part in the file; [parts]: all
+        std::array<std::size_t, kMaxParts> written{};
+        std::array<std::exception_ptr, kMaxParts> errors{};
+        const int threads = static_cast<int>(parts);
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+        for (int k = 0; k < threads; ++k) {
+            const auto part = static_cast<std::size_t>(k);
+            linesBefore[part + 1] = static_cast<std::size_t>(std::count(cuts[part], cuts[part + 1], '\n'));
+        }
+        linesBefore[0] = line_;
+        for (std::size_t part = 0; part < parts; ++part) linesBefore[part + 1] += linesBefore[part];
+        const std::size_t firstSlot = rays_.size();
+        const auto slotOf = [&](std::size_t part) { return firstSlot + (linesBefore[part] - line_); };
+        rays_.resize(slotOf(parts));
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+        for (int k = 0; k < threads; ++k) {
+            const auto part = static_cast<std::size_t>(k);
+            try {
+                written[part] = parseRays(cuts[part], cuts[part + 1], linesBefore[part], rays_.data() + slotOf(part));
+            } catch (...) {
+                errors[part] = std::current_exception();
+            }
+        }
+        for (std::size_t part = 0; part < parts; ++part) {
+            if (errors[part]) std::rethrow_exception(errors[part]);
+        }
+        std::size_t next = firstSlot;
+        for (std::size_t part = 0; part < parts; ++part) {
+            if (next != slotOf(part)) std::copy_n(rays_.data() + slotOf(part), written[part], rays_.data() + next);
+            next += written[part];
+        }
+        rays_.resize(next);
+        line_ = linesBefore[parts];
+    }
+
+    // The rays of the lines [begin, end) (each ending with '\n'), numbered from line + 1, into out; returns
+    // how many.
+    std::size_t parseRays(const char* begin, const char* end, std::size_t line, CsvRay* out) const {
+        CsvRay* const first = out;
+        while (begin != end) {
+            const char* lineEnd =
+                static_cast<const char*>(std::memchr(begin, '\n', static_cast<std::size_t>(end - begin)));
+            ++line;
+            const std::string_view content =
+                trimmed(std::string_view(begin, static_cast<std::size_t>(lineEnd - begin)));
+            begin = lineEnd + 1;
+            if (content.empty()) continue;
+            if (!parsePlainLine(content, *out)) *out = parseLine(content, origin_, line);
+            ++out;
+        }
+        return static_cast<std::size_t>(out - first);
+    }
+
     const std::string& origin_;
     std::size_t line_ = 0;
     bool headerSeen_ = false;

@@ -2,6 +2,7 @@
 #include "cli/RayCsv.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <sys/stat.h>
 
 #include <bit>
@@ -199,6 +200,63 @@ TEST_F(RayCsvFile, ReadsAPipe) {
     const std::vector<CsvRay> rays = readRayCsv(path);
     writer.join();
     expectNumberedRays(rays, 200000);
+}
+
+// Text is parsed in parts of at least 64 KiB, one per OpenMP thread (a file a megabyte block at a time): every
+// ray lands in file order (blank lines leave no gap), and of several bad lines the first in the file is the one
+// reported, with its number, whichever part or block it fell in.
+TEST_F(RayCsvFile, PartsParsedInParallelKeepTheOrderAndTheFirstError) {
+    const int threadsBefore = omp_get_max_threads();
+    omp_set_num_threads(4);               // four parts even on one core
+    constexpr std::size_t kRays = 60000;  // about 1.7 MB
+    std::vector<std::string> lines{"ox,oy,oz,dx,dy,dz"};
+    std::vector<std::size_t> rayLine;  // the file line (from 1) of ray i
+    for (std::size_t i = 0; i < kRays; ++i) {
+        if (i % 1000 == 7) lines.emplace_back(i % 2000 == 7 ? "" : " \r");  // blank lines, counted
+        lines.push_back(std::to_string(i) + ",-" + std::to_string(i) + ",0.5,0,1e-3," + std::to_string(i + 1));
+        rayLine.push_back(lines.size());
+    }
+    const auto joined = [](const std::vector<std::string>& all) {
+        std::string text;
+        for (const std::string& line : all) text += line + "\n";
+        return text;
+    };
+    const fs::path path = dir_ / "rays.csv";
+    std::ofstream(path, std::ios::binary) << joined(lines);
+    for (const std::vector<CsvRay>& rays : {parseRayCsv(joined(lines), "rays.csv"), readRayCsv(path)}) {
+        ASSERT_EQ(rays.size(), kRays);
+        for (std::size_t i = 0; i < kRays; ++i) {
+            expectSameRay(rays[i], static_cast<double>(i), -static_cast<double>(i), 0.5, 0, 1e-3,
+                          static_cast<double>(i + 1), i);
+        }
+    }
+    // Bad rays at about 0.33, 0.62 and 1.1 MB: in the first, third and fourth of the text's four parts; in the
+    // file, the last is in its second block.
+    const std::size_t first = 12000, second = 22000, third = 40000;
+    const auto fileError = [&](const std::vector<std::string>& all) {
+        std::ofstream(path, std::ios::binary) << joined(all);
+        try {
+            readRayCsv(path);
+        } catch (const RayCsvError& error) {
+            return std::string(error.what()).substr(path.string().size());
+        }
+        return std::string("no error");
+    };
+    std::vector<std::string> bad = lines;
+    bad[rayLine[third] - 1] = "1,2,3,0,0,0";
+    const std::string thirdError = ":" + std::to_string(rayLine[third]) + ": direction (dx, dy, dz) is zero";
+    EXPECT_EQ(errorOf(joined(bad)), "rays.csv" + thirdError);
+    EXPECT_EQ(fileError(bad), thirdError);
+    bad[rayLine[second] - 1] = "1,2,3,0,0";
+    const std::string secondError =
+        ":" + std::to_string(rayLine[second]) + ": expected 6 fields (ox,oy,oz,dx,dy,dz), got 5";
+    EXPECT_EQ(errorOf(joined(bad)), "rays.csv" + secondError);
+    EXPECT_EQ(fileError(bad), secondError);
+    bad[rayLine[first] - 1] = "1,2,x,0,0,1";
+    const std::string firstError = ":" + std::to_string(rayLine[first]) + ": field 3 (oz) is not a number: \"x\"";
+    EXPECT_EQ(errorOf(joined(bad)), "rays.csv" + firstError);
+    EXPECT_EQ(fileError(bad), firstError);
+    omp_set_num_threads(threadsBefore);
 }
 
 TEST_F(RayCsvFile, UnreadableFilesKeepTheirMessages) {
