@@ -82,6 +82,8 @@ void App::frame(const InputFrame& input) {
     if (state_.ui.screenshot && state_.ui.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
 }
 
+bool App::busy() const { return state_.traces.job.running() || state_.ui.screenshot.has_value(); }
+
 void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {
     const ScreenshotRequest request = *state_.ui.screenshot;
     state_.ui.screenshot.reset();

@@ -37,6 +37,7 @@ public:
 
     void frame(const InputFrame& input) override;
     bool quitRequested() const override { return state_.ui.quit; }
+    bool busy() const override;
 
     AppState& state() { return state_; }
     const AppState& state() const { return state_; }

@@ -32,6 +32,18 @@ done
 [[ -n "$window" ]] || { echo "FAIL: no dropscope window after 15 s"; kill "$pid"; exit 1; }
 sleep 3     # a few frames: shaders compiled, panels laid out (slower when CTest runs other tests too)
 import -window root before.png
+# Left alone, the app sleeps between events (FramePacing): two idle seconds cost it well under a core's
+# 0.6 s (drawing without pause, it used 1.6 cores here).
+ticks() { awk '{print $14 + $15}' "/proc/$pid/stat"; }
+idleStart=$(ticks)
+sleep 2
+idleTicks=$(($(ticks) - idleStart))
+limit=$((6 * $(getconf CLK_TCK) / 10))
+if ((idleTicks > limit)); then
+    echo "FAIL: idle for 2 s, the app used $idleTicks clock ticks of processor time (at most $limit)"
+    kill "$pid"
+    exit 1
+fi
 xdotool mousemove --window "$window" 740 480
 sleep 0.5
 xdotool key p

@@ -1,5 +1,6 @@
 #include "gui/window/GlfwWindow.hpp"
 
+#include "gui/platform/FramePacing.hpp"
 #include "gui/window/GlfwInput.hpp"
 #include "render/RenderError.hpp"
 
@@ -142,8 +143,13 @@ int runWindow(const WindowOptions& options, const ClientFactory& makeClient, std
     const std::unique_ptr<FrameClient> client = makeClient(gl);
     std::optional<WindowSize> lastSize;
     double lastTime = glfwGetTime();
+    FramePacing pacing;
     while (!glfwWindowShouldClose(window.get())) {
-        glfwPollEvents();
+        if (const double wait = pacing.waitSeconds(); wait > 0.0) {
+            glfwWaitEventsTimeout(wait);
+        } else {
+            glfwPollEvents();
+        }
         if (glfwGetWindowAttrib(window.get(), GLFW_ICONIFIED) == GLFW_TRUE) {
             glfwWaitEventsTimeout(kIconifiedWaitSeconds);
             continue;
@@ -156,6 +162,7 @@ int runWindow(const WindowOptions& options, const ClientFactory& makeClient, std
         }
         client->frame(frame);
         glfwSwapBuffers(window.get());
+        pacing.frameDrawn(frame, client->busy());
         if (client->quitRequested()) break;
     }
     if (lastSize && !options.settingsFile.empty()) rememberSize(options.settingsFile, *lastSize, err);
