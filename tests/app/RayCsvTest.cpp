@@ -259,6 +259,54 @@ TEST_F(RayCsvFile, PartsParsedInParallelKeepTheOrderAndTheFirstError) {
     omp_set_num_threads(threadsBefore);
 }
 
+// The parts against one thread on random text: blank, spaced and CRLF lines, a bad line now and then, lines of
+// every length; the same rays, or the same first error, either way.
+TEST(RayCsv, ParallelPartsReadAsOneThreadDoes) {
+    const auto readWith = [](int threads, const std::string& text) {
+        omp_set_num_threads(threads);
+        try {
+            std::vector<double> values;
+            for (const CsvRay& ray : parseRayCsv(text, "rays.csv")) {
+                for (int k = 0; k < 3; ++k) values.insert(values.end(), {ray.origin[k], ray.direction[k]});
+            }
+            return std::pair{values, std::string()};
+        } catch (const RayCsvError& error) {
+            return std::pair{std::vector<double>{}, std::string(error.what())};
+        }
+    };
+    const int threadsBefore = omp_get_max_threads();
+    std::mt19937_64 random(20261204);
+    int failed = 0;
+    for (int sample = 0; sample < 24; ++sample) {
+        // Bad lines rare enough that about half the texts have none.
+        const double badShare = sample % 2 == 0 ? 0.0 : 1e-4 * static_cast<double>(1 + sample % 5);
+        std::string text = sample % 3 == 0 ? "\n\r\n" : "";
+        text += "ox,oy,oz,dx,dy,dz\n";
+        while (text.size() < 400'000) {
+            const double draw = std::uniform_real_distribution<double>(0.0, 1.0)(random);
+            const auto number = static_cast<int>(random() % 2001) - 1000;
+            if (draw < badShare) {
+                text += std::to_string(number) + ",1,2,x\n";
+            } else if (draw < 0.02) {
+                text += draw < 0.01 ? "\n" : " \t\r\n";
+            } else if (draw < 0.05) {
+                text += " " + std::to_string(number) + " ,1,2,\t0,0,1\r\n";
+            } else {
+                text += std::to_string(number) + ".25,-3e-2,7," + std::to_string(number % 7) + ",1,0.5\n";
+            }
+        }
+        if (sample % 4 == 1) text += "1,2,3,0,0,1";  // no final newline
+        const auto one = readWith(1, text);
+        const auto four = readWith(4, text);
+        EXPECT_EQ(four.second, one.second) << "sample " << sample;
+        EXPECT_TRUE(four.first == one.first) << "sample " << sample;
+        failed += one.second.empty() ? 0 : 1;
+    }
+    omp_set_num_threads(threadsBefore);
+    EXPECT_GE(failed, 6);  // the errors were exercised too
+    EXPECT_LE(failed, 18);
+}
+
 TEST_F(RayCsvFile, UnreadableFilesKeepTheirMessages) {
     const fs::path missing = dir_ / "missing.csv";
     EXPECT_THROW(
