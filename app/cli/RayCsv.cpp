@@ -140,7 +140,14 @@ public:
         }
         const char* last = end;
         while (last != begin && last[-1] != '\n') --last;
-        if (last != begin) addRayLines(begin, last);
+        // At most a block's bytes (and the line across its end) at once: a slot is set aside for every line,
+        // blank ones too, so this bounds the slots a text of blank lines holds to one block's worth.
+        while (begin != last) {
+            const char* cut = static_cast<std::size_t>(last - begin) > kBlockBytes ? begin + kBlockBytes : last;
+            while (cut[-1] != '\n') ++cut;  // stops at last at the latest
+            addRayLines(begin, cut);
+            begin = cut;
+        }
         return last;
     }
 
@@ -154,11 +161,16 @@ public:
 private:
     // Lines of rays, [begin, end) ending with '\n', cut into parts at line ends and parsed in parallel, each
     // part into its own slots of rays_ (as many as its lines; blank lines leave some unused, closed up after).
-    // The first error in the text is the one thrown, with its line number, as if read line by line.
+    // The first error in the text is the one thrown, with its line number, as if read line by line. A text too
+    // short for two parts, or a single thread, is read in one pass.
     void addRayLines(const char* begin, const char* end) {
         const auto bytes = static_cast<std::size_t>(end - begin);
         const std::size_t parts =
             std::clamp<std::size_t>(bytes / kPartBytes, 1, std::min<std::size_t>(omp_get_max_threads(), kMaxParts));
+        if (parts == 1) {  // in one pass, without counting the lines first
+            parseRays(begin, end, line_, [&](const CsvRay& ray) { rays_.push_back(ray); });
+            return;
+        }
         std::array<const char*, kMaxParts + 1> cuts{};
         cuts[0] = begin;
         cuts[parts] = end;
@@ -185,7 +197,10 @@ private:
         for (int k = 0; k < threads; ++k) {
             const auto part = static_cast<std::size_t>(k);
             try {
-                written[part] = parseRays(cuts[part], cuts[part + 1], linesBefore[part], rays_.data() + slotOf(part));
+                CsvRay* slot = rays_.data() + slotOf(part);
+                std::size_t line = linesBefore[part];
+                written[part] =
+                    parseRays(cuts[part], cuts[part + 1], line, [&slot](const CsvRay& ray) { *slot++ = ray; });
             } catch (...) {
                 errors[part] = std::current_exception();
             }
@@ -202,10 +217,11 @@ private:
         line_ = linesBefore[parts];
     }
 
-    // The rays of the lines [begin, end) (each ending with '\n'), numbered from line + 1, into out; returns
-    // how many.
-    std::size_t parseRays(const char* begin, const char* end, std::size_t line, CsvRay* out) const {
-        CsvRay* const first = out;
+    // The rays of the lines [begin, end) (each ending with '\n'), numbered from line + 1 (line is left at the
+    // last), each handed to `emit`; returns how many.
+    template <typename Emit>
+    std::size_t parseRays(const char* begin, const char* end, std::size_t& line, const Emit& emit) const {
+        std::size_t rays = 0;
         while (begin != end) {
             const char* lineEnd =
                 static_cast<const char*>(std::memchr(begin, '\n', static_cast<std::size_t>(end - begin)));
@@ -214,10 +230,11 @@ private:
                 trimmed(std::string_view(begin, static_cast<std::size_t>(lineEnd - begin)));
             begin = lineEnd + 1;
             if (content.empty()) continue;
-            if (!parsePlainLine(content, *out)) *out = parseLine(content, origin_, line);
-            ++out;
+            CsvRay ray;
+            emit(parsePlainLine(content, ray) ? ray : parseLine(content, origin_, line));
+            ++rays;
         }
-        return static_cast<std::size_t>(out - first);
+        return rays;
     }
 
     const std::string& origin_;

@@ -82,7 +82,11 @@ void App::frame(const InputFrame& input) {
     if (state_.ui.screenshot && state_.ui.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
 }
 
-bool App::busy() const { return state_.traces.job.running() || state_.ui.screenshot.has_value(); }
+// The text cursor blinks while a field is being edited.
+bool App::busy() const {
+    ImGui::SetCurrentContext(context_);
+    return state_.traces.job.running() || state_.ui.screenshot.has_value() || ImGui::GetIO().WantTextInput;
+}
 
 void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {
     const ScreenshotRequest request = *state_.ui.screenshot;

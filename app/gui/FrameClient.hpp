@@ -12,8 +12,8 @@ public:
     virtual void frame(const InputFrame& input) = 0;
     // The user asked to quit (menu, shortcut); the window closes after this frame.
     virtual bool quitRequested() const = 0;
-    // Work under way that changes what the next frames show (a trace running, a screenshot due): the window
-    // keeps drawing while the user is idle (FramePacing).
+    // Work under way that changes what the next frames show (a trace running, a screenshot due, a blinking
+    // text cursor): the window keeps drawing while the user is idle (FramePacing).
     virtual bool busy() const { return false; }
 };
 

@@ -22,6 +22,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// OpenMP's thread count for one test, restored however it ends.
+class OmpThreads {
+public:
+    explicit OmpThreads(int threads) : before_(omp_get_max_threads()) { omp_set_num_threads(threads); }
+    ~OmpThreads() { omp_set_num_threads(before_); }
+    OmpThreads(const OmpThreads&) = delete;
+    OmpThreads& operator=(const OmpThreads&) = delete;
+
+private:
+    int before_;
+};
+
 // The message parseRayCsv throws for `text` ("" if it throws none).
 std::string errorOf(const std::string& text) {
     try {
@@ -206,8 +218,7 @@ TEST_F(RayCsvFile, ReadsAPipe) {
 // ray lands in file order (blank lines leave no gap), and of several bad lines the first in the file is the one
 // reported, with its number, whichever part or block it fell in.
 TEST_F(RayCsvFile, PartsParsedInParallelKeepTheOrderAndTheFirstError) {
-    const int threadsBefore = omp_get_max_threads();
-    omp_set_num_threads(4);               // four parts even on one core
+    const OmpThreads four(4);             // four parts even on one core
     constexpr std::size_t kRays = 60000;  // about 1.7 MB
     std::vector<std::string> lines{"ox,oy,oz,dx,dy,dz"};
     std::vector<std::size_t> rayLine;  // the file line (from 1) of ray i
@@ -230,7 +241,7 @@ TEST_F(RayCsvFile, PartsParsedInParallelKeepTheOrderAndTheFirstError) {
                           static_cast<double>(i + 1), i);
         }
     }
-    // Bad rays at about 0.33, 0.62 and 1.1 MB: in the first, third and fourth of the text's four parts; in the
+    // Bad rays at about 0.33, 0.62 and 1.1 MB: in the first, second and third of the text's four parts; in the
     // file, the last is in its second block.
     const std::size_t first = 12000, second = 22000, third = 40000;
     const auto fileError = [&](const std::vector<std::string>& all) {
@@ -256,14 +267,13 @@ TEST_F(RayCsvFile, PartsParsedInParallelKeepTheOrderAndTheFirstError) {
     const std::string firstError = ":" + std::to_string(rayLine[first]) + ": field 3 (oz) is not a number: \"x\"";
     EXPECT_EQ(errorOf(joined(bad)), "rays.csv" + firstError);
     EXPECT_EQ(fileError(bad), firstError);
-    omp_set_num_threads(threadsBefore);
 }
 
 // The parts against one thread on random text: blank, spaced and CRLF lines, a bad line now and then, lines of
 // every length; the same rays, or the same first error, either way.
 TEST(RayCsv, ParallelPartsReadAsOneThreadDoes) {
     const auto readWith = [](int threads, const std::string& text) {
-        omp_set_num_threads(threads);
+        const OmpThreads set(threads);
         try {
             std::vector<double> values;
             for (const CsvRay& ray : parseRayCsv(text, "rays.csv")) {
@@ -274,7 +284,6 @@ TEST(RayCsv, ParallelPartsReadAsOneThreadDoes) {
             return std::pair{std::vector<double>{}, std::string(error.what())};
         }
     };
-    const int threadsBefore = omp_get_max_threads();
     std::mt19937_64 random(20261204);
     int failed = 0;
     for (int sample = 0; sample < 24; ++sample) {
@@ -302,7 +311,6 @@ TEST(RayCsv, ParallelPartsReadAsOneThreadDoes) {
         EXPECT_TRUE(four.first == one.first) << "sample " << sample;
         failed += one.second.empty() ? 0 : 1;
     }
-    omp_set_num_threads(threadsBefore);
     EXPECT_GE(failed, 6);  // the errors were exercised too
     EXPECT_LE(failed, 18);
 }

@@ -428,6 +428,38 @@ TEST_F(AppScreenshot, OpeningAnotherSceneDropsTheTraceStillRunningOnTheOldOne) {
     EXPECT_EQ(harness.state().scene.document().shapeCount(), 1u);
 }
 
+// FramePacing lets an idle window sleep unless the app is busy: a trace running, a screenshot due (after its
+// delay), a text field being edited.
+TEST_F(AppScreenshot, TheAppIsBusyWhileATraceRunsAScreenshotIsDueOrAFieldIsEdited) {
+    AppHarness harness(kCloudScene);
+    harness.frames(2);
+    EXPECT_FALSE(harness.app().busy());
+    harness.state().ui.screenshot = ScreenshotRequest{directory_ / "shot.png", false, 0, 0, 2};
+    EXPECT_TRUE(harness.app().busy());
+    harness.frames(2);
+    EXPECT_TRUE(harness.app().busy());
+    harness.frame();  // taken in this one
+    EXPECT_TRUE(std::filesystem::exists(directory_ / "shot.png"));
+    EXPECT_FALSE(harness.app().busy());
+
+    harness.state().scene.document().setSources({Source{SourceType::Beam, Point(0, 0, -5), Direction(0, 0, 1), 2.0}});
+    harness.state().traces.fire.photons = 50'000'000;  // far longer than this test
+    harness.press(kKeySpace);
+    ASSERT_TRUE(harness.state().traces.job.running());
+    EXPECT_TRUE(harness.app().busy());
+    harness.state().traces.job.cancel();
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);  // a hang check
+    while (harness.state().traces.job.running() && std::chrono::steady_clock::now() < end) harness.frame();
+    EXPECT_FALSE(harness.state().traces.job.running());
+    EXPECT_FALSE(harness.app().busy());
+
+    ASSERT_TRUE(harness.clickItem("wavelength bins", 8.0f));
+    EXPECT_TRUE(harness.app().busy());  // the field is being edited
+    harness.press(kKeyEnter);
+    harness.frames(2);
+    EXPECT_FALSE(harness.app().busy());
+}
+
 TEST(AppUi, ShortcutsDoNothingWhileAFileDialogIsOpen) {
     AppHarness harness(kTopDownScene);
     const auto [x, y] = topDownPixel(Point(2.0, 0.0, 2.0));

@@ -10,9 +10,9 @@ namespace {
 constexpr int kQuiet = FramePacing::kQuietFrames;
 
 // Frames of `input` until the window may wait; how many it took (kQuiet + 2 if it never may).
-int framesUntilWaiting(FramePacing& pacing, const InputFrame& input, bool busy = false) {
+int framesUntilWaiting(FramePacing& pacing, const InputFrame& input, bool busy = false, double frameSeconds = 0.01) {
     for (int frames = 1; frames <= kQuiet + 1; ++frames) {
-        pacing.frameDrawn(input, busy);
+        pacing.frameDrawn(input, busy, frameSeconds);
         if (pacing.waitSeconds() > 0.0) return frames;
     }
     return kQuiet + 2;
@@ -24,7 +24,7 @@ TEST(FramePacing, AnIdleAppWaitsForEventsAfterAFewQuietFrames) {
     const InputFrame still;
     EXPECT_EQ(framesUntilWaiting(pacing, still), kQuiet + 1);  // the first frame has nothing to compare with
     EXPECT_EQ(pacing.waitSeconds(), FramePacing::kIdleRefreshSeconds);
-    pacing.frameDrawn(still, false);
+    pacing.frameDrawn(still, false, 0.01);
     EXPECT_EQ(pacing.waitSeconds(), FramePacing::kIdleRefreshSeconds);
 }
 
@@ -55,14 +55,26 @@ TEST(FramePacing, EveryKindOfInputWakesIt) {
         ASSERT_GT(pacing.waitSeconds(), 0.0);
         InputFrame changed = still;
         change(changed);
-        pacing.frameDrawn(changed, false);
+        pacing.frameDrawn(changed, false, 0.01);
         EXPECT_EQ(pacing.waitSeconds(), 0.0) << "change " << kind;
-        // Typing and scrolling are events of one frame, after which the input is as still as before; the rest
-        // stay as changed.
+        // Typing and scrolling are events of one frame, after which the input is as still as before; a key or
+        // button held keeps it drawing (ImGui repeats them frame by frame); the rest stay as changed, still.
         const bool once = !changed.characters.empty() || changed.wheelX != 0.0f || changed.wheelY != 0.0f;
-        EXPECT_EQ(framesUntilWaiting(pacing, once ? still : changed), kQuiet) << "change " << kind;
+        const bool held = changed.keysDown.any() || changed.mouseDown[1];
+        EXPECT_EQ(framesUntilWaiting(pacing, once ? still : changed), held ? kQuiet + 2 : kQuiet) << "change " << kind;
         ++kind;
     }
+}
+
+// The time between frames is not input: a still window waits however long its frames were apart.
+TEST(FramePacing, TheTimeBetweenFramesIsNotInput) {
+    FramePacing pacing;
+    InputFrame still;
+    for (int frame = 0; frame <= kQuiet; ++frame) {
+        still.deltaSeconds = 0.01 * (frame + 1);
+        pacing.frameDrawn(still, false, 0.01);
+    }
+    EXPECT_EQ(pacing.waitSeconds(), FramePacing::kIdleRefreshSeconds);
 }
 
 // A scroll or typed text reported frame after frame keeps it drawing.
@@ -71,14 +83,14 @@ TEST(FramePacing, ContinuousInputNeverWaits) {
     InputFrame scrolling;
     scrolling.wheelY = 1.0f;
     for (int frame = 0; frame < 10; ++frame) {
-        pacing.frameDrawn(scrolling, false);
+        pacing.frameDrawn(scrolling, false, 0.01);
         EXPECT_EQ(pacing.waitSeconds(), 0.0);
     }
     InputFrame dragging;
     dragging.mouseDown[0] = true;
     for (int frame = 0; frame < 10; ++frame) {
         dragging.mouseX += 2.0f;
-        pacing.frameDrawn(dragging, false);
+        pacing.frameDrawn(dragging, false, 0.01);
         EXPECT_EQ(pacing.waitSeconds(), 0.0);
     }
 }
@@ -89,14 +101,28 @@ TEST(FramePacing, WorkUnderWayWakesItOftenAndItsEndDrawsAtOnce) {
     FramePacing pacing;
     const InputFrame still;
     framesUntilWaiting(pacing, still);
-    pacing.frameDrawn(still, true);
+    pacing.frameDrawn(still, true, 0.01);
     EXPECT_EQ(pacing.waitSeconds(), 0.0);
     EXPECT_EQ(framesUntilWaiting(pacing, still, true), kQuiet);
     EXPECT_EQ(pacing.waitSeconds(), FramePacing::kBusyRefreshSeconds);
-    pacing.frameDrawn(still, false);
+    pacing.frameDrawn(still, false, 0.01);
     EXPECT_EQ(pacing.waitSeconds(), 0.0);
     EXPECT_EQ(framesUntilWaiting(pacing, still), kQuiet);
     EXPECT_EQ(pacing.waitSeconds(), FramePacing::kIdleRefreshSeconds);
+}
+
+// Frames slower than half the busy refresh: it waits twice a frame's time, so work under way keeps at least half
+// the processor.
+TEST(FramePacing, SlowFramesWhileBusyLeaveHalfTheTime) {
+    FramePacing pacing;
+    const InputFrame still;
+    EXPECT_EQ(framesUntilWaiting(pacing, still, true, 0.2), kQuiet + 1);
+    EXPECT_DOUBLE_EQ(pacing.waitSeconds(), 0.4);
+    pacing.frameDrawn(still, true, 0.001);
+    EXPECT_EQ(pacing.waitSeconds(), FramePacing::kBusyRefreshSeconds);
+    pacing.frameDrawn(still, false, 0.2);
+    framesUntilWaiting(pacing, still, false, 0.2);
+    EXPECT_EQ(pacing.waitSeconds(), FramePacing::kIdleRefreshSeconds);  // idle: never sooner for slow frames
 }
 
 }  // namespace

@@ -32,15 +32,20 @@ done
 [[ -n "$window" ]] || { echo "FAIL: no dropscope window after 15 s"; kill "$pid"; exit 1; }
 sleep 3     # a few frames: shaders compiled, panels laid out (slower when CTest runs other tests too)
 import -window root before.png
-# Left alone, the app sleeps between events (FramePacing): two idle seconds cost it well under a core's
-# 0.6 s (drawing without pause, it used 1.6 cores here).
+# Left alone, the app sleeps between events (FramePacing): an idle second costs it well under 0.3 s of
+# processor time (drawing without pause, it used 1.6 s a second here). Start-up may still be drawing its
+# first frames on a loaded machine, so any one of 15 seconds in a row will do.
 ticks() { awk '{print $14 + $15}' "/proc/$pid/stat"; }
-idleStart=$(ticks)
-sleep 2
-idleTicks=$(($(ticks) - idleStart))
-limit=$((6 * $(getconf CLK_TCK) / 10))
-if ((idleTicks > limit)); then
-    echo "FAIL: idle for 2 s, the app used $idleTicks clock ticks of processor time (at most $limit)"
+limit=$((3 * $(getconf CLK_TCK) / 10))
+slept=""
+for second in $(seq 15); do
+    idleStart=$(ticks)
+    sleep 1
+    idleTicks=$(($(ticks) - idleStart))
+    if ((idleTicks <= limit)); then slept=$second; break; fi
+done
+if [[ -z "$slept" ]]; then
+    echo "FAIL: idle, the app used more than $limit clock ticks of processor time in each of 15 seconds (last: $idleTicks)"
     kill "$pid"
     exit 1
 fi

@@ -162,7 +162,7 @@ int runWindow(const WindowOptions& options, const ClientFactory& makeClient, std
         }
         client->frame(frame);
         glfwSwapBuffers(window.get());
-        pacing.frameDrawn(frame, client->busy());
+        pacing.frameDrawn(frame, client->busy(), glfwGetTime() - now);
         if (client->quitRequested()) break;
     }
     if (lastSize && !options.settingsFile.empty()) rememberSize(options.settingsFile, *lastSize, err);
