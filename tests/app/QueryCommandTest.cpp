@@ -86,7 +86,7 @@ TEST_F(QueryCommand, SummaryKeepsItsTextAndEndsWithReadAndWriteSeconds) {
     EXPECT_EQ(read(path("hits.csv")), "ray,shape,distance\n0,0,11\n1,-1,nan\n");
     const std::regex summary(
         "query: 1 shapes, 2 rays, octree, build [0-9.]+ s, query [0-9.]+ s, [0-9]+ rays/s, read [0-9.]+ s, "
-        "write [0-9.]+ s\n");
+        "write [0-9.]+ s, 1 thread\n");
     EXPECT_TRUE(std::regex_match(run.err, summary)) << run.err;
 }
 
@@ -117,6 +117,47 @@ TEST_F(QueryCommand, OctreeAndBruteForceWriteIdenticalFiles) {
     }
     EXPECT_EQ(rows, 3000);
     EXPECT_GT(hits - 1, 100);  // the header line counted as a hit
+}
+
+// --threads shares the rays out; every thread count writes the same bytes, octree and brute force alike.
+TEST_F(QueryCommand, EveryThreadCountWritesTheSameFile) {
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> normal;
+    std::ostringstream rays;
+    rays << "ox,oy,oz,dx,dy,dz\n";
+    rays.precision(17);
+    for (int i = 0; i < 20000; ++i) {  // several of the queries' chunks of 4096 rays
+        const double values[] = {3 * normal(rng), 3 * normal(rng), 3 * normal(rng),
+                                 normal(rng),     normal(rng),     normal(rng)};
+        rays << values[0] << ',' << values[1] << ',' << values[2] << ',' << values[3] << ',' << values[4] << ','
+             << values[5] << '\n';
+    }
+    const std::string raysPath = write("rays.csv", rays.str());
+    const std::string scene = kSourceDir + "/assets/scenes/default.json";
+    const CliRun one = runDropscope({"query", scene, "--rays", raysPath, "--out", path("one.csv")});
+    ASSERT_EQ(one.status, kExitSuccess) << one.err;
+    EXPECT_TRUE(one.err.ends_with(", 1 thread\n")) << one.err;
+    const std::string expected = read(path("one.csv"));
+    const CliRun three =
+        runDropscope({"query", scene, "--rays", raysPath, "--out", path("three.csv"), "--threads", "3"});
+    ASSERT_EQ(three.status, kExitSuccess) << three.err;
+    EXPECT_TRUE(three.err.ends_with(", 3 threads\n")) << three.err;
+    EXPECT_EQ(read(path("three.csv")), expected);
+    ASSERT_EQ(runDropscope({"query", scene, "--rays", raysPath, "--out", path("all.csv"), "--threads", "0"}).status,
+              kExitSuccess);
+    EXPECT_EQ(read(path("all.csv")), expected);
+    ASSERT_EQ(
+        runDropscope({"query", scene, "--rays", raysPath, "--out", path("brute.csv"), "--brute", "--threads", "2"})
+            .status,
+        kExitSuccess);
+    EXPECT_EQ(read(path("brute.csv")), expected);
+    for (const char* bad : {"-1", "1.5", "many", "1025"}) {
+        const CliRun run =
+            runDropscope({"query", scene, "--rays", raysPath, "--out", path("bad.csv"), "--threads", bad});
+        expectOneLineFailure(run);
+        EXPECT_TRUE(run.err.starts_with("dropscope: --threads: must be a whole number from 0 to 1024")) << run.err;
+        EXPECT_FALSE(fs::exists(path("bad.csv")));
+    }
 }
 
 TEST_F(QueryCommand, MalformedLineNamesItsNumberAndWritesNothing) {
