@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -90,17 +91,25 @@ TEST_F(QueryCommand, SummaryKeepsItsTextAndEndsWithReadAndWriteSeconds) {
     EXPECT_TRUE(std::regex_match(run.err, summary)) << run.err;
 }
 
-TEST_F(QueryCommand, OctreeAndBruteForceWriteIdenticalFiles) {
-    std::mt19937_64 rng(5);
+// `count` rays as CSV, 17 digits: origins 3 N(0, 1) in each coordinate, directions N(0, 1); one draw per
+// statement, so every compiler writes the same file.
+std::string randomRays(std::uint64_t seed, int count) {
+    std::mt19937_64 rng(seed);
     std::normal_distribution<double> normal;
     std::ostringstream rays;
     rays << "ox,oy,oz,dx,dy,dz\n";
     rays.precision(17);
-    for (int i = 0; i < 3000; ++i) {
-        rays << 3 * normal(rng) << ',' << 3 * normal(rng) << ',' << 3 * normal(rng) << ',' << normal(rng) << ','
-             << normal(rng) << ',' << normal(rng) << '\n';
+    for (int i = 0; i < count; ++i) {
+        for (int k = 0; k < 6; ++k) {
+            const double value = normal(rng);
+            rays << (k < 3 ? 3.0 * value : value) << (k < 5 ? ',' : '\n');
+        }
     }
-    const std::string raysPath = write("rays.csv", rays.str());
+    return rays.str();
+}
+
+TEST_F(QueryCommand, OctreeAndBruteForceWriteIdenticalFiles) {
+    const std::string raysPath = write("rays.csv", randomRays(5, 3000));
     const std::string scene = kSourceDir + "/assets/scenes/default.json";
     ASSERT_EQ(runDropscope({"query", scene, "--rays", raysPath, "--out", path("octree.csv")}).status, kExitSuccess);
     ASSERT_EQ(runDropscope({"query", scene, "--rays", raysPath, "--out", path("brute.csv"), "--brute"}).status,
@@ -121,18 +130,7 @@ TEST_F(QueryCommand, OctreeAndBruteForceWriteIdenticalFiles) {
 
 // --threads shares the rays out; every thread count writes the same bytes, octree and brute force alike.
 TEST_F(QueryCommand, EveryThreadCountWritesTheSameFile) {
-    std::mt19937_64 rng(7);
-    std::normal_distribution<double> normal;
-    std::ostringstream rays;
-    rays << "ox,oy,oz,dx,dy,dz\n";
-    rays.precision(17);
-    for (int i = 0; i < 20000; ++i) {  // several of the queries' chunks of 4096 rays
-        const double values[] = {3 * normal(rng), 3 * normal(rng), 3 * normal(rng),
-                                 normal(rng),     normal(rng),     normal(rng)};
-        rays << values[0] << ',' << values[1] << ',' << values[2] << ',' << values[3] << ',' << values[4] << ','
-             << values[5] << '\n';
-    }
-    const std::string raysPath = write("rays.csv", rays.str());
+    const std::string raysPath = write("rays.csv", randomRays(7, 20000));  // several chunks of 4096 rays
     const std::string scene = kSourceDir + "/assets/scenes/default.json";
     const CliRun one = runDropscope({"query", scene, "--rays", raysPath, "--out", path("one.csv")});
     ASSERT_EQ(one.status, kExitSuccess) << one.err;
