@@ -229,11 +229,10 @@ bool measureRead(const std::string& name, const std::string& text, const fs::pat
     bool same = true;
     const double bytes = static_cast<double>(text.size());
     const auto sameAsBaseline = [&](const std::vector<CsvRay>& rays) { same = same && sameRays(rays, expected); };
-    rows.push_back({"read, " + name, "`readRayCsv` (this code, " + std::to_string(omp_get_max_threads()) + " threads)",
-                    bytes,
+    const int threads = omp_get_max_threads();
+    rows.push_back({"read, " + name, "`readRayCsv` (this code, " + std::to_string(threads) + " threads)", bytes,
                     best(
                         options.repeat, [&] { return readRayCsv(file); }, sameAsBaseline)});
-    const int threads = omp_get_max_threads();
     omp_set_num_threads(1);
     rows.push_back({"read, " + name, "`readRayCsv`, one thread (OMP_NUM_THREADS=1)", bytes,
                     best(

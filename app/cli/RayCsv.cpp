@@ -126,8 +126,7 @@ public:
             headerSeen_ = true;
             return;
         }
-        CsvRay ray;
-        rays_.push_back(parsePlainLine(content, ray) ? ray : parseLine(content, origin_, line_));
+        rays_.push_back(parseRay(content, line_));
     }
 
     // Every line up to the last '\n' of [begin, end); returns where the rest (a line not yet ended) starts.
@@ -217,6 +216,12 @@ private:
         line_ = linesBefore[parts];
     }
 
+    // The ray of a trimmed, non-blank line: the common form read in one scan, anything else by every rule.
+    CsvRay parseRay(std::string_view content, std::size_t line) const {
+        CsvRay ray;
+        return parsePlainLine(content, ray) ? ray : parseLine(content, origin_, line);
+    }
+
     // The rays of the lines [begin, end) (each ending with '\n'), numbered from line + 1 (line is left at the
     // last), each handed to `emit`; returns how many.
     template <typename Emit>
@@ -230,8 +235,7 @@ private:
                 trimmed(std::string_view(begin, static_cast<std::size_t>(lineEnd - begin)));
             begin = lineEnd + 1;
             if (content.empty()) continue;
-            CsvRay ray;
-            emit(parsePlainLine(content, ray) ? ray : parseLine(content, origin_, line));
+            emit(parseRay(content, line));
             ++rays;
         }
         return rays;

@@ -82,7 +82,7 @@ void App::frame(const InputFrame& input) {
     if (state_.ui.screenshot && state_.ui.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
 }
 
-// The text cursor blinks while a field is being edited.
+// A trace running, a screenshot due, or a text field being edited (its cursor blinks).
 bool App::busy() const {
     ImGui::SetCurrentContext(context_);
     return state_.traces.job.running() || state_.ui.screenshot.has_value() || ImGui::GetIO().WantTextInput;
