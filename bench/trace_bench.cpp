@@ -3,8 +3,9 @@
 // alone on the photons' own segments (the emission and every interface event of recorded photons,
 // replayed in order), which splits the time per photon into the octree search and the rest (surface
 // crossing, Fresnel, random numbers, emission, tallies). Every run's tally must be identical, whatever
-// the thread count; the program exits 1 if not. docs/performance.md ("Photon transport") has the
-// figures and how to read them.
+// the thread count, and OpticalScene::nextSurface (the tracer's query, which skips the search inside a sealed
+// droplet) must equal firstHit on every segment; the program exits 1 if not. docs/performance.md ("Photon transport")
+// has the figures and how to read them.
 //
 // Run: build/bench/trace_bench [--photons 2e5] [--repeat 5] [--threads 2] [--reference-photons 2e4]
 //                              [--seed 1] [--scene FILE] [--polarisation none|stokes]
@@ -230,9 +231,13 @@ struct FirstHitTimes {
     double hitFraction = 0.0;
     std::vector<double> oneThread;    // seconds over all rays, each repeat
     std::vector<double> manyThreads;  // the same rays split statically over options.threads
+    double sealedFraction = 0.0;      // of the rays, those from inside a sealed droplet
+    std::vector<double> nextSurface;  // OpticalScene::nextSurface on one thread, seconds each repeat
+    bool nextSurfaceIdentical = true;
 };
 
-FirstHitTimes timeFirstHits(const Octree& octree, const std::vector<Ray>& rays, const Options& options) {
+FirstHitTimes timeFirstHits(const OpticalScene& optical, const std::vector<Ray>& rays, const Options& options) {
+    const Octree& octree = optical.octree();
     const auto pass = [&](int threads, std::size_t& hits) {
         const Stopwatch watch;
         std::size_t found = 0;
@@ -254,20 +259,48 @@ FirstHitTimes timeFirstHits(const Octree& octree, const std::vector<Ray>& rays, 
         times.manyThreads.push_back(pass(options.threads, hits));
     }
     times.hitFraction = static_cast<double>(hits) / static_cast<double>(rays.size());
+
+    // Each segment's region, as the tracer held it: on a surface heading in, inside.
+    std::vector<ShapeId> regions;
+    std::size_t sealed = 0;
+    for (const Ray& ray : rays) {
+        regions.push_back(optical.regionAt(ray.origin, ray.direction));
+        if (regions.back() != OpticalScene::kAmbient && optical.sealed(regions.back())) ++sealed;
+    }
+    times.sealedFraction = static_cast<double>(sealed) / static_cast<double>(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const RayHit searched = octree.firstHit(rays[i].origin, rays[i].direction);
+        const RayHit next = optical.nextSurface(regions[i], rays[i].origin, rays[i].direction);
+        times.nextSurfaceIdentical = times.nextSurfaceIdentical && next.shape == searched.shape &&
+                                     (next.distance == searched.distance || (!next && !searched));
+    }
+    for (int r = 0; r < options.repeat; ++r) {
+        const Stopwatch watch;
+        std::size_t found = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            found += optical.nextSurface(regions[i], rays[i].origin, rays[i].direction) ? 1 : 0;
+        times.nextSurface.push_back(watch.seconds());
+        if (found != hits) times.nextSurfaceIdentical = false;
+    }
     return times;
 }
 
 void printScene(const Scene& scene, const std::string& name, const BuildTimes& build, double parseSeconds, bool builtIn,
-                int gridLevel) {
+                const OpticalScene& optical) {
+    std::size_t sealed = 0;
+    for (ShapeId id = 0; id < optical.octree().slotCount(); ++id) sealed += optical.sealed(id) ? 1 : 0;
     std::cout << "\n### Scene and build (median of the repeats; one thread)\n\n"
                  "| scene | shapes | volume fraction | mean optical depth | parse + generate s | clone s | "
-                 "octree alone s | OpticalScene s | of which parents s | octree top grid level |\n"
-                 "|---|---|---|---|---|---|---|---|---|---|\n"
+                 "octree alone s | OpticalScene s | of which parents and sealing s | octree top grid level | sealed "
+                 "droplets |\n|---|---|---|---|---|---|---|---|---|---|---|\n"
               << "| " << name << " | " << scene.shapes.size() << " | "
               << (builtIn ? fixed(100.0 * volumeFraction(scene), 2) + " %" : "-") << " | "
               << (builtIn ? fixed(builtInOpticalDepth(scene), 2) : "-") << " | " << fixed(parseSeconds, 3) << " | "
               << fixed(build.clone, 3) << " | " << fixed(build.octree, 3) << " | " << fixed(build.opticalScene, 3)
-              << " | " << fixed(build.opticalScene - build.clone - build.octree, 3) << " | " << gridLevel << " |\n";
+              << " | " << fixed(build.opticalScene - build.clone - build.octree, 3) << " | "
+              << optical.octree().gridLevel() << " | "
+              << fixed(100.0 * static_cast<double>(sealed) / static_cast<double>(optical.octree().shapeCount()), 1)
+              << " % |\n";
 }
 
 void printPhotons(const FateTally& tally, double expectedUnscattered) {
@@ -331,6 +364,13 @@ void printReference(const FirstHitTimes& hits, const ThreadRuns& oneThread, cons
         << fixed(100.0 * queries * perHit / perPhoton, 1) << " % |\n"
         << "\nfirstHit calls per photon = 1 + interface events per photon (the emission's query, then one "
            "after each event; the last one finds nothing, or an absorption comes first).\n";
+    const double perNext = median(hits.nextSurface) / static_cast<double>(hits.rays);
+    std::cout << "\n| segments from inside a sealed droplet | ns per nextSurface (the tracer's query, 1 thread) | "
+                 "time per photon / (events per photon x time per nextSurface) | nextSurface equal to firstHit on "
+                 "every segment |\n|---|---|---|---|\n"
+              << "| " << fixed(100.0 * hits.sealedFraction, 1) << " % | " << fixed(perNext * 1e9, 0) << " | "
+              << fixed(perPhoton / (events * perNext), 2) << " | " << (hits.nextSurfaceIdentical ? "yes" : "NO")
+              << " |\n";
 }
 
 }  // namespace
@@ -357,19 +397,19 @@ int main(int argc, char** argv) {
         bool identical = false;
         const std::vector<ThreadRuns> runs = timeTransport(*optical, scene.sources, options, tally, identical);
         std::cerr << "reference: firstHit on " << rays.size() << " segments\n";
-        const FirstHitTimes hits = timeFirstHits(optical->octree(), rays, options);
+        const FirstHitTimes hits = timeFirstHits(*optical, rays, options);
 
         std::cout << "trace_bench: " << name << ", polarisation " << polarisationModelName(options.polarisation)
                   << ", photons " << options.photons << ", repeat " << options.repeat << ", threads 1 and "
                   << options.threads << ", seed " << options.seed << ", reference photons " << options.referencePhotons
                   << '\n';
-        printScene(scene, name, build, parseSeconds, builtIn, optical->octree().gridLevel());
+        printScene(scene, name, build, parseSeconds, builtIn, *optical);
         printPhotons(tally, builtIn ? std::exp(-builtInOpticalDepth(scene)) : -1.0);
         printTransport(runs, tally);
         printReference(hits, runs.front(), tally, options.threads);
         std::cout << "\nevery run's tally identical (1 and " << options.threads
                   << " threads, every repeat): " << (identical ? "yes" : "NO") << '\n';
-        return identical ? 0 : 1;
+        return identical && hits.nextSurfaceIdentical ? 0 : 1;
     } catch (const std::exception& error) {
         std::cerr << "trace_bench: " << error.what() << '\n';
         return 2;

@@ -31,6 +31,63 @@ Direction OpticalScene::normalOf(ShapeId shape, const Point& p) const {
     return Direction(p - facts.sphere.center);
 }
 
+RayHit OpticalScene::nextSurface(ShapeId region, const Point& p, const Direction& d) const {
+    if (region != kAmbient && facts_[region].sealed) {
+        RayHit exit;
+        exit.offer(region, facts_[region].sphere.distanceToSurface(p, d));
+        if (exit) return exit;
+    }
+    return octree_.firstHit(p, d);
+}
+
+bool OpticalScene::clearOf(const SphereGeometry& inner, ShapeId otherId) const {
+    // From inside `inner` (its band included) a ray meets its own surface within the ball grown by its band; the
+    // other surface is met only on its own band. Each clearance below is two bands each, so the rounding of the
+    // centres' distance (a few eps of |centre|, far below kCoordinateRelative x |centre| in every band) never
+    // decides.
+    const ShapeFacts& facts = facts_[otherId];
+    if (facts.isSphere) {
+        const SphereGeometry& outer = facts.sphere;
+        const double betweenSquared = (outer.center - inner.center).squaredNorm();
+        const double bands = 2.0 * (inner.band + outer.band);
+        const double apart = inner.radius + outer.radius + bands;
+        if (betweenSquared > apart * apart) return true;
+        const double room = outer.radius - inner.radius - bands;  // the other holds it well inside
+        return room > 0.0 && betweenSquared < room * room;
+    }
+    const Shape& other = *octree_.shape(otherId);
+    const double grow = 2.0 * inner.band + octree_.margin();
+    const Eigen::AlignedBox3d reach(inner.center.array() - (inner.radius + grow),
+                                    inner.center.array() + (inner.radius + grow));
+    const Eigen::AlignedBox3d otherBounds = other.bounds();
+    const Eigen::AlignedBox3d otherReach(otherBounds.min().array() - octree_.margin(),
+                                         otherBounds.max().array() + octree_.margin());
+    if (!reach.intersects(otherReach)) return true;
+    // A box (the one shape besides a sphere that may hold a sphere) is convex, and so is the part of it inside its
+    // band: holding the corners of `reach` there, it holds all of `reach`, and its surface lies beyond.
+    if (other.kind() != ShapeKind::Box) return false;
+    for (int corner = 0; corner < 8; ++corner) {
+        if (other.locatePoint(reach.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner))) !=
+            PointLocation::Inside)
+            return false;
+    }
+    return true;
+}
+
+// A sphere is sealed unless a shape stored on one octree path with it (every shape that could come near it is)
+// is not clear of it; a shape inside it never is.
+void OpticalScene::findSealedSpheres() {
+    for (ShapeFacts& facts : facts_) facts.sealed = facts.isSphere;
+    const auto check = [&](ShapeId inner, ShapeId other) {
+        ShapeFacts& facts = facts_[inner];
+        if (facts.sealed && !clearOf(facts.sphere, other)) facts.sealed = false;
+    };
+    octree_.forEachPairOnAPath([&](ShapeId a, ShapeId b) {
+        check(a, b);
+        check(b, a);
+    });
+}
+
 OpticalScene::OpticalScene(const Scene& scene, bool haloes)
     : media_(scene.media),
       wavelengthNm_(scene.wavelengthNm),
@@ -50,6 +107,7 @@ OpticalScene::OpticalScene(const Scene& scene, bool haloes)
             facts.isSphere = true;
         }
     }
+    findSealedSpheres();
     // The numbers the scene already holds: the light of the scene wavelength is traced exactly as before.
     for (const Medium& medium : media_) sceneOptics_.push_back({medium.n, medium.absorptionPerUnit});
     for (std::size_t i = 0; i < scene.detectors.size(); ++i) {

@@ -43,6 +43,12 @@ public:
     // The region on the outside of `shape`'s surface.
     ShapeId parentOf(ShapeId shape) const { return facts_[shape].parent; }
     MediumId mediumIdOf(ShapeId region) const { return region == kAmbient ? ambient_ : facts_[region].medium; }
+    // The first surface a photon in `region` at p meets along d: exactly Octree::firstHit (the same shape and
+    // distance), but inside a sealed sphere it is that sphere's far side, found without a search.
+    RayHit nextSurface(ShapeId region, const Point& p, const Direction& d) const;
+    // Whether `shape` is a sphere no other surface comes near enough to be met first from inside it: it holds no
+    // shape, and every other shape is clear of it or holds it well inside (docs/transport.md, "Sealed droplets").
+    bool sealed(ShapeId shape) const { return facts_[shape].sealed; }
     // Shape::normal of `shape` at p (the same bits), without reading a sphere's Shape object.
     Direction normalOf(ShapeId shape, const Point& p) const;
     const Medium& mediumOf(ShapeId region) const { return media_[mediumIdOf(region)]; }
@@ -75,6 +81,9 @@ public:
 
 private:
     ShapeId smallestContainer(const Shape& inner, ShapeId innerId) const;
+    // Whether no ray from inside sphere `inner` can meet shape `other`'s surface before its own.
+    bool clearOf(const SphereGeometry& inner, ShapeId other) const;
+    void findSealedSpheres();
 
     std::vector<Medium> media_;
     double wavelengthNm_;
@@ -90,6 +99,7 @@ private:
         MediumId medium = 0;
         ShapeId parent = kAmbient;
         bool isSphere = false;
+        bool sealed = false;
     };
     std::vector<ShapeFacts> facts_;
     std::vector<AbsorbingPlane> absorbingPlanes_;

@@ -143,7 +143,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
     };
 
     for (;;) {
-        const RayHit hit = scene.octree().firstHit(position, direction);
+        const RayHit hit = scene.nextSurface(region, position, direction);
         double reach = hit ? hit.distance : std::numeric_limits<double>::infinity();
         const auto halo = diffraction ? scene.firstHaloPass(position, direction, reach, region) : std::nullopt;
         if (halo) reach = halo->distance;

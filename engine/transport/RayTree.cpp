@@ -92,7 +92,7 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
             continue;
         }
 
-        const RayHit hit = scene.octree().firstHit(branch.position, branch.direction);
+        const RayHit hit = scene.nextSurface(branch.region, branch.position, branch.direction);
         const double sigma = scene.media()[medium].absorptionPerUnit;
         if (!hit) {
             if (sigma > 0.0) {

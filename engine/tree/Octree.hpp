@@ -55,6 +55,11 @@ public:
     // Nothing when p is outside the root cell.
     template <class F>
     void forEachShapeAlongPath(const Point& p, F&& f) const;
+    // Calls f(a, b) for every two shapes stored on one path from the root to a leaf (some pairs more than
+    // once). Every two shapes that both reach some point, their bounds inflated by margin(), are among them:
+    // a shape is stored on the path to every leaf its inflated bounds meet, which is what firstHit relies on.
+    template <class F>
+    void forEachPairOnAPath(F&& f) const;
     // Ids of the stored shapes that overlap `shape` (Shape::overlaps), ascending.
     std::vector<ShapeId> overlapping(const Shape& shape) const;
 
@@ -188,6 +193,24 @@ void Octree::forEachShapeAlongPath(const Point& p, F&& f) const {
         index = cell.firstChild + static_cast<std::uint32_t>(child);
         bounds = childBounds(bounds, child);
     }
+}
+
+template <class F>
+void Octree::forEachPairOnAPath(F&& f) const {
+    std::vector<ShapeId> path;  // the shapes of the cells from the root down to this one
+    const auto visit = [&](const auto& self, std::uint32_t index) -> void {
+        const Cell& cell = cells_[index];
+        const std::size_t above = path.size();
+        forEachShapeIn(cell, [&](ShapeId id) {
+            for (const ShapeId other : path) f(id, other);
+            path.push_back(id);
+        });
+        if (!cell.isLeaf()) {
+            for (std::uint32_t child = 0; child < 8; ++child) self(self, cell.firstChild + child);
+        }
+        path.resize(above);
+    };
+    if (!cells_.empty()) visit(visit, 0);
 }
 
 template <class Visit>

@@ -1,0 +1,129 @@
+// OpticalScene::nextSurface: inside a sealed sphere the tracer takes the sphere's far side without an octree
+// search, which must give exactly what the search would (docs/transport.md, "Sealed droplets").
+#include "TransportFixtures.hpp"
+
+#include "geometry/Sphere.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace dropscope {
+namespace {
+
+using testing::sceneFromJson;
+
+// Shapes each placed to be, or not to be, sealed; the comments give the expectation by id.
+Scene sealingCases() {
+    Scene scene = sceneFromJson(R"("air": {"n": 1}, "glass": {"n": 1.5}, "water": {"n": 1.3337})",
+                                R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "water"},
+                                   {"type": "sphere", "center": [10, 0, 0], "radius": 2, "medium": "water"},
+                                   {"type": "sphere", "center": [10, 0.5, 0], "radius": 0.5, "medium": "air"},
+                                   {"type": "box", "min": [20, 20, 20], "max": [30, 30, 30], "medium": "glass"},
+                                   {"type": "sphere", "center": [25, 25, 25], "radius": 1, "medium": "water"},
+                                   {"type": "sphere", "center": [21.001, 25, 25], "radius": 1, "medium": "water"},
+                                   {"type": "ellipsoid", "center": [40, 0, 0], "semi_axes": [3, 1, 1],
+                                    "medium": "glass"},
+                                   {"type": "sphere", "center": [42.8, 1.3, 1.3], "radius": 0.4, "medium": "water"},
+                                   {"type": "sphere", "center": [60, 0, 0], "radius": 1, "medium": "water"},
+                                   {"type": "sphere", "center": [62.001, 0, 0], "radius": 1, "medium": "water"})",
+                                "");
+    // Placed after loading, which refuses shapes this close: touching within their surface bands, and a sphere
+    // inside the box 1e-9 from its wall.
+    scene.shapes.push_back(std::make_unique<Sphere>(Point(50, 0, 0), 1.0));
+    scene.shapes.push_back(std::make_unique<Sphere>(Point(52.0 + 1e-12, 0, 0), 1.0));
+    scene.shapes.push_back(std::make_unique<Sphere>(Point(25, 21.0 + 1e-9, 25), 1.0));
+    for (std::size_t id = 10; id < scene.shapes.size(); ++id) scene.shapes[id]->setMediumId(2);
+    return scene;
+}
+
+TEST(SealedDroplets, OnlySpheresNoOtherSurfaceComesNearAreSealed) {
+    const OpticalScene optical(sealingCases());
+    const bool expected[] = {
+        true,   // 0: alone
+        false,  // 1: holds sphere 2
+        true,   // 2: well inside sphere 1
+        false,  // 3: a box
+        true,   // 4: in the middle of the box
+        true,   // 5: 1e-3 from the box's wall, inside
+        false,  // 6: an ellipsoid
+        false,  // 7: clear of the ellipsoid, but inside its bounds, which is all that is checked for it
+        true,   // 8: 1e-3 from sphere 9
+        true,   // 9
+        false,  // 10: touching sphere 11 within their bands
+        false,  // 11
+        false,  // 12: 1e-9 from the box's wall
+    };
+    ASSERT_EQ(optical.octree().slotCount(), std::size(expected));
+    for (ShapeId id = 0; id < std::size(expected); ++id) EXPECT_EQ(optical.sealed(id), expected[id]) << "shape " << id;
+}
+
+// A random direction.
+Direction randomDirection(std::mt19937_64& random) {
+    std::normal_distribution<double> normal;
+    const double x = normal(random);
+    const double y = normal(random);
+    const double z = normal(random);
+    return Direction(x, y, z);
+}
+
+// Rays from every sphere's centre region, from its surface heading in and out, and from each box and ellipsoid,
+// in the region the tracer would hold there: nextSurface must be firstHit, shape and distance to the bit.
+void expectNextSurfaceIsFirstHit(const OpticalScene& optical, std::uint64_t seed, int raysPerShape, int& fromSealed) {
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (ShapeId id = 0; id < optical.octree().slotCount(); ++id) {
+        const Shape& shape = *optical.octree().shape(id);
+        const Point centre = shape.bounds().center();
+        const double size = 0.5 * shape.bounds().sizes().minCoeff();
+        for (int k = 0; k < raysPerShape; ++k) {
+            const Direction d = randomDirection(random);
+            const Direction offset = randomDirection(random);
+            const double depth = unit(random);
+            Point p = centre + depth * size * offset.vector();
+            if (shape.kind() == ShapeKind::Sphere && k % 2 == 1) {
+                const auto& sphere = static_cast<const Sphere&>(shape);
+                p = sphere.center() + sphere.radius() * offset.vector();  // on the surface
+            }
+            const ShapeId region = optical.regionAt(p, d);
+            if (region != OpticalScene::kAmbient && optical.sealed(region)) ++fromSealed;
+            const RayHit searched = optical.octree().firstHit(p, d);
+            const RayHit next = optical.nextSurface(region, p, d);
+            ASSERT_EQ(next.shape, searched.shape) << "shape " << id << " ray " << k;
+            ASSERT_EQ(next.distance, searched.distance) << "shape " << id << " ray " << k;
+        }
+    }
+}
+
+TEST(SealedDroplets, TheNextSurfaceIsTheOctreesFirstHit) {
+    int fromSealed = 0;
+    expectNextSurfaceIsFirstHit(OpticalScene(sealingCases()), 11, 400, fromSealed);
+    EXPECT_GT(fromSealed, 1000);
+}
+
+TEST(SealedDroplets, TheNextSurfaceIsTheOctreesFirstHitInADenseCloudInACell) {
+    // Droplets a glass cell holds, one of them holding a bubble: the cell leaves the droplets well inside it
+    // sealed; the droplet with the bubble is not.
+    const Scene scene = parseScene(
+        R"({"dropscope": 1, "ambient": "air",
+            "media": {"air": {"n": 1}, "glass": {"n": 1.5}, "water": {"n": 1.33}},
+            "shapes": [{"type": "box", "min": [0, 0, 0], "max": [4, 4, 4], "medium": "glass"},
+                       {"type": "sphere", "center": [2, 2, 2], "radius": 0.3, "medium": "water"},
+                       {"type": "sphere", "center": [2.1, 2, 2], "radius": 0.1, "medium": "air"}],
+            "generators": [{"type": "droplet_cloud", "region": {"min": [0, 0, 0], "max": [4, 4, 4]}, "count": 3000,
+                            "radius": {"distribution": "uniform", "min": 0.02, "max": 0.12}, "medium": "water",
+                            "seed": 5}]})",
+        "dense-cloud.json");
+    const OpticalScene optical(scene);
+    EXPECT_FALSE(optical.sealed(0));
+    EXPECT_FALSE(optical.sealed(1));
+    int sealedCount = 0;
+    for (ShapeId id = 2; id < optical.octree().slotCount(); ++id) sealedCount += optical.sealed(id) ? 1 : 0;
+    EXPECT_GT(sealedCount, 1000);
+    int fromSealed = 0;
+    expectNextSurfaceIsFirstHit(optical, 12, 20, fromSealed);
+    EXPECT_GT(fromSealed, 10000);
+}
+
+}  // namespace
+}  // namespace dropscope
