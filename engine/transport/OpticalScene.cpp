@@ -32,7 +32,7 @@ Direction OpticalScene::normalOf(ShapeId shape, const Point& p) const {
 }
 
 RayHit OpticalScene::nextSurface(ShapeId region, const Point& p, const Direction& d) const {
-    if (region != kAmbient && facts_[region].sealed) {
+    if (sealed(region)) {
         RayHit exit;
         exit.offer(region, facts_[region].sphere.distanceToSurface(p, d));
         if (exit) return exit;

@@ -44,11 +44,13 @@ public:
     ShapeId parentOf(ShapeId shape) const { return facts_[shape].parent; }
     MediumId mediumIdOf(ShapeId region) const { return region == kAmbient ? ambient_ : facts_[region].medium; }
     // The first surface a photon in `region` at p meets along d: exactly Octree::firstHit (the same shape and
-    // distance), but inside a sealed sphere it is that sphere's far side, found without a search.
+    // distance), but inside a sealed sphere it is that sphere's far side, found without a search. p must lie in
+    // `region` or on its surface band, as a photon's position always does.
     RayHit nextSurface(ShapeId region, const Point& p, const Direction& d) const;
     // Whether `shape` is a sphere no other surface comes near enough to be met first from inside it: it holds no
     // shape, and every other shape is clear of it or holds it well inside (docs/transport.md, "Sealed droplets").
-    bool sealed(ShapeId shape) const { return facts_[shape].sealed; }
+    // False for kAmbient and empty slots.
+    bool sealed(ShapeId shape) const { return shape < facts_.size() && facts_[shape].sealed; }
     // Shape::normal of `shape` at p (the same bits), without reading a sphere's Shape object.
     Direction normalOf(ShapeId shape, const Point& p) const;
     const Medium& mediumOf(ShapeId region) const { return media_[mediumIdOf(region)]; }

@@ -56,8 +56,9 @@ public:
     template <class F>
     void forEachShapeAlongPath(const Point& p, F&& f) const;
     // Calls f(a, b) for every two shapes stored on one path from the root to a leaf (some pairs more than
-    // once). Every two shapes that both reach some point, their bounds inflated by margin(), are among them:
-    // a shape is stored on the path to every leaf its inflated bounds meet, which is what firstHit relies on.
+    // once). A shape is stored on the path to every leaf whose cell, grown by margin(), it reaches (a sphere by
+    // its ball, any other shape by Shape::overlaps), which is what firstHit relies on; so every two shapes that
+    // reach one such cell are among the pairs.
     template <class F>
     void forEachPairOnAPath(F&& f) const;
     // Ids of the stored shapes that overlap `shape` (Shape::overlaps), ascending.

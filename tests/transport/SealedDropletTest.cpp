@@ -56,6 +56,7 @@ TEST(SealedDroplets, OnlySpheresNoOtherSurfaceComesNearAreSealed) {
     };
     ASSERT_EQ(optical.octree().slotCount(), std::size(expected));
     for (ShapeId id = 0; id < std::size(expected); ++id) EXPECT_EQ(optical.sealed(id), expected[id]) << "shape " << id;
+    EXPECT_FALSE(optical.sealed(OpticalScene::kAmbient));
 }
 
 // A random direction.
