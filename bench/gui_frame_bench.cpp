@@ -8,6 +8,9 @@
 //   rebuild  every frame rebuilds the layers (what a change of a view option costs; here the selection
 //            changes);
 //   reference ViewportScene::draw alone on the same state: the 3D view without ImGui and picking.
+// Then, in blocks, the 3D view with only the shapes and with only the lines, and the shapes alone with the
+// spheres' points drawn by the sphere programs and by the general ones (RenderOptions::sphereProgram), in
+// alternate blocks.
 // docs/performance.md ("The app") has the figures.
 //
 // Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--point-pixels 6] [--png FILE]
@@ -165,14 +168,15 @@ int run(const Options& options) {
         }
     }
     // What the 3D view's time is made of: each layer alone (a block of frames each, after a rebuild).
-    const auto layerAlone = [&](bool shapes, bool lines) {
+    const auto layerAlone = [&](bool shapes, bool lines, bool sphereProgram = true, int frames = 0) {
         gui::AppState& state = app.state();
         const render::RenderOptions kept = state.view.layers.render;
         state.view.layers.render.shapes = shapes;
         state.view.layers.render.lines = lines;
+        state.view.layers.render.sphereProgram = sphereProgram;
         reference.draw(state, kWidth, kHeight);
         Series series;
-        for (int k = 0; k < options.frames; ++k) {
+        for (int k = 0; k < (frames > 0 ? frames : options.frames); ++k) {
             Stopwatch watch;
             reference.draw(state, kWidth, kHeight);
             context.gl().Finish();
@@ -183,6 +187,14 @@ int run(const Options& options) {
     };
     Series shapesAlone = layerAlone(true, false);
     Series linesAlone = layerAlone(false, true);
+    // The peer of the sphere programs: the spheres' points drawn by the general ones, in alternate half blocks.
+    Series shapesSphereProgram, shapesGeneral;
+    for (int half = 0; half < 4; ++half) {
+        const int frames = std::max(1, options.frames / 4);
+        Series& into = half % 2 == 0 ? shapesSphereProgram : shapesGeneral;
+        const Series block = layerAlone(true, false, half % 2 == 0, frames);
+        into.ms.insert(into.ms.end(), block.ms.begin(), block.ms.end());
+    }
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, steady (panels + pick + 3D view)", steady.median(),
@@ -197,6 +209,11 @@ int run(const Options& options) {
                 shapesAlone.minimum(), shapesAlone.median() / reference3d);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "  of which the lines alone", linesAlone.median(), linesAlone.minimum(),
                 linesAlone.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "  shapes alone, sphere programs (alternated)",
+                shapesSphereProgram.median(), shapesSphereProgram.minimum(),
+                shapesSphereProgram.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "  shapes alone, general programs (alternated)", shapesGeneral.median(),
+                shapesGeneral.minimum(), shapesGeneral.median() / reference3d);
     std::printf("steady: %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steady.median(), 1e3 / orbit.median());
     // The ray tree (R) is traced on the UI thread from an optical scene built from the document.
     Stopwatch rayTree;

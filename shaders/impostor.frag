@@ -19,7 +19,11 @@ uniform vec2 viewportSize;
 in vec3 worldPosition;
 #endif
 flat in vec3 shapeCenter;
+#ifdef SPHERE
+flat in float inverseRadius;  // toObject is I / r: the same products, without the matrix
+#else
 flat in mat3 toObject;
+#endif
 flat in vec4 shapeColour;
 
 uniform mat4 viewProjection;
@@ -33,8 +37,13 @@ void main() {
     vec4 near = inverseViewProjection * vec4(2.0 * gl_FragCoord.xy / viewportSize - 1.0, -1.0, 1.0);
     vec3 worldPosition = near.xyz / near.w;
 #endif
+#ifdef SPHERE
+    vec3 origin = inverseRadius * (eye - shapeCenter);
+    vec3 direction = inverseRadius * (worldPosition - eye);
+#else
     vec3 origin = toObject * (eye - shapeCenter);
     vec3 direction = toObject * (worldPosition - eye);
+#endif
     float a = dot(direction, direction);
     float b = dot(origin, direction);
     float c = dot(origin, origin) - 1.0;
@@ -50,7 +59,11 @@ void main() {
     vec4 clip = viewProjection * vec4(world, 1.0);
     gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
 #endif
+#ifdef SPHERE
+    vec3 normal = normalize(inverseRadius * surface);
+#else
     vec3 normal = normalize(transpose(toObject) * surface);
+#endif
     float diffuse = abs(dot(normal, normalize(eye - worldPosition)));  // a headlight
     fragmentColour = vec4(shapeColour.rgb * (0.3 + 0.7 * diffuse), shapeColour.a * opacity);
 }

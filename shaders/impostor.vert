@@ -13,10 +13,19 @@
 // depth as a quad's do; without (up to pointPixels) the point's depth is the fragments', so the depth test
 // can run before the fragment shader. The three variants size a shape with the same expression, so each
 // shape is drawn by exactly one of them.
+//
+// SPHERE (with POINT_SPRITE) draws runs of shapes that are all spheres, whose matrices are r I and I / r: it
+// reads one column of each and hands impostor.frag 1/r instead of a matrix, 13 floats a shape read instead
+// of 25 and 8 passed on instead of 16, for the same numbers (docs/rendering.md, "Spheres' points").
 layout(location = 0) in vec3 corner;  // (+-1, +-1, 0)
 layout(location = 2) in vec3 center;
+#ifdef SPHERE
+layout(location = 3) in vec3 linearX;         // the first column of r I
+layout(location = 6) in vec3 inverseLinearX;  // the first column of I / r
+#else
 layout(location = 3) in mat3 linear;         // locations 3, 4, 5
 layout(location = 6) in mat3 inverseLinear;  // locations 6, 7, 8
+#endif
 layout(location = 9) in vec4 colour;
 
 uniform mat4 viewProjection;
@@ -29,18 +38,29 @@ uniform float pixelsPerUnit;   // framebuffer pixels a unit length spans at unit
 uniform float maxStretch;      // how much wider than on the axis a shape is drawn in the corners
 uniform vec2 viewportSize;
 
+#ifndef POINT_SPRITE
 out vec3 worldPosition;
+#endif
 flat out vec3 shapeCenter;
+#ifdef SPHERE
+flat out float inverseRadius;
+#else
 flat out mat3 toObject;
+#endif
 flat out vec4 shapeColour;
 
 const vec4 kDropped = vec4(0.0, 0.0, 2.0, 1.0);  // beyond the far plane: clipped
 
 void main() {
     shapeCenter = center;
-    toObject = inverseLinear;
     shapeColour = colour;
+#ifdef SPHERE
+    inverseRadius = inverseLinearX.x;
+    float radius = length(linearX);  // as the largest column's length below: the three are equal
+#else
+    toObject = inverseLinear;
     float radius = max(length(linear[0]), max(length(linear[1]), length(linear[2])));
+#endif
     vec3 toEye = eye - center;
     float distance = length(toEye);
     // The silhouette's width in pixels: the tangent cone's on the axis, widened off the axis by
@@ -81,7 +101,6 @@ void main() {
         gl_PointSize = 1.0;
         return;
     }
-    worldPosition = nearest;
     gl_Position = nearestClip;
     gl_PointSize = pointSize;
 #else

@@ -49,6 +49,15 @@ std::vector<float> quadStrip() {
 constexpr std::size_t kChunkShapes = 256;
 constexpr std::size_t kMostChunks = 1024;
 
+// Whether the instance's matrices are r I and I / r (a sphere): what the SPHERE programs assume.
+bool isSphere(const ShapeInstance& shape) {
+    const auto scaled = [](const std::array<float, 9>& m) {
+        return m[0] == m[4] && m[0] == m[8] && m[1] == 0.0f && m[2] == 0.0f && m[3] == 0.0f && m[5] == 0.0f &&
+               m[6] == 0.0f && m[7] == 0.0f;
+    };
+    return scaled(shape.linear) && scaled(shape.inverseLinear);
+}
+
 float boundingRadius(const ShapeInstance& shape) {
     float largest = 0.0f;
     for (int column = 0; column < 3; ++column) {
@@ -226,6 +235,10 @@ Renderer::Renderer(const GlFunctions& gl)
       impostorPoints_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag", "#define POINT_SPRITE\n")),
       impostorExactPoints_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag",
                                                            "#define POINT_SPRITE\n#define EXACT_DEPTH\n")),
+      spherePoints_(std::make_unique<ShaderProgram>(gl, "impostor.vert", "impostor.frag",
+                                                    "#define POINT_SPRITE\n#define SPHERE\n")),
+      sphereExactPoints_(std::make_unique<ShaderProgram>(
+          gl, "impostor.vert", "impostor.frag", "#define POINT_SPRITE\n#define EXACT_DEPTH\n#define SPHERE\n")),
       box_(std::make_unique<ShaderProgram>(gl, "box.vert", "box.frag")),
       line_(std::make_unique<ShaderProgram>(gl, "line.vert", "line.frag")),
       rounded_(std::make_unique<Mesh>(gl)),
@@ -260,7 +273,9 @@ void Renderer::setShapes(const ShapeInstances& instances) {
         glm::dvec3 high(std::numeric_limits<double>::lowest());
         RoundedChunk chunk{static_cast<GLint>(first), static_cast<GLsizei>(end - first)};
         chunk.smallest = std::numeric_limits<double>::max();
+        chunk.spheres = true;
         for (std::size_t i = first; i < end; ++i) {
+            chunk.spheres = chunk.spheres && isSphere(rounded[i]);
             const double radius = boundingRadius(rounded[i]);
             const glm::dvec3 c(rounded[i].center[0], rounded[i].center[1], rounded[i].center[2]);
             low = glm::min(low, c - radius);
@@ -342,7 +357,7 @@ void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const 
 // before shading (the last kind always, the others where it honours impostor.frag's depth_greater) drop most
 // hidden fragments unshaded; the last kind goes last, behind all the exact depth. The bounds on a chunk's
 // widths are loose by a percent, so float rounding in the shader cannot leave a shape undrawn.
-void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float pointPixels) {
+void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float pointPixels, bool sphereProgram) {
     if (rounded_->count == 0) return;
     const std::array<glm::dvec4, 6> planes = frustumPlanes(frame.viewProjection);
     const glm::dvec3 eye(frame.eye);
@@ -399,11 +414,18 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
     }
     gl_.Enable(GL_PROGRAM_POINT_SIZE);
     gl_.BindVertexArray(roundedPoints_->vertexArray);
-    for (const auto& [program, drawn] :
-         {std::pair{impostorExactPoints_.get(), &exactPointChunks}, std::pair{impostorPoints_.get(), &pointChunks}}) {
-        if (drawn->empty()) continue;
-        setShapeUniforms(*program, frame, opacity, pointPixels, exactPointPixels_);
-        for (const auto& [distance, chunk] : *drawn) gl_.DrawArrays(GL_POINTS, chunk->first, chunk->count);
+    const ShaderProgram* current = nullptr;
+    for (const auto& [programs, drawn] :
+         {std::pair{std::pair{impostorExactPoints_.get(), sphereExactPoints_.get()}, &exactPointChunks},
+          std::pair{std::pair{impostorPoints_.get(), spherePoints_.get()}, &pointChunks}}) {
+        for (const auto& [distance, chunk] : *drawn) {
+            const ShaderProgram* program = sphereProgram && chunk->spheres ? programs.second : programs.first;
+            if (program != current) {
+                setShapeUniforms(*program, frame, opacity, pointPixels, exactPointPixels_);
+                current = program;
+            }
+            gl_.DrawArrays(GL_POINTS, chunk->first, chunk->count);
+        }
     }
     gl_.Disable(GL_PROGRAM_POINT_SIZE);
 }
@@ -441,7 +463,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
 
     drawShapes(*markers_, *impostor_, frame, 1.0f);
     const bool boxesBlended = options.translucent || options.translucentBoxes;
-    if (options.shapes && !options.translucent) drawRounded(frame, 1.0f, options.pointPixels);
+    if (options.shapes && !options.translucent) drawRounded(frame, 1.0f, options.pointPixels, options.sphereProgram);
     if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, frame, 1.0f);
     if (options.shapes && !options.translucent) drawMeshes(frame, 1.0f);
     if (options.lines && lines_->count > 0) {
@@ -467,7 +489,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
         gl_.DepthMask(GL_FALSE);
         drawShapes(*boxes_, *box_, frame, options.opacity);
         if (options.translucent) {
-            drawRounded(frame, options.opacity, options.pointPixels);
+            drawRounded(frame, options.opacity, options.pointPixels, options.sphereProgram);
             // Only the faces towards the eye, as the impostors draw only the nearest surface: a mesh's back
             // faces blended too would make it look twice as opaque as a droplet.
             gl_.Enable(GL_CULL_FACE);

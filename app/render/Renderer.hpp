@@ -32,6 +32,10 @@ struct RenderOptions {
     // hidden pixels are skipped before shading. 0 draws every shape with its exact depth (snapshots,
     // tests). Larger ones up to kExactPointPixels are points too, with exact depth.
     float pointPixels = 0.0f;
+    // Runs of spheres drawn as points by the program that passes a radius, not two matrices (the same
+    // picture, less vertex work: docs/rendering.md, "Spheres' points"); false draws them as ellipsoids are,
+    // for comparison.
+    bool sphereProgram = true;
     bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid) and the surfaces
     Colour background{0.08f, 0.09f, 0.11f, 1.0f};
 
@@ -84,12 +88,13 @@ private:
         double radius = 0.0;
         double smallest = 0.0;  // the shapes' bounding radii
         double largest = 0.0;
+        bool spheres = false;  // every shape's matrices are r I and I / r
     };
     // pointPixels and exactPointPixels 0: the quad program draws every instance.
     void setShapeUniforms(const ShaderProgram& program, const FrameUniforms& frame, float opacity, float pointPixels,
                           float exactPointPixels) const;
     void drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity);
-    void drawRounded(const FrameUniforms& frame, float opacity, float pointPixels);
+    void drawRounded(const FrameUniforms& frame, float opacity, float pointPixels, bool sphereProgram);
     void drawMeshes(const FrameUniforms& frame, float opacity);
 
     const GlFunctions& gl_;
@@ -97,6 +102,8 @@ private:
     std::unique_ptr<ShaderProgram> impostor_;
     std::unique_ptr<ShaderProgram> impostorPoints_;       // points with the front's depth
     std::unique_ptr<ShaderProgram> impostorExactPoints_;  // points with exact depth
+    std::unique_ptr<ShaderProgram> spherePoints_;         // the two for runs of spheres only
+    std::unique_ptr<ShaderProgram> sphereExactPoints_;
     float exactPointPixels_ = kExactPointPixels;
     std::unique_ptr<ShaderProgram> box_;
     std::unique_ptr<ShaderProgram> line_;

@@ -30,6 +30,7 @@ snapshot::Image DirectRenderer::draw(const render::Camera& camera, const render:
     renderer_.setMarkers(markers);
     render::RenderOptions options = blackBackground();
     options.pointPixels = pointPixels_;
+    options.sphereProgram = sphereProgram_;
     renderer_.draw(camera, options, width(), height());
     return context_.read();
 }

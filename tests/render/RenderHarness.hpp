@@ -26,6 +26,8 @@ public:
                          const std::vector<render::ShapeInstance>& markers = {});
     // RenderOptions::pointPixels of the next draws (0, every shape exact, unless set).
     void setPointPixels(float pixels) { pointPixels_ = pixels; }
+    // RenderOptions::sphereProgram of the next draws (on unless set).
+    void setSphereProgram(bool on) { sphereProgram_ = on; }
     int width() const { return context_.width(); }
     int height() const { return context_.height(); }
 
@@ -33,6 +35,7 @@ private:
     snapshot::OsmesaContext context_;
     render::Renderer renderer_;
     float pointPixels_ = 0.0f;
+    bool sphereProgram_ = true;
 };
 
 // A camera from `eye` to `target`, up +y, with its near and far planes around `bounds`.

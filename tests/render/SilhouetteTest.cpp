@@ -190,6 +190,47 @@ TEST(SmallShapeSilhouettes, WideFieldOfViewPointsCoverTheirSilhouettes) {
     expectCoversExactlyWithPointPixels(renderer, camera, anchor, shapes, engine, {0.0f, 32.0f});
 }
 
+// Runs of spheres drawn as points by the sphere programs (a radius passed, not two matrices) give the very
+// pixels the general programs give: 1200 spheres 1 to 20 pixels across (five chunks of 256 or fewer) and one
+// ellipsoid, whose chunk the general programs draw either way.
+TEST(SmallShapeSilhouettes, TheSphereProgramsDrawTheSamePixelsAsTheGeneralOnes) {
+    DirectRenderer renderer(kWidth, kHeight);
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> size(0.04, 0.6);
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int k = 0; k < 1200; ++k) {
+        const double x = unit(rng);
+        const double y = unit(rng);
+        const double z = unit(rng);
+        shapes.push_back(std::make_unique<Sphere>(Point(12.0 * x, 8.0 * y, 6.0 * z), size(rng)));
+    }
+    shapes.push_back(std::make_unique<Ellipsoid>(
+        Ellipsoid::fromSemiAxes(Point(2.0, 1.0, 0.0), Eigen::Vector3d(0.5, 0.3, 0.2), Eigen::Matrix3d::Identity())));
+    Eigen::AlignedBox3d bounds;
+    for (const auto& shape : shapes) bounds.extend(shape->bounds());
+    const render::Camera camera = lookingAt(Point(0.5, -0.3, 0.0), Eigen::Vector3d(0.2, 0.3, 1.0), 26.0, bounds);
+    const render::Anchor anchor{Point(0.5, -0.3, 0.0)};
+    const render::ShapeInstances instances = render::buildShapeInstances(shapes, anchor);
+    int differing = 0;
+    int lit = 0;
+    for (const float pointPixels : {0.0f, 6.0f, 32.0f}) {
+        renderer.setPointPixels(pointPixels);
+        renderer.setSphereProgram(false);
+        const snapshot::Image general = renderer.draw(camera, anchor, instances, render::LineBatch(anchor));
+        renderer.setSphereProgram(true);
+        const snapshot::Image spheres = renderer.draw(camera, anchor, instances, render::LineBatch(anchor));
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                lit += test::isBlack(general, x, y) ? 0 : 1;
+                differing += test::samePixel(spheres, x, y, general.pixel(x, y)) ? 0 : 1;
+            }
+        }
+    }
+    EXPECT_GT(lit, 3 * kWidth * kHeight / 4) << "the spheres should cover most of the image";
+    EXPECT_EQ(differing, 0);
+}
+
 // Event markers and handles (Renderer::setMarkers) go through the quad program alone, whatever their size:
 // small ones too cover exactly the pixels of their spheres.
 TEST(MarkerSilhouettes, SmallAndLargeMarkersCoverExactlyThePixelsOfTheirSpheres) {
