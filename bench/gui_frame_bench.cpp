@@ -187,12 +187,12 @@ int run(const Options& options) {
     };
     Series shapesAlone = layerAlone(true, false);
     Series linesAlone = layerAlone(false, true);
-    // The peer of the sphere programs: the spheres' points drawn by the general ones, in alternate half blocks.
+    // The peer of the sphere programs: the spheres' points drawn by the general ones, in four blocks.
     Series shapesSphereProgram, shapesGeneral;
-    for (int half = 0; half < 4; ++half) {
+    for (const bool sphereProgram : {true, false, false, true}) {  // each side first once
         const int frames = std::max(1, options.frames / 4);
-        Series& into = half % 2 == 0 ? shapesSphereProgram : shapesGeneral;
-        const Series block = layerAlone(true, false, half % 2 == 0, frames);
+        Series& into = sphereProgram ? shapesSphereProgram : shapesGeneral;
+        const Series block = layerAlone(true, false, sphereProgram, frames);
         into.ms.insert(into.ms.end(), block.ms.begin(), block.ms.end());
     }
     const double reference3d = alone.median();

@@ -29,6 +29,14 @@ ShapeInstance sphereInstance(const Point& center, double radius, const Anchor& a
     return instance(center, radius * Eigen::Matrix3d::Identity(), anchor, colour);
 }
 
+bool isSphereInstance(const ShapeInstance& shape) {
+    const auto scaled = [](const std::array<float, 9>& m) {
+        return m[0] == m[4] && m[0] == m[8] && m[1] == 0.0f && m[2] == 0.0f && m[3] == 0.0f && m[5] == 0.0f &&
+               m[6] == 0.0f && m[7] == 0.0f;
+    };
+    return scaled(shape.linear) && scaled(shape.inverseLinear);
+}
+
 ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& shapes, const Anchor& anchor,
                                    ShapeId selected, MeshCache* cache) {
     ShapeInstances out;

@@ -72,6 +72,9 @@ inline constexpr Colour kHighlight{1.0f, 0.85f, 0.1f, 1.0f};
 
 // A small sphere for the impostor shaders (event markers).
 ShapeInstance sphereInstance(const Point& center, double radius, const Anchor& anchor, const Colour& colour);
+// Whether the instance's matrices are exactly r I and I / r in float (equal diagonal, zero elsewhere): a sphere,
+// which the renderer's SPHERE programs may draw (docs/rendering.md, "Spheres' points").
+bool isSphereInstance(const ShapeInstance& shape);
 
 struct LineVertex {
     std::array<float, 3> position;

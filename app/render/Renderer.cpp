@@ -49,15 +49,6 @@ std::vector<float> quadStrip() {
 constexpr std::size_t kChunkShapes = 256;
 constexpr std::size_t kMostChunks = 1024;
 
-// Whether the instance's matrices are r I and I / r (a sphere): what the SPHERE programs assume.
-bool isSphere(const ShapeInstance& shape) {
-    const auto scaled = [](const std::array<float, 9>& m) {
-        return m[0] == m[4] && m[0] == m[8] && m[1] == 0.0f && m[2] == 0.0f && m[3] == 0.0f && m[5] == 0.0f &&
-               m[6] == 0.0f && m[7] == 0.0f;
-    };
-    return scaled(shape.linear) && scaled(shape.inverseLinear);
-}
-
 float boundingRadius(const ShapeInstance& shape) {
     float largest = 0.0f;
     for (int column = 0; column < 3; ++column) {
@@ -275,7 +266,7 @@ void Renderer::setShapes(const ShapeInstances& instances) {
         chunk.smallest = std::numeric_limits<double>::max();
         chunk.spheres = true;
         for (std::size_t i = first; i < end; ++i) {
-            chunk.spheres = chunk.spheres && isSphere(rounded[i]);
+            chunk.spheres = chunk.spheres && isSphereInstance(rounded[i]);
             const double radius = boundingRadius(rounded[i]);
             const glm::dvec3 c(rounded[i].center[0], rounded[i].center[1], rounded[i].center[2]);
             low = glm::min(low, c - radius);

@@ -231,6 +231,35 @@ TEST(SmallShapeSilhouettes, TheSphereProgramsDrawTheSamePixelsAsTheGeneralOnes) 
     EXPECT_EQ(differing, 0);
 }
 
+// Every sphere's instance is one the sphere programs take (else they would never run, and the test above could
+// not fail), whatever its radius and place; an ellipsoid's, even with equal semi-axes but turned, is not.
+TEST(SmallShapeSilhouettes, SpheresAndOnlySpheresAreSphereInstances) {
+    std::mt19937_64 rng(14);
+    std::uniform_real_distribution<double> exponent(-6.0, 4.0);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const render::Anchor anchor{Point(0.3, -7.0, 2.0)};
+    for (int k = 0; k < 1000; ++k) {
+        const double radius = std::pow(10.0, exponent(rng));
+        const double x = unit(rng);
+        const double y = unit(rng);
+        const double z = unit(rng);
+        const Point center = 1e3 * Point(x, y, z);
+        ASSERT_TRUE(render::isSphereInstance(render::sphereInstance(center, radius, anchor, render::kHighlight)))
+            << "radius " << radius;
+    }
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::make_unique<Sphere>(Point(1.0, 2.0, 3.0), 0.7));
+    shapes.push_back(std::make_unique<Ellipsoid>(
+        Ellipsoid::fromSemiAxes(Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.5, 0.4, 0.3), Eigen::Matrix3d::Identity())));
+    shapes.push_back(std::make_unique<Ellipsoid>(Ellipsoid::fromSemiAxes(
+        Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.5, 0.5, 0.5), rotationAboutAxis(Direction(1.0, 2.0, 3.0), 0.4))));
+    const render::ShapeInstances instances = render::buildShapeInstances(shapes, anchor);
+    ASSERT_EQ(instances.rounded.size(), 3U);
+    EXPECT_TRUE(render::isSphereInstance(instances.rounded[0]));
+    EXPECT_FALSE(render::isSphereInstance(instances.rounded[1]));
+    EXPECT_FALSE(render::isSphereInstance(instances.rounded[2]));
+}
+
 // Event markers and handles (Renderer::setMarkers) go through the quad program alone, whatever their size:
 // small ones too cover exactly the pixels of their spheres.
 TEST(MarkerSilhouettes, SmallAndLargeMarkersCoverExactlyThePixelsOfTheirSpheres) {
