@@ -265,14 +265,15 @@ FirstHitTimes timeFirstHits(const OpticalScene& optical, const std::vector<Ray>&
     std::size_t sealed = 0;
     for (const Ray& ray : rays) {
         regions.push_back(optical.regionAt(ray.origin, ray.direction));
-        if (regions.back() != OpticalScene::kAmbient && optical.sealed(regions.back())) ++sealed;
+        if (optical.sealed(regions.back())) ++sealed;
     }
     times.sealedFraction = static_cast<double>(sealed) / static_cast<double>(rays.size());
     for (std::size_t i = 0; i < rays.size(); ++i) {
         const RayHit searched = octree.firstHit(rays[i].origin, rays[i].direction);
         const RayHit next = optical.nextSurface(regions[i], rays[i].origin, rays[i].direction);
-        times.nextSurfaceIdentical = times.nextSurfaceIdentical && next.shape == searched.shape &&
-                                     (next.distance == searched.distance || (!next && !searched));
+        // A miss is (kNone, +inf) either way.
+        times.nextSurfaceIdentical =
+            times.nextSurfaceIdentical && next.shape == searched.shape && next.distance == searched.distance;
     }
     for (int r = 0; r < options.repeat; ++r) {
         const Stopwatch watch;

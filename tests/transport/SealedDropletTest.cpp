@@ -2,11 +2,10 @@
 // search, which must give exactly what the search would (docs/transport.md, "Sealed droplets").
 #include "TransportFixtures.hpp"
 
+#include "geometry/RandomGeometry.hpp"
 #include "geometry/Sphere.hpp"
 
 #include <gtest/gtest.h>
-
-#include <random>
 
 namespace dropscope {
 namespace {
@@ -59,35 +58,25 @@ TEST(SealedDroplets, OnlySpheresNoOtherSurfaceComesNearAreSealed) {
     EXPECT_FALSE(optical.sealed(OpticalScene::kAmbient));
 }
 
-// A random direction.
-Direction randomDirection(std::mt19937_64& random) {
-    std::normal_distribution<double> normal;
-    const double x = normal(random);
-    const double y = normal(random);
-    const double z = normal(random);
-    return Direction(x, y, z);
-}
-
 // Rays from every sphere's centre region, from its surface heading in and out, and from each box and ellipsoid,
 // in the region the tracer would hold there: nextSurface must be firstHit, shape and distance to the bit.
 void expectNextSurfaceIsFirstHit(const OpticalScene& optical, std::uint64_t seed, int raysPerShape, int& fromSealed) {
-    std::mt19937_64 random(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    testing::Rng random(seed);
     for (ShapeId id = 0; id < optical.octree().slotCount(); ++id) {
         const Shape& shape = *optical.octree().shape(id);
         const Point centre = shape.bounds().center();
         const double size = 0.5 * shape.bounds().sizes().minCoeff();
         for (int k = 0; k < raysPerShape; ++k) {
-            const Direction d = randomDirection(random);
-            const Direction offset = randomDirection(random);
-            const double depth = unit(random);
+            const Direction d = testing::randomDirection(random);
+            const Direction offset = testing::randomDirection(random);
+            const double depth = testing::uniform(random, 0.0, 1.0);
             Point p = centre + depth * size * offset.vector();
             if (shape.kind() == ShapeKind::Sphere && k % 2 == 1) {
                 const auto& sphere = static_cast<const Sphere&>(shape);
                 p = sphere.center() + sphere.radius() * offset.vector();  // on the surface
             }
             const ShapeId region = optical.regionAt(p, d);
-            if (region != OpticalScene::kAmbient && optical.sealed(region)) ++fromSealed;
+            if (optical.sealed(region)) ++fromSealed;
             const RayHit searched = optical.octree().firstHit(p, d);
             const RayHit next = optical.nextSurface(region, p, d);
             ASSERT_EQ(next.shape, searched.shape) << "shape " << id << " ray " << k;
