@@ -162,18 +162,26 @@ struct Octree::Traversal {
         const Point& low = tree.gridLow_;
         int index[3];
         int step[3];
+        int lastIndex[3];  // the grid's last cell along the ray on each axis (the cell it stays in if d is 0 there)
+        int upper[3];      // 1 when the plane ahead is the cell's upper face
         // Where the ray crosses the plane ahead on each axis; +inf in the grid's last cell that way, which
-        // (as the recursive walk's last child) the ray leaves only at tExit, on the inflated root.
+        // (as the recursive walk's last child) the ray leaves only at tExit, on the inflated root. Written
+        // without branches: which axis the ray steps along next is what a DDA cannot predict.
         double next[3];
         const auto planeAhead = [&](int axis) {
-            if (index[axis] == (d[axis] > 0.0 ? side - 1 : 0)) return kInfinity;
-            return crossing(axis, low[axis] + tree.gridCell_ * (index[axis] + (d[axis] > 0.0 ? 1 : 0)));
+            const double offset = low[axis] + tree.gridCell_ * (index[axis] + upper[axis]) - p[axis];
+            // offset 0 crosses at 0 also when d[axis] is subnormal (an infinite inverse; 0 x inf is NaN).
+            const double at = offset == 0.0 ? 0.0 : offset * inverse[axis];
+            return index[axis] == lastIndex[axis] ? kInfinity : at;
         };
         for (int axis = 0; axis < 3; ++axis) {
             const double at = d[axis] == 0.0 ? p[axis] : p[axis] + tEnter * d[axis];
-            const double cell = std::floor((at - low[axis]) * tree.gridCellInverse_);
+            // Truncation is the floor here: a negative value is clamped to the first cell either way.
+            const double cell = (at - low[axis]) * tree.gridCellInverse_;
             index[axis] = cell < 0.0 ? 0 : cell >= side ? side - 1 : static_cast<int>(cell);
             step[axis] = d[axis] > 0.0 ? 1 : -1;
+            upper[axis] = d[axis] > 0.0 ? 1 : 0;
+            lastIndex[axis] = d[axis] > 0.0 ? side - 1 : d[axis] < 0.0 ? 0 : index[axis];
             next[axis] = planeAhead(axis);
         }
         double t = tEnter;
@@ -187,9 +195,9 @@ struct Octree::Traversal {
             const bool last = out >= tExit;
             std::uint32_t following = 0;
             if (!last) {
+                // Every axis: one that is not crossed gets its own plane ahead again, the same double.
                 for (int axis = 0; axis < 3; ++axis) {
-                    if (next[axis] != out) continue;
-                    index[axis] += step[axis];
+                    index[axis] += next[axis] == out ? step[axis] : 0;
                     next[axis] = planeAhead(axis);
                 }
                 following = tree.grid_[gridSlot(std::size_t(index[0]), std::size_t(index[1]), std::size_t(index[2]),
@@ -218,7 +226,7 @@ struct Octree::Traversal {
         inverse = d.vector().cwiseInverse();
         slack = kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_);
         prefilterRay = {{p.x(), p.y(), p.z()}, {d.x(), d.y(), d.z()}, slack, 0.0};
-        const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d);
+        const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d, inverse);
         if (!span) return;
         // The debugger's record lists every level's cells, so it takes the walk from the root.
         if (tree.gridLevel_ > 0 && !record) {
@@ -232,6 +240,11 @@ struct Octree::Traversal {
 
 std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const Direction& d) const {
     if (!d || !p.allFinite()) return std::nullopt;
+    return rootSpan(p, d, d.vector().cwiseInverse());
+}
+
+std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const Direction& d,
+                                                          const Eigen::Vector3d& inverse) const {
     const CellBounds root(rootBounds_.min().array() - margin_, rootBounds_.max().array() + margin_);
     double tEnter = 0.0;
     double tExit = kInfinity;
@@ -240,9 +253,8 @@ std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const 
             if (p[axis] < root.min()[axis] || p[axis] > root.max()[axis]) return std::nullopt;
             continue;
         }
-        const double inverse = 1.0 / d[axis];
-        const double t0 = (root.min()[axis] - p[axis]) * inverse;
-        const double t1 = (root.max()[axis] - p[axis]) * inverse;
+        const double t0 = (root.min()[axis] - p[axis]) * inverse[axis];
+        const double t1 = (root.max()[axis] - p[axis]) * inverse[axis];
         tEnter = std::max(tEnter, std::min(t0, t1));
         tExit = std::min(tExit, std::max(t0, t1));
     }
