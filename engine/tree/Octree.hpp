@@ -115,7 +115,8 @@ private:
     void rebuild(const CellBounds& bounds);
     // insert and insertAt: stores `shape` in the empty slot `id` and places it.
     void fillSlot(ShapeId id, std::unique_ptr<Shape> shape);
-    // rootSpan for a valid ray, given 1 / d (componentwise; the traversal has it already).
+    // rootSpan given 1 / d (componentwise; the traversal has it already), without rootSpan's checks: d must be
+    // a valid direction and p finite.
     std::optional<std::pair<double, double>> rootSpan(const Point& p, const Direction& d,
                                                       const Eigen::Vector3d& inverse) const;
     void freeze();

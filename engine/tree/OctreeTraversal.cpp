@@ -165,8 +165,9 @@ struct Octree::Traversal {
         int lastIndex[3];  // the grid's last cell along the ray on each axis (the cell it stays in if d is 0 there)
         int upper[3];      // 1 when the plane ahead is the cell's upper face
         // Where the ray crosses the plane ahead on each axis; +inf in the grid's last cell that way, which
-        // (as the recursive walk's last child) the ray leaves only at tExit, on the inflated root. Written
-        // without branches: which axis the ray steps along next is what a DDA cannot predict.
+        // (as the recursive walk's last child) the ray leaves only at tExit, on the inflated root, and on an
+        // axis the ray does not move along (d 0 there: its only cell is its last). The step below does not
+        // branch on which axis the ray crosses next, which is what a DDA cannot predict.
         double next[3];
         const auto planeAhead = [&](int axis) {
             const double offset = low[axis] + tree.gridCell_ * (index[axis] + upper[axis]) - p[axis];
@@ -195,9 +196,10 @@ struct Octree::Traversal {
             const bool last = out >= tExit;
             std::uint32_t following = 0;
             if (!last) {
-                // Every axis: one that is not crossed gets its own plane ahead again, the same double.
+                // Every axis: one that is not crossed gets its own plane ahead again, the same double. As out is
+                // the least of next[], `<=` is `==` here, and compiles to a flag rather than a jump.
                 for (int axis = 0; axis < 3; ++axis) {
-                    index[axis] += next[axis] == out ? step[axis] : 0;
+                    index[axis] += step[axis] * static_cast<int>(next[axis] <= out);
                     next[axis] = planeAhead(axis);
                 }
                 following = tree.grid_[gridSlot(std::size_t(index[0]), std::size_t(index[1]), std::size_t(index[2]),
