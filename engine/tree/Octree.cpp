@@ -104,17 +104,26 @@ void Octree::rebuild(const CellBounds& bounds) {
 void Octree::freeze() {
     cells_.clear();
     blocks_.clear();
+    exactSpheres_.clear();
     sphereIds_.clear();
     others_.clear();
     cells_.reserve(building_.size());
     std::vector<ShapeId> spheres;
+    anchor_ = rootBounds_.center();
+    packedReach_ = 0.0;
     for (const Node& node : building_) {
-        // A sphere whose band make() would not recompute (none today) is kept with the other shapes.
+        // A sphere whose band make() would not recompute, or too large or too far to pack in single precision
+        // (none in any real scene), is kept with the other shapes.
         spheres.clear();
         const auto firstOther = static_cast<std::uint32_t>(others_.size());
         for (ShapeId id : node.sphereIds) {
-            if (SphereBlock::packable(static_cast<const Sphere&>(*shapes_[id]).geometry())) {
+            const SphereGeometry& sphere = static_cast<const Sphere&>(*shapes_[id]).geometry();
+            if (SphereGeometry::make(sphere.center, sphere.radius).band == sphere.band &&
+                SphereBlock::packable(sphere, anchor_)) {
                 spheres.push_back(id);
+                if (exactSpheres_.empty()) exactSpheres_.resize(shapes_.size());
+                exactSpheres_[id] = {sphere.center, sphere.radius};
+                packedReach_ = std::max(packedReach_, (sphere.center - anchor_).cwiseAbs().maxCoeff() + sphere.radius);
             } else {
                 others_.push_back(id);
             }
@@ -128,7 +137,7 @@ void Octree::freeze() {
             for (unsigned lane = 0; lane < SphereBlock::kWidth; ++lane) {
                 const bool used = k + lane < spheres.size();
                 if (used)
-                    block.pack(lane, static_cast<const Sphere&>(*shapes_[spheres[k + lane]]).geometry());
+                    block.pack(lane, static_cast<const Sphere&>(*shapes_[spheres[k + lane]]).geometry(), anchor_);
                 else
                     block.clear(lane);
                 sphereIds_.push_back(used ? spheres[k + lane] : RayHit::kNone);
@@ -138,6 +147,7 @@ void Octree::freeze() {
     cells_.shrink_to_fit();
     blocks_.shrink_to_fit();
     sphereIds_.shrink_to_fit();
+    exactSpheres_.shrink_to_fit();
     others_.shrink_to_fit();
     building_ = {};
     rootHalf_ = 0.5 * rootBounds_.sizes().maxCoeff();
@@ -360,8 +370,8 @@ std::vector<LevelStatistics> Octree::statistics() const {
 
 std::size_t Octree::bytesUsed() const {
     return sizeof(*this) + cells_.capacity() * sizeof(Cell) + blocks_.capacity() * sizeof(SphereBlock) +
-           sphereIds_.capacity() * sizeof(ShapeId) + others_.capacity() * sizeof(ShapeId) +
-           shapes_.capacity() * sizeof(std::unique_ptr<Shape>) +
+           sphereIds_.capacity() * sizeof(ShapeId) + exactSpheres_.capacity() * sizeof(ExactSphere) +
+           others_.capacity() * sizeof(ShapeId) + shapes_.capacity() * sizeof(std::unique_ptr<Shape>) +
            (grid_.capacity() + gridAbove_.capacity()) * sizeof(std::uint32_t);
 }
 

@@ -21,8 +21,9 @@ class BoundingBox;
 // can never hide a shape from a ray that grazes a cell boundary; a shape that overlaps all eight
 // children of a cell stays in that cell instead (a glass cell around a whole cloud is then tested
 // once per ray, not in every leaf). A cell's spheres are also packed by value, four to a SphereBlock
-// (structure of arrays), for a conservative vectorised prefilter; the few that pass it get the exact
-// SphereGeometry::distanceToSurface, the same code as Sphere itself, so bit-identical. Shapes are
+// (structure of arrays, single precision), for a conservative vectorised prefilter; the few that pass it get
+// the exact SphereGeometry::distanceToSurface from the sphere's double centre and radius, kept once per sphere,
+// the same code as Sphere itself, so bit-identical. Shapes are
 // placed into growable per-cell lists, which are then frozen into flat arrays for the queries; an
 // insert or remove thaws, edits and refreezes (O(N), a few ms per 1e5 shapes).
 class Octree {
@@ -153,11 +154,20 @@ private:
     double margin_ = 0.0;
     std::vector<Node> building_;  // empty between edits
     std::vector<Cell> cells_;
-    std::vector<SphereBlock> blocks_;  // each cell's spheres, relative to its centre, padded to 4
+    std::vector<SphereBlock> blocks_;  // each cell's spheres, relative to anchor_, padded to 4
     std::vector<ShapeId> sphereIds_;   // 4 per block, RayHit::kNone in padding
+    // A packed sphere's double centre and radius, for the exact test of the candidates the prefilter leaves
+    // (SphereGeometry::make recomputes its band; freeze packs only the spheres whose band it recomputes).
+    struct ExactSphere {
+        Point center;
+        double radius;
+    };
+    std::vector<ExactSphere> exactSpheres_;  // at the packed spheres' ids; the other slots unused
     std::vector<ShapeId> others_;
     double rootHalf_ = 0.0;         // half the root's side
     double coordinateScale_ = 0.0;  // largest |coordinate| of the inflated root, for the prefilter's slack
+    Point anchor_ = Point::Zero();  // the root's centre, the origin of the sphere blocks' coordinates
+    double packedReach_ = 0.0;      // the largest |centre - anchor_|_inf + R of a packed sphere
     bool prefetch_ = false;         // whether the traversal prefetches children (a tree too large for the caches)
     int gridLevel_ = 0;
     Point gridLow_ = Point::Zero();  // the root's lowest corner

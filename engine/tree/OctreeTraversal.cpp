@@ -25,7 +25,6 @@ struct Octree::Traversal {
         return d[axis] == 0.0 ? kInfinity : value == p[axis] ? 0.0 : (value - p[axis]) * inverse[axis];
     }
 
-    double slack;  // the prefilter's, kPrefilterSlackRelative x (|p|_inf + the root's coordinate scale)
     PrefilterRay prefilterRay;
 
     // The exact distance of one shape, offered to the best hit.
@@ -43,18 +42,15 @@ struct Octree::Traversal {
         if (cell.sphereCount > 0) {
             PrefilterRay& ray = prefilterRay;
             for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
-                ray.limit = hit.distance + slack;
+                ray.setBest(hit.distance);
                 const std::uint32_t block = cell.firstBlock + first / SphereBlock::kWidth;
                 const ShapeId* ids = tree.sphereIds_.data() + std::size_t{block} * SphereBlock::kWidth;
                 for (std::uint64_t candidates = sphereCandidates(
                          tree.blocks_.data() + block, std::min<std::uint32_t>(cell.sphereCount - first, 64), ray);
                      candidates != 0; candidates &= candidates - 1) {
-                    const int lane = __builtin_ctzll(candidates);
-                    const SphereBlock& candidate =
-                        tree.blocks_[block + static_cast<std::uint32_t>(lane) / SphereBlock::kWidth];
-                    testExactly(
-                        ids[lane],
-                        candidate.geometry(static_cast<unsigned>(lane) % SphereBlock::kWidth).distanceToSurface(p, d));
+                    const ShapeId id = ids[__builtin_ctzll(candidates)];
+                    const ExactSphere& sphere = tree.exactSpheres_[id];
+                    testExactly(id, SphereGeometry::make(sphere.center, sphere.radius).distanceToSurface(p, d));
                 }
             }
         }
@@ -117,14 +113,11 @@ struct Octree::Traversal {
         }
     }
 
-    // Asks for a cell's first sphere blocks (up to 16 spheres, 8 cache lines) and its children's cells.
+    // Asks for a cell's first sphere blocks (up to 16 spheres, 4 cache lines) and its children's cells.
     void prefetchCell(const Cell& cell) const {
         const SphereBlock* blocks = tree.blocks_.data() + cell.firstBlock;
         const std::uint32_t blockCount = (std::min<std::uint32_t>(cell.sphereCount, 16) + 3) / 4;
-        for (std::uint32_t b = 0; b < blockCount; ++b) {
-            __builtin_prefetch(blocks + b);
-            __builtin_prefetch(reinterpret_cast<const char*>(blocks + b) + 64);
-        }
+        for (std::uint32_t b = 0; b < blockCount; ++b) __builtin_prefetch(blocks + b);
         if (!cell.isLeaf()) __builtin_prefetch(tree.cells_.data() + cell.firstChild);
     }
 
@@ -226,10 +219,12 @@ struct Octree::Traversal {
     void run() {
         if (!d || !p.allFinite()) return;
         inverse = d.vector().cwiseInverse();
-        slack = kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_);
-        prefilterRay = {{p.x(), p.y(), p.z()}, {d.x(), d.y(), d.z()}, slack, 0.0};
         const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d, inverse);
         if (!span) return;
+        // The prefilter's ray starts where this one enters the root, so its single-precision coordinates are
+        // those of points within the root.
+        prefilterRay = PrefilterRay::make(p, d, span->first, tree.anchor_, tree.packedReach_,
+                                          kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_));
         // The debugger's record lists every level's cells, so it takes the walk from the root.
         if (tree.gridLevel_ > 0 && !record) {
             walkGrid(span->first, span->second);
@@ -265,14 +260,14 @@ std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const 
 }
 
 RayHit Octree::firstHit(const Point& p, const Direction& d) const {
-    Traversal traversal{*this, p, d, {}, nullptr, {}, 0.0, {}};
+    Traversal traversal{*this, p, d, {}, nullptr, {}, {}};
     traversal.run();
     return traversal.hit;
 }
 
 RayHit Octree::firstHit(const Point& p, const Direction& d, TraversalRecord& record) const {
     record = TraversalRecord{};
-    Traversal traversal{*this, p, d, {}, &record, {}, 0.0, {}};
+    Traversal traversal{*this, p, d, {}, &record, {}, {}};
     traversal.run();
     return traversal.hit;
 }

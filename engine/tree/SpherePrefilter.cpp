@@ -10,91 +10,138 @@
 
 namespace dropscope {
 
-void SphereBlock::pack(unsigned lane, const SphereGeometry& sphere) {
-    x[lane] = sphere.center.x();
-    y[lane] = sphere.center.y();
-    z[lane] = sphere.center.z();
-    radius[lane] = sphere.radius;
+namespace {
+
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+constexpr float kFloatInfinity = std::numeric_limits<float>::infinity();
+// Single precision's unit roundoff, 2^-24.
+constexpr double kFloatRoundoff = 0x1p-24;
+
+// v in single precision, no smaller (no larger) than v: widened by 4 units of single rounding before the
+// conversion, which moves it by at most one. Values beyond single precision's range go to the infinity (the
+// largest finite value) on that side.
+float roundedUp(double v) {
+    v += std::abs(v) * 0x1p-22;
+    return v > kFloatMax ? kFloatInfinity : v < -kFloatMax ? -std::numeric_limits<float>::max() : static_cast<float>(v);
+}
+float roundedDown(double v) { return -roundedUp(-v); }
+
+}  // namespace
+
+bool SphereBlock::packable(const SphereGeometry& sphere, const Point& anchor) {
+    return (sphere.center - anchor).cwiseAbs().maxCoeff() <= kPrefilterLargestPacked &&
+           sphere.radius <= kPrefilterLargestPacked;
+}
+
+void SphereBlock::pack(unsigned lane, const SphereGeometry& sphere, const Point& anchor) {
+    x[lane] = static_cast<float>(sphere.center.x() - anchor.x());
+    y[lane] = static_cast<float>(sphere.center.y() - anchor.y());
+    z[lane] = static_cast<float>(sphere.center.z() - anchor.z());
+    radius[lane] = roundedUp(sphere.radius * kPrefilterRadiusFactor);
 }
 
 void SphereBlock::clear(unsigned lane) {
-    x[lane] = y[lane] = z[lane] = std::numeric_limits<double>::quiet_NaN();
-    radius[lane] = 0.0;
+    x[lane] = y[lane] = z[lane] = std::numeric_limits<float>::quiet_NaN();
+    radius[lane] = 0.0f;
 }
+
+PrefilterRay PrefilterRay::make(const Point& p, const Direction& d, double shift, const Point& anchor,
+                                double packedReach, double doubleSlack) {
+    const Eigen::Vector3d origin = p + shift * d.vector() - anchor;
+    const double scale = origin.cwiseAbs().maxCoeff() + packedReach;  // X
+    PrefilterRay ray{
+        {0.0f, 0.0f, 0.0f}, {static_cast<float>(d.x()), static_cast<float>(d.y()), static_cast<float>(d.z())},
+        kFloatInfinity,     roundedDown(-shift),
+        kFloatInfinity,     shift,
+        doubleSlack};
+    // A ray this far from the anchor in a scene this large (beyond any real one) lets every sphere through:
+    // from the anchor with an infinite slack, every packed lane passes each comparison.
+    if (!(scale <= kPrefilterLargestPacked)) return ray;
+    for (int axis = 0; axis < 3; ++axis) ray.origin[axis] = static_cast<float>(origin[axis]);
+    ray.slack = roundedUp(doubleSlack + kPrefilterFloatSlackUnits * kFloatRoundoff * scale);
+    return ray;
+}
+
+void PrefilterRay::setBest(double best) { limit = roundedUp(best + doubleSlack - shift); }
 
 namespace {
 
-// With O = centre - origin, b = O.d (distance along the ray to the centre's foot), w = O - b d (the
-// perpendicular, cancellation-free) and reach = R kPrefilterRadiusFactor + slack, a sphere stays a
-// candidate when |w| <= reach, b >= -reach and b - reach <= limit. NaN (unused lanes) fails every
-// comparison.
+// With O = centre - q, b = O.d (distance along the ray from q to the centre's foot), w = O - b d (the
+// perpendicular, cancellation-free) and reach = R' + slack, a sphere stays a candidate when |w| <= reach,
+// b + reach >= behind and b - reach <= limit. NaN (unused lanes) fails every comparison.
 struct Sse2Lanes {
-    __m128d ox, oy, oz, dx, dy, dz, factor, slack, limit;
+    __m128 ox, oy, oz, dx, dy, dz, slack, behind, limit;
 
-    int accept(__m128d cx, __m128d cy, __m128d cz, __m128d r) const {
-        const __m128d x = _mm_sub_pd(cx, ox);
-        const __m128d y = _mm_sub_pd(cy, oy);
-        const __m128d z = _mm_sub_pd(cz, oz);
-        const __m128d b = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, dx), _mm_mul_pd(y, dy)), _mm_mul_pd(z, dz));
-        const __m128d wx = _mm_sub_pd(x, _mm_mul_pd(b, dx));
-        const __m128d wy = _mm_sub_pd(y, _mm_mul_pd(b, dy));
-        const __m128d wz = _mm_sub_pd(z, _mm_mul_pd(b, dz));
-        const __m128d perpendicular2 =
-            _mm_add_pd(_mm_add_pd(_mm_mul_pd(wx, wx), _mm_mul_pd(wy, wy)), _mm_mul_pd(wz, wz));
-        const __m128d reach = _mm_add_pd(_mm_mul_pd(r, factor), slack);
-        __m128d ok = _mm_cmple_pd(perpendicular2, _mm_mul_pd(reach, reach));
-        ok = _mm_and_pd(ok, _mm_cmpge_pd(_mm_add_pd(b, reach), _mm_setzero_pd()));
-        ok = _mm_and_pd(ok, _mm_cmple_pd(_mm_sub_pd(b, reach), limit));
-        return _mm_movemask_pd(ok);
+    int accept(const SphereBlock& block) const {
+        const __m128 x = _mm_sub_ps(_mm_load_ps(block.x), ox);
+        const __m128 y = _mm_sub_ps(_mm_load_ps(block.y), oy);
+        const __m128 z = _mm_sub_ps(_mm_load_ps(block.z), oz);
+        const __m128 b = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, dx), _mm_mul_ps(y, dy)), _mm_mul_ps(z, dz));
+        const __m128 wx = _mm_sub_ps(x, _mm_mul_ps(b, dx));
+        const __m128 wy = _mm_sub_ps(y, _mm_mul_ps(b, dy));
+        const __m128 wz = _mm_sub_ps(z, _mm_mul_ps(b, dz));
+        const __m128 perpendicular2 =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(wx, wx), _mm_mul_ps(wy, wy)), _mm_mul_ps(wz, wz));
+        const __m128 reach = _mm_add_ps(_mm_load_ps(block.radius), slack);
+        __m128 ok = _mm_cmple_ps(perpendicular2, _mm_mul_ps(reach, reach));
+        ok = _mm_and_ps(ok, _mm_cmpge_ps(_mm_add_ps(b, reach), behind));
+        ok = _mm_and_ps(ok, _mm_cmple_ps(_mm_sub_ps(b, reach), limit));
+        return _mm_movemask_ps(ok);
     }
 };
 
 }  // namespace
 
 std::uint64_t sphereCandidatesSse2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray) {
-    const Sse2Lanes lanes{
-        _mm_set1_pd(ray.origin[0]),          _mm_set1_pd(ray.origin[1]),    _mm_set1_pd(ray.origin[2]),
-        _mm_set1_pd(ray.direction[0]),       _mm_set1_pd(ray.direction[1]), _mm_set1_pd(ray.direction[2]),
-        _mm_set1_pd(kPrefilterRadiusFactor), _mm_set1_pd(ray.slack),        _mm_set1_pd(ray.limit)};
+    const Sse2Lanes lanes{_mm_set1_ps(ray.origin[0]),    _mm_set1_ps(ray.origin[1]),    _mm_set1_ps(ray.origin[2]),
+                          _mm_set1_ps(ray.direction[0]), _mm_set1_ps(ray.direction[1]), _mm_set1_ps(ray.direction[2]),
+                          _mm_set1_ps(ray.slack),        _mm_set1_ps(ray.behind),       _mm_set1_ps(ray.limit)};
     std::uint64_t mask = 0;
     for (unsigned first = 0; first < count; first += SphereBlock::kWidth) {
-        const SphereBlock& block = blocks[first / SphereBlock::kWidth];
-        const int low =
-            lanes.accept(_mm_load_pd(block.x), _mm_load_pd(block.y), _mm_load_pd(block.z), _mm_load_pd(block.radius));
-        const int high = lanes.accept(_mm_load_pd(block.x + 2), _mm_load_pd(block.y + 2), _mm_load_pd(block.z + 2),
-                                      _mm_load_pd(block.radius + 2));
-        mask |= static_cast<std::uint64_t>(low | high << 2) << first;
+        mask |= static_cast<std::uint64_t>(lanes.accept(blocks[first / SphereBlock::kWidth])) << first;
     }
     return mask;
 }
 
+namespace {
+
+// Four floats of one block in the lower half, four of another in the upper.
+__attribute__((target("avx2,fma"))) inline __m256 both(const float* low, const float* high) {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(low)), _mm_load_ps(high), 1);
+}
+
+}  // namespace
+
+// Two blocks a step, one in each half of the registers; with an odd number of blocks the last step tests
+// the last block twice (its upper half's bits lie beyond count).
 __attribute__((target("avx2,fma"))) std::uint64_t sphereCandidatesAvx2(const SphereBlock* blocks, unsigned count,
                                                                        const PrefilterRay& ray) {
-    const __m256d ox = _mm256_set1_pd(ray.origin[0]);
-    const __m256d oy = _mm256_set1_pd(ray.origin[1]);
-    const __m256d oz = _mm256_set1_pd(ray.origin[2]);
-    const __m256d dx = _mm256_set1_pd(ray.direction[0]);
-    const __m256d dy = _mm256_set1_pd(ray.direction[1]);
-    const __m256d dz = _mm256_set1_pd(ray.direction[2]);
-    const __m256d factor = _mm256_set1_pd(kPrefilterRadiusFactor);
-    const __m256d slack = _mm256_set1_pd(ray.slack);
-    const __m256d limit = _mm256_set1_pd(ray.limit);
+    const __m256 ox = _mm256_set1_ps(ray.origin[0]);
+    const __m256 oy = _mm256_set1_ps(ray.origin[1]);
+    const __m256 oz = _mm256_set1_ps(ray.origin[2]);
+    const __m256 dx = _mm256_set1_ps(ray.direction[0]);
+    const __m256 dy = _mm256_set1_ps(ray.direction[1]);
+    const __m256 dz = _mm256_set1_ps(ray.direction[2]);
+    const __m256 slack = _mm256_set1_ps(ray.slack);
+    const __m256 behind = _mm256_set1_ps(ray.behind);
+    const __m256 limit = _mm256_set1_ps(ray.limit);
     std::uint64_t mask = 0;
-    for (unsigned first = 0; first < count; first += SphereBlock::kWidth) {
-        const SphereBlock& block = blocks[first / SphereBlock::kWidth];
-        const __m256d x = _mm256_sub_pd(_mm256_load_pd(block.x), ox);
-        const __m256d y = _mm256_sub_pd(_mm256_load_pd(block.y), oy);
-        const __m256d z = _mm256_sub_pd(_mm256_load_pd(block.z), oz);
-        const __m256d reach = _mm256_fmadd_pd(_mm256_load_pd(block.radius), factor, slack);
-        const __m256d b = _mm256_fmadd_pd(z, dz, _mm256_fmadd_pd(y, dy, _mm256_mul_pd(x, dx)));
-        const __m256d wx = _mm256_fnmadd_pd(b, dx, x);
-        const __m256d wy = _mm256_fnmadd_pd(b, dy, y);
-        const __m256d wz = _mm256_fnmadd_pd(b, dz, z);
-        const __m256d perpendicular2 = _mm256_fmadd_pd(wz, wz, _mm256_fmadd_pd(wy, wy, _mm256_mul_pd(wx, wx)));
-        __m256d ok = _mm256_cmp_pd(perpendicular2, _mm256_mul_pd(reach, reach), _CMP_LE_OQ);
-        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_add_pd(b, reach), _mm256_setzero_pd(), _CMP_GE_OQ));
-        ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_sub_pd(b, reach), limit, _CMP_LE_OQ));
-        mask |= static_cast<std::uint64_t>(_mm256_movemask_pd(ok)) << first;
+    for (unsigned first = 0; first < count; first += 2 * SphereBlock::kWidth) {
+        const SphereBlock& low = blocks[first / SphereBlock::kWidth];
+        const SphereBlock& high = first + SphereBlock::kWidth < count ? (&low)[1] : low;
+        const __m256 x = _mm256_sub_ps(both(low.x, high.x), ox);
+        const __m256 y = _mm256_sub_ps(both(low.y, high.y), oy);
+        const __m256 z = _mm256_sub_ps(both(low.z, high.z), oz);
+        const __m256 reach = _mm256_add_ps(both(low.radius, high.radius), slack);
+        const __m256 b = _mm256_fmadd_ps(z, dz, _mm256_fmadd_ps(y, dy, _mm256_mul_ps(x, dx)));
+        const __m256 wx = _mm256_fnmadd_ps(b, dx, x);
+        const __m256 wy = _mm256_fnmadd_ps(b, dy, y);
+        const __m256 wz = _mm256_fnmadd_ps(b, dz, z);
+        const __m256 perpendicular2 = _mm256_fmadd_ps(wz, wz, _mm256_fmadd_ps(wy, wy, _mm256_mul_ps(wx, wx)));
+        __m256 ok = _mm256_cmp_ps(perpendicular2, _mm256_mul_ps(reach, reach), _CMP_LE_OQ);
+        ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_add_ps(b, reach), behind, _CMP_GE_OQ));
+        ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_sub_ps(b, reach), limit, _CMP_LE_OQ));
+        mask |= static_cast<std::uint64_t>(_mm256_movemask_ps(ok)) << first;
     }
     return mask;
 }

@@ -14,11 +14,16 @@ using testing::Rng;
 
 using Candidates = std::uint64_t (*)(const SphereBlock*, unsigned, const PrefilterRay&);
 
-// A sphere and a ray near it.
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A sphere, a ray near it, and the octree's side of the prefilter: the anchor the sphere is packed against and
+// the ray's shift along itself (as the octree shifts it to where it enters the root).
 struct Case {
     SphereGeometry sphere;
     Point origin;
     Direction direction;
+    Point anchor;
+    double shift;
 };
 
 Case randomCase(Rng& rng, int i) {
@@ -44,7 +49,25 @@ Case randomCase(Rng& rng, int i) {
         p = centre + testing::randomPoint(rng, 20.0 * radius);
         break;
     }
-    return {sphere, p, d};
+    // The anchor from on the sphere's centre to a thousand radii away; every other ray starts far behind its
+    // origin and is shifted forward to it (the ray is the same line, its distances counted from the far point).
+    const Point anchor = centre + testing::randomPoint(rng, radius * std::pow(10.0, testing::uniform(rng, -3.0, 3.0)));
+    const double back = i % 8 < 4 ? 0.0 : std::pow(10.0, testing::uniform(rng, -2.0, 4.0)) * radius;
+    return {sphere, p - back * d.vector(), d, anchor, back};
+}
+
+PrefilterRay rayFor(const Case& c) {
+    const double packedReach = (c.sphere.center - c.anchor).cwiseAbs().maxCoeff() + c.sphere.radius;
+    const double scale = c.origin.cwiseAbs().maxCoeff() + c.sphere.center.cwiseAbs().maxCoeff() + c.sphere.radius;
+    return PrefilterRay::make(c.origin, c.direction, c.shift, c.anchor, packedReach, kPrefilterSlackRelative * scale);
+}
+
+// One sphere in lane 0 of a block whose other lanes are unused.
+SphereBlock blockOf(const SphereGeometry& sphere, const Point& anchor) {
+    SphereBlock block;
+    block.pack(0, sphere, anchor);
+    for (unsigned lane = 1; lane < SphereBlock::kWidth; ++lane) block.clear(lane);
+    return block;
 }
 
 // Every sphere the exact test would let win (0 < t <= best) is a candidate, whatever the best so far,
@@ -52,40 +75,34 @@ Case randomCase(Rng& rng, int i) {
 void expectConservative(Candidates candidates) {
     Rng rng(17);
     int hits = 0;
+    int rejected = 0;
     for (int i = 0; i < 200000; ++i) {
         const Case c = randomCase(rng, i);
-        SphereBlock block;
-        block.pack(0, c.sphere);
-        for (unsigned lane = 1; lane < SphereBlock::kWidth; ++lane) block.clear(lane);
+        const SphereBlock block = blockOf(c.sphere, c.anchor);
         const double t = c.sphere.distanceToSurface(c.origin, c.direction);
-        const double scale = c.sphere.center.cwiseAbs().maxCoeff() + c.sphere.radius;
-        const double slack = kPrefilterSlackRelative * (c.origin.cwiseAbs().maxCoeff() + scale);
-        const double bests[] = {std::numeric_limits<double>::infinity(), t, std::nextafter(t, 0.0)};
-        for (double best : bests) {
-            const PrefilterRay ray{{c.origin.x(), c.origin.y(), c.origin.z()},
-                                   {c.direction.x(), c.direction.y(), c.direction.z()},
-                                   slack,
-                                   best + slack};
+        PrefilterRay ray = rayFor(c);
+        for (double best : {kInfinity, t, std::nextafter(t, 0.0)}) {
+            ray.setBest(best);
             const std::uint64_t mask = candidates(&block, 1, ray) & 1;
             if (t > 0.0 && t <= best) {
                 ++hits;
                 ASSERT_EQ(mask, 1u) << "case " << i << ": t = " << t << ", best = " << best;
             }
         }
-        // The same sphere moved 3 radii off the ray is never a candidate.
-        block.pack(0, SphereGeometry::make(
-                          c.sphere.center +
-                              3.1 * c.sphere.radius * Direction(c.direction.vector().cross(Point(1, 2, 3))).vector(),
-                          c.sphere.radius));
-        const PrefilterRay ray{{c.origin.x(), c.origin.y(), c.origin.z()},
-                               {c.direction.x(), c.direction.y(), c.direction.z()},
-                               slack,
-                               std::numeric_limits<double>::infinity()};
-        if ((c.origin - c.sphere.center).norm() < 1.1 * c.sphere.radius) {
-            EXPECT_EQ(candidates(&block, 1, ray) & 1, 0u) << "case " << i;
+        // The same sphere moved 3 radii off the ray is never a candidate, once the slack is below a radius.
+        const SphereGeometry off = SphereGeometry::make(
+            c.sphere.center + 3.1 * c.sphere.radius * Direction(c.direction.vector().cross(Point(1, 2, 3))).vector(),
+            c.sphere.radius);
+        const SphereBlock offBlock = blockOf(off, c.anchor);
+        ray.setBest(kInfinity);
+        if ((c.origin + c.shift * c.direction.vector() - c.sphere.center).norm() < 1.1 * c.sphere.radius &&
+            ray.slack < c.sphere.radius) {
+            ++rejected;
+            EXPECT_EQ(candidates(&offBlock, 1, ray) & 1, 0u) << "case " << i;
         }
     }
     EXPECT_GT(hits, 100000);
+    EXPECT_GT(rejected, 10000);
 }
 
 TEST(SpherePrefilter, Sse2NeverRejectsAWinningSphere) { expectConservative(sphereCandidatesSse2); }
@@ -95,19 +112,64 @@ TEST(SpherePrefilter, Avx2NeverRejectsAWinningSphere) {
     expectConservative(sphereCandidatesAvx2);
 }
 
-// Unused lanes and lanes beyond `count` are never candidates; a block run of 64 spheres maps lane k to bit k.
+// Unused lanes and lanes beyond `count` are never candidates; a block run of 64 spheres maps lane k to bit k,
+// for every count (odd numbers of blocks included, which the AVX2 version pairs with themselves).
 TEST(SpherePrefilter, LanesMapToBits) {
     SphereBlock blocks[16];
+    const Point anchor(30.0, 1.0, -2.0);
     for (unsigned k = 0; k < 64; ++k) {
         const double y = k % 3 == 0 ? 0.0 : 5.0;  // every third sphere lies on the x axis, the ray's line
-        blocks[k / 4].pack(k % 4, SphereGeometry::make(Point(static_cast<double>(k), y, 0.0), 0.25));
+        blocks[k / 4].pack(k % 4, SphereGeometry::make(Point(static_cast<double>(k), y, 0.0), 0.25), anchor);
     }
     blocks[15].clear(3);
-    const PrefilterRay ray{{-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, 1e-12, std::numeric_limits<double>::infinity()};
+    const PrefilterRay ray =
+        PrefilterRay::make(Point(-1.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 0.0, anchor, 40.0, 1e-12);
     std::uint64_t expected = 0;
     for (unsigned k = 0; k < 63; ++k) expected |= std::uint64_t{k % 3 == 0} << k;  // lane 63 is cleared
-    EXPECT_EQ(sphereCandidates(blocks, 64, ray), expected);
-    EXPECT_EQ(sphereCandidates(blocks, 10, ray), expected & 0x3ff);
+    for (unsigned count = 1; count <= 64; ++count) {
+        const std::uint64_t within = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+        EXPECT_EQ(sphereCandidates(blocks, count, ray), expected & within) << count;
+        EXPECT_EQ(sphereCandidatesSse2(blocks, count, ray) & within, expected & within) << count;
+        if (cpuHasAvx2()) {
+            EXPECT_EQ(sphereCandidatesAvx2(blocks, count, ray) & within, expected & within) << count;
+        }
+    }
+}
+
+// The bounds along the ray count from the ray's origin, not from the point it was shifted to: a sphere behind the
+// origin and one wholly beyond the best so far are not candidates.
+TEST(SpherePrefilter, DistancesCountFromTheOriginOfAShiftedRay) {
+    const Point anchor = Point::Zero();
+    SphereBlock block;
+    const double centres[] = {-150.0, -90.0, 5.0, 20.0};  // ray distances of their centres: -50, 10, 105, 120
+    for (unsigned lane = 0; lane < 4; ++lane) {
+        block.pack(lane, SphereGeometry::make(Point(centres[lane], 0.0, 0.0), 1.0), anchor);
+    }
+    PrefilterRay ray =
+        PrefilterRay::make(Point(-100.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 100.0, anchor, 21.0, 1e-10);
+    EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b1110u);
+    ray.setBest(110.0);
+    EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b0110u);
+    ray.setBest(20.0);
+    EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b0010u);
+}
+
+// A ray shifted beyond what single precision can hold lets every packed sphere through, and a sphere beyond
+// it is not packed.
+TEST(SpherePrefilter, BeyondSinglePrecisionEverySphereIsACandidate) {
+    const Point anchor = Point::Zero();
+    SphereBlock block;
+    block.pack(0, SphereGeometry::make(Point(1.0, 0.0, 0.0), 0.5), anchor);
+    block.pack(1, SphereGeometry::make(Point(-1e6, 3e6, 0.0), 0.5), anchor);
+    block.clear(2);
+    block.clear(3);
+    const PrefilterRay far = PrefilterRay::make(Point(0.0, 2e15, 0.0), Direction(0.0, 1.0, 0.0), 0.0, anchor, 3e6, 1.0);
+    EXPECT_EQ(sphereCandidates(&block, 4, far), 0b11u);
+    const PrefilterRay near = PrefilterRay::make(Point(0.0, 2e3, 0.0), Direction(0.0, 1.0, 0.0), 0.0, anchor, 3e6, 1.0);
+    EXPECT_EQ(sphereCandidates(&block, 4, near), 0u);
+    EXPECT_TRUE(SphereBlock::packable(SphereGeometry::make(Point(-1e6, 3e6, 0.0), 0.5), anchor));
+    EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 2e15, 0.0), 0.5), anchor));
+    EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 0.0, 0.0), 2e15), anchor));
 }
 
 }  // namespace
