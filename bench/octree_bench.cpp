@@ -301,7 +301,7 @@ void printTables(const std::vector<SizeResult>& results, double floatTnearRelati
                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SizeResult& r : results) {
         std::cout << "| " << r.count << " | " << fixed(r.halfSide, 3) << " | " << fixed(r.octreeBuild, 3) << " | "
-                  << fixed(r.floatBuild, 3) << " | " << fixed(r.userBuild, 3) << " | " << fixed(r.octreeBytesUsed, 0)
+                  << fixed(r.floatBuild, 3) << " | " << fixed(r.userBuild, 3) << " | " << fixed(r.octreeBytesUsed, 1)
                   << " | " << fixed(r.octreeHeap, 0) << " | " << fixed(r.octreeTotal, 0) << " | "
                   << fixed(r.floatBytes, 0) << " | " << fixed(r.userBytes, 0) << " | " << r.depth << " | "
                   << r.gridLevel << " | " << r.leaves << " | " << fixed(r.referencesPerDroplet, 2) << " |\n";

@@ -360,6 +360,23 @@ TEST(Octree, StatisticsAreConsistent) {
     EXPECT_GT(tree.bytesUsed(), bytes);
 }
 
+// Issue 19's budget: index and sphere data within 64 bytes a droplet, besides the 8-byte slot of the shape's
+// pointer, in a cloud as dense as the benchmark's (radii 0.002-0.005 at 2.7 % of the volume) at 1e3 droplets,
+// where padding and cells weigh most.
+TEST(Octree, ACloudTakesAtMost64BytesADropletBesidesItsShapeSlots) {
+    Rng rng(41);
+    constexpr std::size_t kCount = 1000;
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (std::size_t i = 0; i < kCount; ++i) {
+        const double radius = testing::uniform(rng, 0.002, 0.005);  // one draw per statement (RandomGeometry.hpp)
+        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 0.1), radius));
+    }
+    const Octree tree(std::move(shapes));
+    const double perDroplet = static_cast<double>(tree.bytesUsed()) / static_cast<double>(kCount);
+    EXPECT_LE(perDroplet - sizeof(std::unique_ptr<Shape>), 64.0) << perDroplet;
+    EXPECT_GT(perDroplet, 40.0);  // 32 bytes of exact sphere and 1.3 references of 20 at least
+}
+
 // A sphere reaching across a cell boundary by less than its surface band does not "overlap" the
 // neighbouring cell, yet a ray running inside that cell, closer to the boundary still, does hit it.
 // Only the cell margin keeps it from being skipped by the early exit.
