@@ -18,8 +18,10 @@ constexpr double kMarginRelative = 1e-8;
 
 // Sphere blocks beyond this many bytes are mostly out of cache when a ray reaches them, and the traversal
 // prefetches a cell's children; below it the data are cached and prefetching is only extra instructions
-// (docs/performance.md: nothing measurable gained at 1e3-1e4 droplets, 0.05-0.5 MB; leaving it out at
-// 1e6, 46 MB, cost up to a quarter of random-ray throughput). 8 MiB: a few times a core's L2, inside L3.
+// (docs/performance.md, measured with blocks of doubles: nothing measurable gained at 1e3-1e4 droplets,
+// 0.05-0.5 MB; leaving it out at 1e6, 46 MB, cost up to a quarter of random-ray throughput; prefetching from
+// 1 MiB cost 7-10 % at 1e5). 8 MiB: a few times a core's L2, inside L3. The float blocks, half the bytes
+// (2.2 MB at 1e5, 22 MB at 1e6), fall on the same sides of it.
 constexpr std::size_t kPrefetchBytes = std::size_t{8} << 20;
 
 // The top grid (docs/octree.md): below level 2 it would skip at most the root's visit; above level 6 its

@@ -102,7 +102,7 @@ struct Octree::Traversal {
             t = next;
         }
         // In a large tree memory latency, not arithmetic, bounds the traversal (docs/performance.md): ask
-        // for the children's first sphere blocks (up to 8 cache lines each) before testing the first child.
+        // for the children's first sphere blocks (up to 4 cache lines each) before testing the first child.
         for (int k = 0; k < count && tree.prefetch_; ++k) {
             prefetchCell(tree.cells_[cell.firstChild + static_cast<std::uint32_t>(order[k])]);
         }
