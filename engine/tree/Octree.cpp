@@ -111,7 +111,8 @@ void Octree::freeze() {
     others_.clear();
     cells_.reserve(building_.size());
     std::vector<ShapeId> spheres;
-    anchor_ = rootBounds_.center();
+    rootHalf_ = 0.5 * rootBounds_.sizes().maxCoeff();
+    prefilterFrame_ = PrefilterFrame::around(rootBounds_.center(), rootHalf_);
     packedReach_ = 0.0;
     for (const Node& node : building_) {
         // A sphere whose band make() would not recompute, or too large or too far to pack in single precision
@@ -121,11 +122,11 @@ void Octree::freeze() {
         for (ShapeId id : node.sphereIds) {
             const SphereGeometry& sphere = static_cast<const Sphere&>(*shapes_[id]).geometry();
             if (SphereGeometry::make(sphere.center, sphere.radius).band == sphere.band &&
-                SphereBlock::packable(sphere, anchor_)) {
+                SphereBlock::packable(sphere, prefilterFrame_)) {
                 spheres.push_back(id);
                 if (exactSpheres_.empty()) exactSpheres_.resize(shapes_.size());
                 exactSpheres_[id] = {sphere.center, sphere.radius};
-                packedReach_ = std::max(packedReach_, (sphere.center - anchor_).cwiseAbs().maxCoeff() + sphere.radius);
+                packedReach_ = std::max(packedReach_, prefilterFrame_.reach(sphere));
             } else {
                 others_.push_back(id);
             }
@@ -139,7 +140,8 @@ void Octree::freeze() {
             for (unsigned lane = 0; lane < SphereBlock::kWidth; ++lane) {
                 const bool used = k + lane < spheres.size();
                 if (used)
-                    block.pack(lane, static_cast<const Sphere&>(*shapes_[spheres[k + lane]]).geometry(), anchor_);
+                    block.pack(lane, static_cast<const Sphere&>(*shapes_[spheres[k + lane]]).geometry(),
+                               prefilterFrame_);
                 else
                     block.clear(lane);
                 sphereIds_.push_back(used ? spheres[k + lane] : RayHit::kNone);
@@ -152,7 +154,6 @@ void Octree::freeze() {
     exactSpheres_.shrink_to_fit();
     others_.shrink_to_fit();
     building_ = {};
-    rootHalf_ = 0.5 * rootBounds_.sizes().maxCoeff();
     const CellBounds root = inflated(rootBounds_, margin_);
     coordinateScale_ = largestCoordinate(root);
     prefetch_ = blocks_.size() * sizeof(SphereBlock) > kPrefetchBytes;

@@ -154,7 +154,7 @@ private:
     double margin_ = 0.0;
     std::vector<Node> building_;  // empty between edits
     std::vector<Cell> cells_;
-    std::vector<SphereBlock> blocks_;  // each cell's spheres, relative to anchor_, padded to 4
+    std::vector<SphereBlock> blocks_;  // each cell's spheres in prefilterFrame_, padded to 4
     std::vector<ShapeId> sphereIds_;   // 4 per block, RayHit::kNone in padding
     // A packed sphere's double centre and radius, for the exact test of the candidates the prefilter leaves
     // (SphereGeometry::make recomputes its band; freeze packs only the spheres whose band it recomputes).
@@ -164,11 +164,11 @@ private:
     };
     std::vector<ExactSphere> exactSpheres_;  // at the packed spheres' ids; the other slots unused
     std::vector<ShapeId> others_;
-    double rootHalf_ = 0.0;         // half the root's side
-    double coordinateScale_ = 0.0;  // largest |coordinate| of the inflated root, for the prefilter's slack
-    Point anchor_ = Point::Zero();  // the root's centre, the origin of the sphere blocks' coordinates
-    double packedReach_ = 0.0;      // the largest |centre - anchor_|_inf + R of a packed sphere
-    bool prefetch_ = false;         // whether the traversal prefetches children (a tree too large for the caches)
+    double rootHalf_ = 0.0;          // half the root's side
+    double coordinateScale_ = 0.0;   // largest |coordinate| of the inflated root, for the prefilter's slack
+    PrefilterFrame prefilterFrame_;  // around the root
+    double packedReach_ = 0.0;       // the largest PrefilterFrame::reach of a packed sphere
+    bool prefetch_ = false;          // whether the traversal prefetches children (a tree too large for the caches)
     int gridLevel_ = 0;
     Point gridLow_ = Point::Zero();  // the root's lowest corner
     double gridCell_ = 0.0;          // a grid cell's side

@@ -222,8 +222,8 @@ struct Octree::Traversal {
         const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d, inverse);
         if (!span) return;
         // The prefilter's ray starts where this one enters the root, so its single-precision coordinates are
-        // those of points within the root.
-        prefilterRay = PrefilterRay::make(p, d, span->first, tree.anchor_, tree.packedReach_,
+        // those of points within the frame's unit cube around the root's centre.
+        prefilterRay = PrefilterRay::make(p, d, span->first, tree.prefilterFrame_, tree.packedReach_,
                                           kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_));
         // The debugger's record lists every level's cells, so it takes the walk from the root.
         if (tree.gridLevel_ > 0 && !record) {

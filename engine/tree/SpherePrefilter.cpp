@@ -17,27 +17,31 @@ constexpr float kFloatInfinity = std::numeric_limits<float>::infinity();
 // Single precision's unit roundoff, 2^-24.
 constexpr double kFloatRoundoff = 0x1p-24;
 
-// v in single precision, no smaller (no larger) than v: widened by 4 units of single rounding before the
-// conversion, which moves it by at most one. Values beyond single precision's range go to the infinity (the
-// largest finite value) on that side.
+// The least float no smaller than v (infinite beyond the largest float; the lowest float below it).
 float roundedUp(double v) {
-    v += std::abs(v) * 0x1p-22;
-    return v > kFloatMax ? kFloatInfinity : v < -kFloatMax ? -std::numeric_limits<float>::max() : static_cast<float>(v);
+    if (v > kFloatMax) return kFloatInfinity;
+    if (v < -kFloatMax) return -std::numeric_limits<float>::max();
+    const float nearest = static_cast<float>(v);
+    return static_cast<double>(nearest) < v ? std::nextafter(nearest, kFloatInfinity) : nearest;
 }
 float roundedDown(double v) { return -roundedUp(-v); }
 
 }  // namespace
 
-bool SphereBlock::packable(const SphereGeometry& sphere, const Point& anchor) {
-    return (sphere.center - anchor).cwiseAbs().maxCoeff() <= kPrefilterLargestPacked &&
-           sphere.radius <= kPrefilterLargestPacked;
+PrefilterFrame PrefilterFrame::around(const Point& centre, double halfSide) {
+    const bool scalable = halfSide > 0.0 && std::isfinite(halfSide);
+    return {centre, scalable ? std::ldexp(1.0, -std::ilogb(halfSide)) : 1.0};
 }
 
-void SphereBlock::pack(unsigned lane, const SphereGeometry& sphere, const Point& anchor) {
-    x[lane] = static_cast<float>(sphere.center.x() - anchor.x());
-    y[lane] = static_cast<float>(sphere.center.y() - anchor.y());
-    z[lane] = static_cast<float>(sphere.center.z() - anchor.z());
-    radius[lane] = roundedUp(sphere.radius * kPrefilterRadiusFactor);
+bool SphereBlock::packable(const SphereGeometry& sphere, const PrefilterFrame& frame) {
+    return frame.reach(sphere) * frame.scale <= kPrefilterLargestScale;
+}
+
+void SphereBlock::pack(unsigned lane, const SphereGeometry& sphere, const PrefilterFrame& frame) {
+    x[lane] = static_cast<float>((sphere.center.x() - frame.anchor.x()) * frame.scale);
+    y[lane] = static_cast<float>((sphere.center.y() - frame.anchor.y()) * frame.scale);
+    z[lane] = static_cast<float>((sphere.center.z() - frame.anchor.z()) * frame.scale);
+    radius[lane] = roundedUp(sphere.radius * kPrefilterRadiusFactor * frame.scale);
 }
 
 void SphereBlock::clear(unsigned lane) {
@@ -45,24 +49,24 @@ void SphereBlock::clear(unsigned lane) {
     radius[lane] = 0.0f;
 }
 
-PrefilterRay PrefilterRay::make(const Point& p, const Direction& d, double shift, const Point& anchor,
+PrefilterRay PrefilterRay::make(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame,
                                 double packedReach, double doubleSlack) {
-    const Eigen::Vector3d origin = p + shift * d.vector() - anchor;
-    const double scale = origin.cwiseAbs().maxCoeff() + packedReach;  // X
+    const Eigen::Vector3d origin = (p + shift * d.vector() - frame.anchor) * frame.scale;
+    const double scale = origin.cwiseAbs().maxCoeff() + packedReach * frame.scale;  // X
     PrefilterRay ray{
         {0.0f, 0.0f, 0.0f}, {static_cast<float>(d.x()), static_cast<float>(d.y()), static_cast<float>(d.z())},
-        kFloatInfinity,     roundedDown(-shift),
+        kFloatInfinity,     roundedDown(-shift * frame.scale),
         kFloatInfinity,     shift,
-        doubleSlack};
-    // A ray this far from the anchor in a scene this large (beyond any real one) lets every sphere through:
-    // from the anchor with an infinite slack, every packed lane passes each comparison.
-    if (!(scale <= kPrefilterLargestPacked)) return ray;
+        doubleSlack,        frame.scale};
+    // Outside the range every sphere passes: from the anchor with an infinite slack, every packed lane passes
+    // each comparison.
+    if (!(scale <= kPrefilterLargestScale && scale >= kPrefilterSmallestScale)) return ray;
     for (int axis = 0; axis < 3; ++axis) ray.origin[axis] = static_cast<float>(origin[axis]);
-    ray.slack = roundedUp(doubleSlack + kPrefilterFloatSlackUnits * kFloatRoundoff * scale);
+    ray.slack = roundedUp(doubleSlack * frame.scale + kPrefilterFloatSlackUnits * kFloatRoundoff * scale);
     return ray;
 }
 
-void PrefilterRay::setBest(double best) { limit = roundedUp(best + doubleSlack - shift); }
+void PrefilterRay::setBest(double best) { limit = roundedUp((best + doubleSlack - shift) * scale); }
 
 namespace {
 

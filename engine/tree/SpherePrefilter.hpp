@@ -16,19 +16,36 @@ inline constexpr double kPrefilterSlackRelative = 1e-12;
 // The other part of 2 bands, 2 x kSurfaceRelative x R, taken as a factor on the radius (twice that, so
 // the rounding of R x factor never matters).
 inline constexpr double kPrefilterRadiusFactor = 1.0 + 4.0 * tolerance::kSurfaceRelative;
-// The prefilter's own arithmetic is in single precision on coordinates relative to an anchor; its rounding
-// moves the perpendicular distance and the distance along the ray by less than 60 u X (u = 2^-24, X the
-// larger of |ray origin - anchor|_inf and |centre - anchor|_inf + R over the packed spheres): the slack adds
-// this many u X, twice the bound (docs/octree.md).
+// The prefilter's own arithmetic is in single precision on coordinates relative to an anchor and scaled by a
+// power of two (PrefilterFrame); its rounding moves the perpendicular distance and the distance along the ray
+// by less than 60 u X (u = 2^-24, X = |q - anchor|_inf + the largest |centre - anchor|_inf + R of a packed
+// sphere, q the ray's shifted origin, in the frame's units): the slack adds this many u X, twice the bound
+// (docs/octree.md).
 inline constexpr double kPrefilterFloatSlackUnits = 128.0;
-// Spheres whose centre lies farther than this from the anchor, or whose radius is larger, are not packed
-// (they keep the exact test alone), and a ray shifted farther than this lets every sphere through, so that no
-// single-precision quantity, squares included, can overflow.
-inline constexpr double kPrefilterLargestPacked = 1e15;
+// The range of X, in the frame's units, within which the prefilter computes: above it a square could overflow,
+// below it the slack could fall among single precision's subnormals, whose rounding is absolute. A ray outside
+// it lets every sphere through; a sphere that would make X larger is not packed (neither happens with the root
+// in the frame's unit cube, short of a sphere 1e12 times smaller than the root right at its centre).
+inline constexpr double kPrefilterLargestScale = 1e15;
+inline constexpr double kPrefilterSmallestScale = 0x1p-40;
+
+// The frame of the blocks' single-precision coordinates: (x - anchor) x scale, with the anchor at the root's
+// centre and the scale a power of two that brings the root's half-side into [1, 2). Scaling by a power of two
+// is exact, so the relative error analysis holds whatever the scene's size and position.
+struct PrefilterFrame {
+    Point anchor = Point::Zero();
+    double scale = 1.0;
+
+    static PrefilterFrame around(const Point& centre, double halfSide);
+    // |centre - anchor|_inf + R, in scene units: a packed sphere's share of X.
+    double reach(const SphereGeometry& sphere) const {
+        return (sphere.center - anchor).cwiseAbs().maxCoeff() + sphere.radius;
+    }
+};
 
 // Four spheres of one octree cell as structure of arrays in single precision (one cache line), for a
-// conservative vectorised test before the exact one, which reads the sphere's own double geometry. Centres
-// are relative to the octree's anchor (rounded to nearest); radii are R x kPrefilterRadiusFactor rounded up.
+// conservative vectorised test before the exact one, which reads the sphere's double centre and radius. Centres
+// are in the frame's coordinates (rounded to nearest); radii are R x kPrefilterRadiusFactor x scale rounded up.
 // Unused lanes hold NaN centres, which no ray accepts.
 struct alignas(64) SphereBlock {
     static constexpr unsigned kWidth = 4;
@@ -37,27 +54,28 @@ struct alignas(64) SphereBlock {
     float z[kWidth];
     float radius[kWidth];
 
-    // Whether `sphere` can be packed against `anchor` (kPrefilterLargestPacked).
-    static bool packable(const SphereGeometry& sphere, const Point& anchor);
-    void pack(unsigned lane, const SphereGeometry& sphere, const Point& anchor);
+    // Whether `sphere` can be packed in `frame`: its reach within kPrefilterLargestScale.
+    static bool packable(const SphereGeometry& sphere, const PrefilterFrame& frame);
+    void pack(unsigned lane, const SphereGeometry& sphere, const PrefilterFrame& frame);
     void clear(unsigned lane);
 };
 
-// The ray as the prefilter sees it: shifted along itself to a point q = p + shift d near the anchor, in single
-// precision relative to the anchor, with the bounds on the distance along the ray from q rounded outwards.
+// The ray as the prefilter sees it: shifted along itself to a point q = p + shift d near the anchor, in the
+// frame's single-precision coordinates, with the bounds on the distance along the ray from q rounded outwards.
 struct PrefilterRay {
-    float origin[3];     // q - anchor
+    float origin[3];     // (q - anchor) x scale
     float direction[3];  // d
-    float slack;         // the double slack plus kPrefilterFloatSlackUnits u X, rounded up
-    float behind;        // -shift, rounded down: a sphere wholly before this is behind p
-    float limit;         // best distance so far + double slack - shift, rounded up (+inf before any hit)
+    float slack;         // (the double slack + kPrefilterFloatSlackUnits u X) x scale, rounded up
+    float behind;        // -shift x scale, rounded down: a sphere wholly before this is behind p
+    float limit;         // (best distance so far + double slack - shift) x scale, rounded up (+inf before any hit)
     double shift;        // t of q along the ray from p
     double doubleSlack;  // kPrefilterSlackRelative x the ray's coordinate scale
+    double scale;        // the frame's
 
-    // The ray p + t d shifted to t = shift, for spheres packed against `anchor` whose |centre - anchor|_inf + R
-    // is at most `packedReach`; `doubleSlack` as above. The limit starts at +inf.
-    static PrefilterRay make(const Point& p, const Direction& d, double shift, const Point& anchor, double packedReach,
-                             double doubleSlack);
+    // The ray p + t d shifted to t = shift, for spheres packed in `frame` whose |centre - anchor|_inf + R is at
+    // most `packedReach` (scene units, like `doubleSlack`, above). The limit starts at +inf.
+    static PrefilterRay make(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame,
+                             double packedReach, double doubleSlack);
     // Sets the limit for a best distance `best` (from p) so far.
     void setBest(double best);
 };

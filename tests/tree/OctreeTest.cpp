@@ -2,6 +2,7 @@
 #include "tree/Octree.hpp"
 
 #include "geometry/RandomGeometry.hpp"
+#include "geometry/Sphere.hpp"
 
 #include <gtest/gtest.h>
 
@@ -96,6 +97,32 @@ TEST(Octree, FirstHitEqualsBruteForceOnMixedScenes) {
             expectSameHit(tree.firstHit(rays[i].origin, rays[i].direction), expected);
         }
         EXPECT_GT(hits, 500);
+    }
+}
+
+// The prefilter computes in single precision in a frame scaled to the root (docs/octree.md, "The sphere
+// prefilter"): a droplet cloud gives the same hits from 1e-41 to 1e12 scene units across (single precision's
+// subnormals below 1e-38, its overflow above 1e38), centred on the origin and 1e3 of its sizes away.
+TEST(Octree, FirstHitEqualsBruteForceAtEveryScale) {
+    for (const double unit : {1e-41, 1e-20, 1e-6, 1.0, 1e6, 1e12}) {
+        for (const double offset : {0.0, 1e3}) {
+            SCOPED_TRACE(::testing::Message() << "unit " << unit << ", offset " << offset);
+            Rng rng(53);
+            const Point centre = Point(offset, -0.7 * offset, 0.3 * offset) * unit;
+            std::vector<std::unique_ptr<Shape>> shapes;
+            for (int i = 0; i < 600; ++i) {
+                const double radius = testing::uniform(rng, 0.005, 0.05) * unit;
+                shapes.push_back(std::make_unique<Sphere>(centre + testing::randomPoint(rng, unit), radius));
+            }
+            const Octree tree(std::move(shapes), OctreeSettings{8, 8});
+            int hits = 0;
+            for (const Ray& ray : awkwardRays(rng, tree, 1200)) {
+                const RayHit expected = bruteForceFirstHit(tree.shapes(), ray.origin, ray.direction);
+                hits += expected ? 1 : 0;
+                expectSameHit(tree.firstHit(ray.origin, ray.direction), expected);
+            }
+            EXPECT_GT(hits, 300);
+        }
     }
 }
 

@@ -16,19 +16,22 @@ using Candidates = std::uint64_t (*)(const SphereBlock*, unsigned, const Prefilt
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// A sphere, a ray near it, and the octree's side of the prefilter: the anchor the sphere is packed against and
-// the ray's shift along itself (as the octree shifts it to where it enters the root).
+// A sphere, a ray near it, and the octree's side of the prefilter: the frame the sphere is packed in and the
+// ray's shift along itself (as the octree shifts it to where it enters the root).
 struct Case {
     SphereGeometry sphere;
     Point origin;
     Direction direction;
-    Point anchor;
+    PrefilterFrame frame;
     double shift;
 };
 
 Case randomCase(Rng& rng, int i) {
-    const double radius = std::pow(10.0, testing::uniform(rng, -4.0, 1.0));
-    const Point centre = testing::randomPoint(rng, std::pow(10.0, testing::uniform(rng, -1.0, 3.0)));
+    // Every length times a unit from 1e-40 to 1e40 in one case of four (single precision's subnormals and overflow
+    // lie beyond 1e-38 and 3e38, which only the frame's scaling keeps the prefilter from).
+    const double unit = i % 16 < 12 ? 1.0 : std::pow(10.0, testing::uniform(rng, -40.0, 40.0));
+    const double radius = std::pow(10.0, testing::uniform(rng, -4.0, 1.0)) * unit;
+    const Point centre = testing::randomPoint(rng, std::pow(10.0, testing::uniform(rng, -1.0, 3.0)) * unit);
     const SphereGeometry sphere = SphereGeometry::make(centre, radius);
     Direction d = testing::randomDirection(rng);
     const Direction side(d.vector().cross(testing::randomDirection(rng).vector()));
@@ -49,23 +52,25 @@ Case randomCase(Rng& rng, int i) {
         p = centre + testing::randomPoint(rng, 20.0 * radius);
         break;
     }
-    // The anchor from on the sphere's centre to a thousand radii away; every other ray starts far behind its
-    // origin and is shifted forward to it (the ray is the same line, its distances counted from the far point).
+    // The anchor from on the sphere's centre to a thousand radii away, the frame's half-side from the sphere's
+    // reach to 1e3 times more; every other ray starts far behind its origin and is shifted forward to it (the
+    // ray is the same line, its distances counted from the far point).
     const Point anchor = centre + testing::randomPoint(rng, radius * std::pow(10.0, testing::uniform(rng, -3.0, 3.0)));
+    const double halfSide = ((centre - anchor).cwiseAbs().maxCoeff() + radius) * testing::uniform(rng, 1.0, 1e3);
     const double back = i % 8 < 4 ? 0.0 : std::pow(10.0, testing::uniform(rng, -2.0, 4.0)) * radius;
-    return {sphere, p - back * d.vector(), d, anchor, back};
+    return {sphere, p - back * d.vector(), d, PrefilterFrame::around(anchor, halfSide), back};
 }
 
 PrefilterRay rayFor(const Case& c) {
-    const double packedReach = (c.sphere.center - c.anchor).cwiseAbs().maxCoeff() + c.sphere.radius;
     const double scale = c.origin.cwiseAbs().maxCoeff() + c.sphere.center.cwiseAbs().maxCoeff() + c.sphere.radius;
-    return PrefilterRay::make(c.origin, c.direction, c.shift, c.anchor, packedReach, kPrefilterSlackRelative * scale);
+    return PrefilterRay::make(c.origin, c.direction, c.shift, c.frame, c.frame.reach(c.sphere),
+                              kPrefilterSlackRelative * scale);
 }
 
 // One sphere in lane 0 of a block whose other lanes are unused.
-SphereBlock blockOf(const SphereGeometry& sphere, const Point& anchor) {
+SphereBlock blockOf(const SphereGeometry& sphere, const PrefilterFrame& frame) {
     SphereBlock block;
-    block.pack(0, sphere, anchor);
+    block.pack(0, sphere, frame);
     for (unsigned lane = 1; lane < SphereBlock::kWidth; ++lane) block.clear(lane);
     return block;
 }
@@ -78,7 +83,7 @@ void expectConservative(Candidates candidates) {
     int rejected = 0;
     for (int i = 0; i < 200000; ++i) {
         const Case c = randomCase(rng, i);
-        const SphereBlock block = blockOf(c.sphere, c.anchor);
+        const SphereBlock block = blockOf(c.sphere, c.frame);
         const double t = c.sphere.distanceToSurface(c.origin, c.direction);
         PrefilterRay ray = rayFor(c);
         for (double best : {kInfinity, t, std::nextafter(t, 0.0)}) {
@@ -93,10 +98,10 @@ void expectConservative(Candidates candidates) {
         const SphereGeometry off = SphereGeometry::make(
             c.sphere.center + 3.1 * c.sphere.radius * Direction(c.direction.vector().cross(Point(1, 2, 3))).vector(),
             c.sphere.radius);
-        const SphereBlock offBlock = blockOf(off, c.anchor);
+        const SphereBlock offBlock = blockOf(off, c.frame);
         ray.setBest(kInfinity);
         if ((c.origin + c.shift * c.direction.vector() - c.sphere.center).norm() < 1.1 * c.sphere.radius &&
-            ray.slack < c.sphere.radius) {
+            ray.slack < c.sphere.radius * c.frame.scale) {
             ++rejected;
             EXPECT_EQ(candidates(&offBlock, 1, ray) & 1, 0u) << "case " << i;
         }
@@ -116,14 +121,14 @@ TEST(SpherePrefilter, Avx2NeverRejectsAWinningSphere) {
 // for every count (odd numbers of blocks included, which the AVX2 version pairs with themselves).
 TEST(SpherePrefilter, LanesMapToBits) {
     SphereBlock blocks[16];
-    const Point anchor(30.0, 1.0, -2.0);
+    const PrefilterFrame frame = PrefilterFrame::around(Point(30.0, 1.0, -2.0), 40.0);
     for (unsigned k = 0; k < 64; ++k) {
         const double y = k % 3 == 0 ? 0.0 : 5.0;  // every third sphere lies on the x axis, the ray's line
-        blocks[k / 4].pack(k % 4, SphereGeometry::make(Point(static_cast<double>(k), y, 0.0), 0.25), anchor);
+        blocks[k / 4].pack(k % 4, SphereGeometry::make(Point(static_cast<double>(k), y, 0.0), 0.25), frame);
     }
     blocks[15].clear(3);
     const PrefilterRay ray =
-        PrefilterRay::make(Point(-1.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 0.0, anchor, 40.0, 1e-12);
+        PrefilterRay::make(Point(-1.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 0.0, frame, 40.0, 1e-12);
     std::uint64_t expected = 0;
     for (unsigned k = 0; k < 63; ++k) expected |= std::uint64_t{k % 3 == 0} << k;  // lane 63 is cleared
     for (unsigned count = 1; count <= 64; ++count) {
@@ -139,14 +144,14 @@ TEST(SpherePrefilter, LanesMapToBits) {
 // The bounds along the ray count from the ray's origin, not from the point it was shifted to: a sphere behind the
 // origin and one wholly beyond the best so far are not candidates.
 TEST(SpherePrefilter, DistancesCountFromTheOriginOfAShiftedRay) {
-    const Point anchor = Point::Zero();
+    const PrefilterFrame frame = PrefilterFrame::around(Point::Zero(), 21.0);
     SphereBlock block;
     const double centres[] = {-150.0, -90.0, 5.0, 20.0};  // ray distances of their centres: -50, 10, 105, 120
     for (unsigned lane = 0; lane < 4; ++lane) {
-        block.pack(lane, SphereGeometry::make(Point(centres[lane], 0.0, 0.0), 1.0), anchor);
+        block.pack(lane, SphereGeometry::make(Point(centres[lane], 0.0, 0.0), 1.0), frame);
     }
     PrefilterRay ray =
-        PrefilterRay::make(Point(-100.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 100.0, anchor, 21.0, 1e-10);
+        PrefilterRay::make(Point(-100.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 100.0, frame, 151.0, 1e-10);
     EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b1110u);
     ray.setBest(110.0);
     EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b0110u);
@@ -154,22 +159,30 @@ TEST(SpherePrefilter, DistancesCountFromTheOriginOfAShiftedRay) {
     EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b0010u);
 }
 
-// A ray shifted beyond what single precision can hold lets every packed sphere through, and a sphere beyond
-// it is not packed.
-TEST(SpherePrefilter, BeyondSinglePrecisionEverySphereIsACandidate) {
-    const Point anchor = Point::Zero();
+// The frame scales the root's half-side into [1, 2) by a power of two. A ray whose X (in the frame's units)
+// leaves [kPrefilterSmallestScale, kPrefilterLargestScale] lets every packed sphere through, and a sphere
+// reaching beyond the largest is not packed.
+TEST(SpherePrefilter, OutsideItsRangeEverySphereIsACandidate) {
+    const PrefilterFrame frame = PrefilterFrame::around(Point::Zero(), 3.0);
+    EXPECT_EQ(frame.scale, 0.5);
+    EXPECT_EQ(PrefilterFrame::around(Point::Zero(), 1e-30).scale * 1e-30, std::ldexp(1e-30, -std::ilogb(1e-30)));
+    EXPECT_EQ(PrefilterFrame::around(Point::Zero(), 0.0).scale, 1.0);
     SphereBlock block;
-    block.pack(0, SphereGeometry::make(Point(1.0, 0.0, 0.0), 0.5), anchor);
-    block.pack(1, SphereGeometry::make(Point(-1e6, 3e6, 0.0), 0.5), anchor);
+    block.pack(0, SphereGeometry::make(Point(1.0, 0.0, 0.0), 0.5), frame);
+    block.pack(1, SphereGeometry::make(Point(-1.0, 2.0, 0.0), 0.5), frame);
     block.clear(2);
     block.clear(3);
-    const PrefilterRay far = PrefilterRay::make(Point(0.0, 2e15, 0.0), Direction(0.0, 1.0, 0.0), 0.0, anchor, 3e6, 1.0);
-    EXPECT_EQ(sphereCandidates(&block, 4, far), 0b11u);
-    const PrefilterRay near = PrefilterRay::make(Point(0.0, 2e3, 0.0), Direction(0.0, 1.0, 0.0), 0.0, anchor, 3e6, 1.0);
-    EXPECT_EQ(sphereCandidates(&block, 4, near), 0u);
-    EXPECT_TRUE(SphereBlock::packable(SphereGeometry::make(Point(-1e6, 3e6, 0.0), 0.5), anchor));
-    EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 2e15, 0.0), 0.5), anchor));
-    EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 0.0, 0.0), 2e15), anchor));
+    const Direction up(0.0, 1.0, 0.0);
+    EXPECT_EQ(sphereCandidates(&block, 4, PrefilterRay::make(Point(0.0, 4e15, 0.0), up, 0.0, frame, 3.0, 1.0)), 0b11u);
+    EXPECT_EQ(sphereCandidates(&block, 4, PrefilterRay::make(Point(0.0, 5.0, 0.0), up, 0.0, frame, 3.0, 1e-12)), 0u);
+    // A ray at the anchor with spheres reaching 1e-13 of the half-side: X is below 2^-40.
+    SphereBlock tiny;
+    tiny.pack(0, SphereGeometry::make(Point(1e-14, 0.0, 0.0), 1e-14), frame);
+    for (unsigned lane = 1; lane < 4; ++lane) tiny.clear(lane);
+    EXPECT_EQ(sphereCandidates(&tiny, 4, PrefilterRay::make(Point::Zero(), up, 0.0, frame, 2e-14, 1e-30)), 0b1u);
+    EXPECT_TRUE(SphereBlock::packable(SphereGeometry::make(Point(-1e6, 3e6, 0.0), 0.5), frame));
+    EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 3e15, 0.0), 0.5), frame));
+    EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 0.0, 0.0), 3e15), frame));
 }
 
 }  // namespace
