@@ -12,18 +12,10 @@ namespace dropscope {
 
 namespace {
 
-constexpr double kFloatMax = std::numeric_limits<float>::max();
 constexpr float kFloatInfinity = std::numeric_limits<float>::infinity();
 // Single precision's unit roundoff, 2^-24.
 constexpr double kFloatRoundoff = 0x1p-24;
 
-// The least float no smaller than v (infinite beyond the largest float; the lowest float below it).
-float roundedUp(double v) {
-    if (v > kFloatMax) return kFloatInfinity;
-    if (v < -kFloatMax) return -std::numeric_limits<float>::max();
-    const float nearest = static_cast<float>(v);
-    return static_cast<double>(nearest) < v ? std::nextafter(nearest, kFloatInfinity) : nearest;
-}
 float roundedDown(double v) { return -roundedUp(-v); }
 
 }  // namespace
@@ -56,8 +48,8 @@ PrefilterRay PrefilterRay::make(const Point& p, const Direction& d, double shift
     PrefilterRay ray{
         {0.0f, 0.0f, 0.0f}, {static_cast<float>(d.x()), static_cast<float>(d.y()), static_cast<float>(d.z())},
         kFloatInfinity,     roundedDown(-shift * frame.scale),
-        kFloatInfinity,     shift,
-        doubleSlack,        frame.scale};
+        kFloatInfinity,     doubleSlack - shift,
+        frame.scale};
     // Outside the range every sphere passes: from the anchor with an infinite slack, every packed lane passes
     // each comparison.
     if (!(scale <= kPrefilterLargestScale && scale >= kPrefilterSmallestScale)) return ray;
@@ -65,8 +57,6 @@ PrefilterRay PrefilterRay::make(const Point& p, const Direction& d, double shift
     ray.slack = roundedUp(doubleSlack * frame.scale + kPrefilterFloatSlackUnits * kFloatRoundoff * scale);
     return ray;
 }
-
-void PrefilterRay::setBest(double best) { limit = roundedUp((best + doubleSlack - shift) * scale); }
 
 namespace {
 

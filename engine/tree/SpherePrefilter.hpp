@@ -2,7 +2,9 @@
 
 #include "geometry/SphereGeometry.hpp"
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace dropscope {
 
@@ -19,7 +21,7 @@ inline constexpr double kPrefilterRadiusFactor = 1.0 + 4.0 * tolerance::kSurface
 // The prefilter's own arithmetic is in single precision on coordinates relative to an anchor and scaled by a
 // power of two (PrefilterFrame); its rounding moves the perpendicular distance and the distance along the ray
 // by less than 60 u X (u = 2^-24, X = |q - anchor|_inf + the largest |centre - anchor|_inf + R of a packed
-// sphere, q the ray's shifted origin, in the frame's units): the slack adds this many u X, twice the bound
+// sphere, q the ray's shifted origin, in the frame's units): the slack adds 128 u X, about twice the bound
 // (docs/octree.md).
 inline constexpr double kPrefilterFloatSlackUnits = 128.0;
 // The range of X, in the frame's units, within which the prefilter computes: above it a square could overflow,
@@ -28,6 +30,17 @@ inline constexpr double kPrefilterFloatSlackUnits = 128.0;
 // in the frame's unit cube, short of a sphere 1e12 times smaller than the root right at its centre).
 inline constexpr double kPrefilterLargestScale = 1e15;
 inline constexpr double kPrefilterSmallestScale = 0x1p-40;
+
+// A float no smaller than v, within a few units of single rounding (infinite beyond the largest float; the
+// lowest float below it). v is widened by 4 units of single rounding and 2 of the smallest subnormal, more than
+// the conversion to the nearest float can take back at any magnitude. Inline and without a branch on the
+// rounding: the traversal sets a limit in every cell it tests.
+inline float roundedUp(double v) {
+    constexpr double kFloatMax = std::numeric_limits<float>::max();
+    if (v < -kFloatMax) return -std::numeric_limits<float>::max();
+    const double widened = v + std::abs(v) * 0x1p-22 + 0x1p-148;
+    return widened > kFloatMax ? std::numeric_limits<float>::infinity() : static_cast<float>(widened);
+}
 
 // The frame of the blocks' single-precision coordinates: (x - anchor) x scale, with the anchor at the root's
 // centre and the scale a power of two that brings the root's half-side into [1, 2). Scaling by a power of two
@@ -68,8 +81,7 @@ struct PrefilterRay {
     float slack;         // (the double slack + kPrefilterFloatSlackUnits u X) x scale, rounded up
     float behind;        // -shift x scale, rounded down: a sphere wholly before this is behind p
     float limit;         // (best distance so far + double slack - shift) x scale, rounded up (+inf before any hit)
-    double shift;        // t of q along the ray from p
-    double doubleSlack;  // kPrefilterSlackRelative x the ray's coordinate scale
+    double limitOffset;  // the double slack - shift (scene units), which the limit adds to the best distance
     double scale;        // the frame's
 
     // The ray p + t d shifted to t = shift, for spheres packed in `frame` whose |centre - anchor|_inf + R is at
@@ -77,7 +89,7 @@ struct PrefilterRay {
     static PrefilterRay make(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame,
                              double packedReach, double doubleSlack);
     // Sets the limit for a best distance `best` (from p) so far.
-    void setBest(double best);
+    void setBest(double best) { limit = roundedUp((best + limitOffset) * scale); }
 };
 
 // Bit k is set for each of the first `count` (at most 64) spheres of `blocks` that may give a distance in
