@@ -110,20 +110,19 @@ void Octree::freeze() {
     sphereIds_.clear();
     others_.clear();
     cells_.reserve(building_.size());
-    std::vector<ShapeId> spheres;
+    std::vector<std::pair<ShapeId, const SphereGeometry*>> spheres;
     rootHalf_ = 0.5 * rootBounds_.sizes().maxCoeff();
     prefilterFrame_ = PrefilterFrame::around(rootBounds_.center(), rootHalf_);
     packedReach_ = 0.0;
     for (const Node& node : building_) {
-        // A sphere whose band make() would not recompute, or too large or too far to pack in single precision
-        // (none in any real scene), is kept with the other shapes.
+        // A sphere the blocks cannot hold (a band make() would not recompute; too large or too far for single
+        // precision; none in any real scene) is kept with the other shapes.
         spheres.clear();
         const auto firstOther = static_cast<std::uint32_t>(others_.size());
         for (ShapeId id : node.sphereIds) {
             const SphereGeometry& sphere = static_cast<const Sphere&>(*shapes_[id]).geometry();
-            if (SphereGeometry::make(sphere.center, sphere.radius).band == sphere.band &&
-                SphereBlock::packable(sphere, prefilterFrame_)) {
-                spheres.push_back(id);
+            if (SphereBlock::packable(sphere, prefilterFrame_)) {
+                spheres.emplace_back(id, &sphere);
                 if (exactSpheres_.empty()) exactSpheres_.resize(shapes_.size());
                 exactSpheres_[id] = {sphere.center, sphere.radius};
                 packedReach_ = std::max(packedReach_, prefilterFrame_.reach(sphere));
@@ -140,11 +139,10 @@ void Octree::freeze() {
             for (unsigned lane = 0; lane < SphereBlock::kWidth; ++lane) {
                 const bool used = k + lane < spheres.size();
                 if (used)
-                    block.pack(lane, static_cast<const Sphere&>(*shapes_[spheres[k + lane]]).geometry(),
-                               prefilterFrame_);
+                    block.pack(lane, *spheres[k + lane].second, prefilterFrame_);
                 else
                     block.clear(lane);
-                sphereIds_.push_back(used ? spheres[k + lane] : RayHit::kNone);
+                sphereIds_.push_back(used ? spheres[k + lane].first : RayHit::kNone);
             }
         }
     }

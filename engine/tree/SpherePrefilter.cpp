@@ -16,7 +16,7 @@ constexpr float kFloatInfinity = std::numeric_limits<float>::infinity();
 // Single precision's unit roundoff, 2^-24.
 constexpr double kFloatRoundoff = 0x1p-24;
 
-float roundedDown(double v) { return -roundedUp(-v); }
+float floatAtMost(double v) { return -floatAtLeast(-v); }
 
 }  // namespace
 
@@ -26,14 +26,15 @@ PrefilterFrame PrefilterFrame::around(const Point& centre, double halfSide) {
 }
 
 bool SphereBlock::packable(const SphereGeometry& sphere, const PrefilterFrame& frame) {
-    return frame.reach(sphere) * frame.scale <= kPrefilterLargestScale;
+    return SphereGeometry::make(sphere.center, sphere.radius).band == sphere.band &&
+           frame.reach(sphere) * frame.scale <= kPrefilterLargestExtent;
 }
 
 void SphereBlock::pack(unsigned lane, const SphereGeometry& sphere, const PrefilterFrame& frame) {
     x[lane] = static_cast<float>((sphere.center.x() - frame.anchor.x()) * frame.scale);
     y[lane] = static_cast<float>((sphere.center.y() - frame.anchor.y()) * frame.scale);
     z[lane] = static_cast<float>((sphere.center.z() - frame.anchor.z()) * frame.scale);
-    radius[lane] = roundedUp(sphere.radius * kPrefilterRadiusFactor * frame.scale);
+    radius[lane] = floatAtLeast(sphere.radius * kPrefilterRadiusFactor * frame.scale);
 }
 
 void SphereBlock::clear(unsigned lane) {
@@ -44,17 +45,17 @@ void SphereBlock::clear(unsigned lane) {
 PrefilterRay PrefilterRay::make(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame,
                                 double packedReach, double doubleSlack) {
     const Eigen::Vector3d origin = (p + shift * d.vector() - frame.anchor) * frame.scale;
-    const double scale = origin.cwiseAbs().maxCoeff() + packedReach * frame.scale;  // X
+    const double extent = origin.cwiseAbs().maxCoeff() + packedReach * frame.scale;  // X
     PrefilterRay ray{
         {0.0f, 0.0f, 0.0f}, {static_cast<float>(d.x()), static_cast<float>(d.y()), static_cast<float>(d.z())},
-        kFloatInfinity,     roundedDown(-shift * frame.scale),
+        kFloatInfinity,     floatAtMost(-shift * frame.scale),
         kFloatInfinity,     doubleSlack - shift,
         frame.scale};
     // Outside the range every sphere passes: from the anchor with an infinite slack, every packed lane passes
     // each comparison.
-    if (!(scale <= kPrefilterLargestScale && scale >= kPrefilterSmallestScale)) return ray;
+    if (!(extent <= kPrefilterLargestExtent && extent >= kPrefilterSmallestExtent)) return ray;
     for (int axis = 0; axis < 3; ++axis) ray.origin[axis] = static_cast<float>(origin[axis]);
-    ray.slack = roundedUp(doubleSlack * frame.scale + kPrefilterFloatSlackUnits * kFloatRoundoff * scale);
+    ray.slack = floatAtLeast(doubleSlack * frame.scale + kPrefilterFloatSlackUnits * kFloatRoundoff * extent);
     return ray;
 }
 

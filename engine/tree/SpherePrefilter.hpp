@@ -28,14 +28,14 @@ inline constexpr double kPrefilterFloatSlackUnits = 128.0;
 // below it the slack could fall among single precision's subnormals, whose rounding is absolute. A ray outside
 // it lets every sphere through; a sphere that would make X larger is not packed (neither happens with the root
 // in the frame's unit cube, short of a sphere 1e12 times smaller than the root right at its centre).
-inline constexpr double kPrefilterLargestScale = 1e15;
-inline constexpr double kPrefilterSmallestScale = 0x1p-40;
+inline constexpr double kPrefilterLargestExtent = 1e15;
+inline constexpr double kPrefilterSmallestExtent = 0x1p-40;
 
 // A float no smaller than v, within a few units of single rounding (infinite beyond the largest float; the
 // lowest float below it). v is widened by 4 units of single rounding and 2 of the smallest subnormal, more than
 // the conversion to the nearest float can take back at any magnitude. Inline and without a branch on the
 // rounding: the traversal sets a limit in every cell it tests.
-inline float roundedUp(double v) {
+inline float floatAtLeast(double v) {
     constexpr double kFloatMax = std::numeric_limits<float>::max();
     if (v < -kFloatMax) return -std::numeric_limits<float>::max();
     const double widened = v + std::abs(v) * 0x1p-22 + 0x1p-148;
@@ -67,7 +67,9 @@ struct alignas(64) SphereBlock {
     float z[kWidth];
     float radius[kWidth];
 
-    // Whether `sphere` can be packed in `frame`: its reach within kPrefilterLargestScale.
+    // Whether `sphere` can be packed in `frame`: SphereGeometry::make recomputes its band from its centre and
+    // radius (the exact test of a candidate does, from the octree's doubles), and its reach in the frame is
+    // within kPrefilterLargestExtent.
     static bool packable(const SphereGeometry& sphere, const PrefilterFrame& frame);
     void pack(unsigned lane, const SphereGeometry& sphere, const PrefilterFrame& frame);
     void clear(unsigned lane);
@@ -89,7 +91,7 @@ struct PrefilterRay {
     static PrefilterRay make(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame,
                              double packedReach, double doubleSlack);
     // Sets the limit for a best distance `best` (from p) so far.
-    void setBest(double best) { limit = roundedUp((best + limitOffset) * scale); }
+    void setBest(double best) { limit = floatAtLeast((best + limitOffset) * scale); }
 };
 
 // Bit k is set for each of the first `count` (at most 64) spheres of `blocks` that may give a distance in

@@ -160,7 +160,7 @@ TEST(SpherePrefilter, DistancesCountFromTheOriginOfAShiftedRay) {
 }
 
 // The frame scales the root's half-side into [1, 2) by a power of two. A ray whose X (in the frame's units)
-// leaves [kPrefilterSmallestScale, kPrefilterLargestScale] lets every packed sphere through, and a sphere
+// leaves [kPrefilterSmallestExtent, kPrefilterLargestExtent] lets every packed sphere through, and a sphere
 // reaching beyond the largest is not packed.
 TEST(SpherePrefilter, OutsideItsRangeEverySphereIsACandidate) {
     const PrefilterFrame frame = PrefilterFrame::around(Point::Zero(), 3.0);
@@ -183,6 +183,10 @@ TEST(SpherePrefilter, OutsideItsRangeEverySphereIsACandidate) {
     EXPECT_TRUE(SphereBlock::packable(SphereGeometry::make(Point(-1e6, 3e6, 0.0), 0.5), frame));
     EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 3e15, 0.0), 0.5), frame));
     EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 0.0, 0.0), 3e15), frame));
+    // A band SphereGeometry::make would not recompute: the candidates' exact test could not reproduce it.
+    SphereGeometry widened = SphereGeometry::make(Point(1.0, 0.0, 0.0), 0.5);
+    widened.band *= 2.0;
+    EXPECT_FALSE(SphereBlock::packable(widened, frame));
 }
 
 }  // namespace
