@@ -26,15 +26,16 @@ std::vector<std::unique_ptr<Shape>> cloneShapes(const Scene& scene) {
 Direction OpticalScene::normalOf(ShapeId shape, const Point& p) const {
     const ShapeFacts& facts = facts_[shape];
     if (!facts.isSphere) return octree_.shape(shape)->normal(p);
-    // Sphere::normal, on the packed copy of its geometry.
-    if (facts.sphere.locate(p) != PointLocation::OnSurface) return Direction::invalid();
-    return Direction(p - facts.sphere.center);
+    // Sphere::normal, on the octree's copy of its geometry.
+    const SphereGeometry sphere = octree_.packedSphere(shape);
+    if (sphere.locate(p) != PointLocation::OnSurface) return Direction::invalid();
+    return Direction(p - sphere.center);
 }
 
 RayHit OpticalScene::nextSurface(ShapeId region, const Point& p, const Direction& d) const {
     if (sealed(region)) {
         RayHit exit;
-        exit.offer(region, facts_[region].sphere.distanceToSurface(p, d));
+        exit.offer(region, octree_.packedSphere(region).distanceToSurface(p, d));
         if (exit) return exit;
     }
     return octree_.firstHit(p, d);
@@ -45,9 +46,8 @@ bool OpticalScene::clearOf(const SphereGeometry& inner, ShapeId otherId) const {
     // other surface is met only on its own band. Each clearance below is two bands each, so the rounding of the
     // centres' distance (a few eps of |centre|, far below kCoordinateRelative x |centre| in every band) never
     // decides.
-    const ShapeFacts& facts = facts_[otherId];
-    if (facts.isSphere) {
-        const SphereGeometry& outer = facts.sphere;
+    if (facts_[otherId].isSphere) {
+        const SphereGeometry outer = octree_.packedSphere(otherId);
         const double betweenSquared = (outer.center - inner.center).squaredNorm();
         const double bands = 2.0 * (inner.band + outer.band);
         const double apart = inner.radius + outer.radius + bands;
@@ -80,7 +80,7 @@ void OpticalScene::findSealedSpheres() {
     for (ShapeFacts& facts : facts_) facts.sealed = facts.isSphere;
     const auto check = [&](ShapeId inner, ShapeId other) {
         ShapeFacts& facts = facts_[inner];
-        if (facts.sealed && !clearOf(facts.sphere, other)) facts.sealed = false;
+        if (facts.sealed && !clearOf(octree_.packedSphere(inner), other)) facts.sealed = false;
     };
     octree_.forEachPairOnAPath([&](ShapeId a, ShapeId b) {
         check(a, b);
@@ -101,11 +101,9 @@ OpticalScene::OpticalScene(const Scene& scene, bool haloes)
         ShapeFacts& facts = facts_[id];
         facts.parent = smallestContainer(*inner, id);
         facts.medium = inner->mediumId();
-        // Exactly a Sphere (not a type derived from it, which could answer normal() otherwise).
-        if (typeid(*inner) == typeid(Sphere)) {
-            facts.sphere = static_cast<const Sphere&>(*inner).geometry();
-            facts.isSphere = true;
-        }
+        // Exactly a Sphere (not a type derived from it, which could answer normal() otherwise); one the octree
+        // does not pack (none in a real scene) is read through Shape, and never sealed.
+        facts.isSphere = typeid(*inner) == typeid(Sphere) && octree_.packsSphere(id);
     }
     findSealedSpheres();
     // The numbers the scene already holds: the light of the scene wavelength is traced exactly as before.

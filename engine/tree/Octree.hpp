@@ -39,6 +39,16 @@ public:
     std::size_t shapeCount() const { return liveShapes_; }
     const Shape* shape(ShapeId id) const { return id < shapes_.size() ? shapes_[id].get() : nullptr; }
     const std::vector<std::unique_ptr<Shape>>& shapes() const { return shapes_; }
+    // Whether `id` is a sphere the traversal tests from the octree's own copy of its centre and radius (every
+    // Sphere that SphereBlock::packable accepts, which is every one in a real scene).
+    bool packsSphere(ShapeId id) const { return id < exactSpheres_.size() && exactSpheres_[id].radius > 0.0; }
+    // That sphere's geometry, the same bits as the Sphere's, from the record the traversal has just read when
+    // the sphere is its hit (a photon's next crossing reads it there, not from a record of its own). Requires
+    // packsSphere(id).
+    SphereGeometry packedSphere(ShapeId id) const {
+        const ExactSphere& sphere = exactSpheres_[id];
+        return SphereGeometry::make(sphere.center, sphere.radius);
+    }
     const OctreeSettings& settings() const { return settings_; }
     const CellBounds& rootBounds() const { return rootBounds_; }
     double margin() const { return margin_; }
@@ -162,7 +172,7 @@ private:
         Point center;
         double radius;
     };
-    std::vector<ExactSphere> exactSpheres_;  // at the packed spheres' ids; the other slots unused
+    std::vector<ExactSphere> exactSpheres_;  // at the packed spheres' ids; radius 0 in the other slots
     std::vector<ShapeId> others_;
     double rootHalf_ = 0.0;          // half the root's side
     double coordinateScale_ = 0.0;   // largest |coordinate| of the inflated root, for the prefilter's slack

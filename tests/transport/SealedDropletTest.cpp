@@ -85,6 +85,33 @@ void expectNextSurfaceIsFirstHit(const OpticalScene& optical, std::uint64_t seed
     }
 }
 
+// OpticalScene::normalOf reads a sphere from the octree's copy, any other shape through Shape: either way the
+// very bits Shape::normal gives, on the surface (points where rays from around meet it) and off it (invalid).
+TEST(SealedDroplets, TheNormalIsTheShapesOwnToTheBit) {
+    const OpticalScene optical(sealingCases());
+    testing::Rng random(13);
+    int onSurface = 0;
+    for (ShapeId id = 0; id < optical.octree().slotCount(); ++id) {
+        const Shape& shape = *optical.octree().shape(id);
+        const Point centre = shape.bounds().center();
+        const double size = shape.bounds().sizes().maxCoeff();
+        for (int k = 0; k < 200; ++k) {
+            const Direction towards = testing::randomDirection(random);
+            const Point from = centre - 2.0 * size * towards.vector();
+            const double distance = shape.distanceToSurface(from, towards);
+            const Point p = std::isnan(distance) ? centre : from + distance * towards.vector();
+            const Direction expected = shape.normal(p);
+            const Direction actual = optical.normalOf(id, p);
+            ASSERT_EQ(static_cast<bool>(actual), static_cast<bool>(expected)) << "shape " << id << " point " << k;
+            if (!expected) continue;
+            ++onSurface;
+            EXPECT_EQ(actual.vector(), expected.vector()) << "shape " << id << " point " << k;
+        }
+        EXPECT_FALSE(optical.normalOf(id, centre)) << "shape " << id;
+    }
+    EXPECT_GT(onSurface, 2000);
+}
+
 TEST(SealedDroplets, TheNextSurfaceIsTheOctreesFirstHit) {
     int fromSealed = 0;
     expectNextSurfaceIsFirstHit(OpticalScene(sealingCases()), 11, 400, fromSealed);

@@ -333,6 +333,33 @@ TEST(Octree, InsertAndRemoveKeepQueriesExact) {
     }
 }
 
+// The octree's own copy of each sphere is what the tracer reads for a hit sphere (OpticalScene): the Sphere's
+// geometry to the bit, band included; no other shape and no emptied slot is a packed sphere.
+TEST(Octree, PackedSpheresAreTheSpheresOwnGeometry) {
+    Rng rng(12);
+    Octree tree(randomScene(rng, 400, 3.0), OctreeSettings{7, 3});
+    const auto expectPacked = [&] {
+        int spheres = 0;
+        for (ShapeId id = 0; id < tree.slotCount(); ++id) {
+            const auto* sphere = dynamic_cast<const Sphere*>(tree.shape(id));
+            ASSERT_EQ(tree.packsSphere(id), sphere != nullptr) << "shape " << id;
+            if (!sphere) continue;
+            ++spheres;
+            const SphereGeometry packed = tree.packedSphere(id);
+            EXPECT_EQ(packed.center, sphere->geometry().center) << "shape " << id;
+            EXPECT_EQ(packed.radius, sphere->geometry().radius) << "shape " << id;
+            EXPECT_EQ(packed.band, sphere->geometry().band) << "shape " << id;
+        }
+        EXPECT_GT(spheres, 50);
+        EXPECT_FALSE(tree.packsSphere(static_cast<ShapeId>(tree.slotCount())));
+    };
+    expectPacked();
+    for (ShapeId id = 0; id < tree.slotCount(); id += 3) ASSERT_NE(tree.remove(id), nullptr);
+    expectPacked();
+    tree.insert(std::make_unique<Sphere>(Point(20.0, -3.0, 1.0), 0.25));  // the root grows, the frame with it
+    expectPacked();
+}
+
 TEST(Octree, TraversalRecordListsCellsInRayOrder) {
     Rng rng(12);
     const Octree tree(randomScene(rng, 1000, 5.0));
