@@ -96,7 +96,7 @@ private:
     // What a photon's surface crossing reads of a shape, by shape id in one record: without it each crossing
     // made three dependent loads (the octree's Shape pointer, the object, its vtable) into memory laid out
     // unrelated to space (docs/performance.md, "Photon transport"). A sphere's geometry is the octree's
-    // (Octree::packedSphere), which the search has just read for the hit: 12 bytes here instead of 56.
+    // (Octree::packedSphere), which the search has just read for the hit, so the record is 12 bytes.
     struct ShapeFacts {
         MediumId medium = 0;
         ShapeId parent = kAmbient;

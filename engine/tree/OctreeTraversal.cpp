@@ -49,8 +49,7 @@ struct Octree::Traversal {
                          tree.blocks_.data() + block, std::min<std::uint32_t>(cell.sphereCount - first, 64), ray);
                      candidates != 0; candidates &= candidates - 1) {
                     const ShapeId id = ids[__builtin_ctzll(candidates)];
-                    const ExactSphere& sphere = tree.exactSpheres_[id];
-                    testExactly(id, SphereGeometry::make(sphere.center, sphere.radius).distanceToSurface(p, d));
+                    testExactly(id, tree.packedSphere(id).distanceToSurface(p, d));
                 }
             }
         }
