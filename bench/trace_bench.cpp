@@ -7,7 +7,7 @@
 // droplet) must equal firstHit on every segment; the program exits 1 if not. docs/performance.md ("Photon transport")
 // has the figures and how to read them.
 //
-// Run: build/bench/trace_bench [--photons 2e5] [--repeat 5] [--threads 2] [--reference-photons 2e4]
+// Run: build/bench/trace_bench [--photons 2e5] [--repeat 5] [--threads 2] [--reference-photons 2e4] [--pairs 9]
 //                              [--seed 1] [--scene FILE] [--polarisation none|stokes]
 // The photons are traced without polarisation unless asked (the figures of docs/performance.md were
 // measured so; polarisation_bench measures what Stokes vectors cost).
@@ -55,6 +55,7 @@ struct Options {
     int repeat = 5;
     int threads = 2;                         // compared with 1
     std::uint64_t referencePhotons = 20000;  // photons whose segments are replayed through firstHit
+    int pairs = 9;                           // traces of those photons, each beside a replay of their segments
     std::uint64_t seed = 1;
     std::optional<std::string> scene;  // a scene file instead of the built-in cloud
     PolarisationModel polarisation = PolarisationModel::None;
@@ -66,7 +67,8 @@ Options parseOptions(int argc, char** argv) {
         const std::string flag = argv[i];
         if (flag == "--help" || flag == "-h") {
             std::cout << "trace_bench [--photons 2e5] [--repeat 5 (median of)] [--threads 2 (against 1)]\n"
-                         "            [--reference-photons 2e4] [--seed 1] [--scene FILE (default: the built-in 1e5 "
+                         "            [--reference-photons 2e4] [--pairs 9 (traces of those, each beside their "
+                         "replay)] [--seed 1] [--scene FILE (default: the built-in 1e5 "
                          "cloud)]\n            [--polarisation none|stokes (default none)]\n";
             std::exit(0);
         }
@@ -80,6 +82,8 @@ Options parseOptions(int argc, char** argv) {
             options.threads = std::max(1, static_cast<int>(parseCount(flag, value)));
         else if (flag == "--reference-photons")
             options.referencePhotons = parseCount(flag, value);
+        else if (flag == "--pairs")
+            options.pairs = std::max(1, static_cast<int>(parseCount(flag, value)));
         else if (flag == "--seed")
             options.seed = parseCount(flag, value);
         else if (flag == "--scene")
@@ -236,20 +240,24 @@ struct FirstHitTimes {
     bool nextSurfaceIdentical = true;
 };
 
+// Seconds for Octree::firstHit on every ray, in order, split statically over `threads`; `hits` counts the
+// rays that hit.
+double replaySeconds(const Octree& octree, const std::vector<Ray>& rays, int threads, std::size_t& hits) {
+    const Stopwatch watch;
+    std::size_t found = 0;
+    const auto n = static_cast<std::ptrdiff_t>(rays.size());
+#pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : found)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+        const Ray& ray = rays[static_cast<std::size_t>(i)];
+        found += octree.firstHit(ray.origin, ray.direction) ? 1 : 0;
+    }
+    hits = found;
+    return watch.seconds();
+}
+
 FirstHitTimes timeFirstHits(const OpticalScene& optical, const std::vector<Ray>& rays, const Options& options) {
     const Octree& octree = optical.octree();
-    const auto pass = [&](int threads, std::size_t& hits) {
-        const Stopwatch watch;
-        std::size_t found = 0;
-        const auto n = static_cast<std::ptrdiff_t>(rays.size());
-#pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : found)
-        for (std::ptrdiff_t i = 0; i < n; ++i) {
-            const Ray& ray = rays[static_cast<std::size_t>(i)];
-            found += octree.firstHit(ray.origin, ray.direction) ? 1 : 0;
-        }
-        hits = found;
-        return watch.seconds();
-    };
+    const auto pass = [&](int threads, std::size_t& hits) { return replaySeconds(octree, rays, threads, hits); };
     FirstHitTimes times;
     times.rays = rays.size();
     std::size_t hits = 0;
@@ -284,6 +292,68 @@ FirstHitTimes timeFirstHits(const OpticalScene& optical, const std::vector<Ray>&
         if (found != hits) times.nextSurfaceIdentical = false;
     }
     return times;
+}
+
+// The target's own measure, on the very photons whose segments are replayed: the reference photons traced
+// (runTrace, the standard tallies, the model timed) and their segments replayed through firstHit, one right
+// after the other, `pairs` times on 1 and on `threads` threads. A pair's two halves see the same load, so the
+// ratio of a pair, trace seconds over replay seconds, is what the photons cost beyond their own searches.
+struct SamePhotonPairs {
+    int threads = 1;
+    std::vector<double> trace;   // seconds, each pair
+    std::vector<double> replay;  // seconds, each pair
+    std::vector<double> ratios() const {
+        std::vector<double> out;
+        for (std::size_t i = 0; i < trace.size(); ++i) out.push_back(trace[i] / replay[i]);
+        return out;
+    }
+};
+
+std::vector<SamePhotonPairs> timeSamePhotons(const OpticalScene& optical, const std::vector<Source>& sources,
+                                             const std::vector<Ray>& rays, const Options& options) {
+    std::vector<SamePhotonPairs> runs{{1, {}, {}}};
+    if (options.threads > 1) runs.push_back({options.threads, {}, {}});
+    TraceSettings settings;
+    settings.seed = options.seed;
+    settings.photons = options.referencePhotons;
+    settings.transport.polarisation = options.polarisation;
+    std::size_t hits = 0;
+    for (int r = 0; r < options.pairs; ++r) {
+        for (SamePhotonPairs& run : runs) {
+            settings.threads = run.threads;
+            // Which half goes first alternates, so neither always follows the other's memory traffic.
+            const auto trace = [&] {
+                run.trace.push_back(
+                    runTrace(optical, sources, settings, standardTallies(180, options.polarisation)).seconds);
+            };
+            const auto replay = [&] { run.replay.push_back(replaySeconds(optical.octree(), rays, run.threads, hits)); };
+            if (r % 2 == 0) {
+                trace();
+                replay();
+            } else {
+                replay();
+                trace();
+            }
+        }
+    }
+    return runs;
+}
+
+void printSamePhotons(const std::vector<SamePhotonPairs>& runs, const Options& options, std::size_t segments) {
+    std::cout << "\n### The target's measure: the reference photons traced, then their own segments replayed ("
+              << options.pairs
+              << " pairs per thread count)\n\n"
+                 "| threads | photons | segments | trace s (median) | replay s (median) | trace / replay, each pair | "
+                 "median of the pairs' ratios | fastest trace / fastest replay |\n|---|---|---|---|---|---|---|---|\n";
+    for (const SamePhotonPairs& run : runs) {
+        std::string each;
+        for (double ratio : run.ratios()) each += (each.empty() ? "" : ", ") + fixed(ratio, 2);
+        std::cout << "| " << run.threads << " | " << options.referencePhotons << " | " << segments << " | "
+                  << fixed(median(run.trace), 4) << " | " << fixed(median(run.replay), 4) << " | " << each << " | "
+                  << fixed(median(run.ratios()), 2) << " | " << fixed(best(run.trace) / best(run.replay), 2) << " |\n";
+    }
+    std::cout << "\nThe replay is every segment the photons searched (the emission and each interface event), so the "
+                 "ratio is their time per photon over the bare firstHit time of the same segments.\n";
 }
 
 void printScene(const Scene& scene, const std::string& name, const BuildTimes& build, double parseSeconds, bool builtIn,
@@ -399,6 +469,8 @@ int main(int argc, char** argv) {
         const std::vector<ThreadRuns> runs = timeTransport(*optical, scene.sources, options, tally, identical);
         std::cerr << "reference: firstHit on " << rays.size() << " segments\n";
         const FirstHitTimes hits = timeFirstHits(*optical, rays, options);
+        std::cerr << "the reference photons traced and replayed, " << options.pairs << " pairs\n";
+        const std::vector<SamePhotonPairs> same = timeSamePhotons(*optical, scene.sources, rays, options);
 
         std::cout << "trace_bench: " << name << ", polarisation " << polarisationModelName(options.polarisation)
                   << ", photons " << options.photons << ", repeat " << options.repeat << ", threads 1 and "
@@ -408,6 +480,7 @@ int main(int argc, char** argv) {
         printPhotons(tally, builtIn ? std::exp(-builtInOpticalDepth(scene)) : -1.0);
         printTransport(runs, tally);
         printReference(hits, runs.front(), tally, options.threads);
+        printSamePhotons(same, options, rays.size());
         std::cout << "\nevery run's tally identical (1 and " << options.threads
                   << " threads, every repeat): " << (identical ? "yes" : "NO") << '\n';
         return identical && hits.nextSurfaceIdentical ? 0 : 1;
