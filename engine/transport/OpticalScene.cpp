@@ -24,7 +24,7 @@ std::vector<std::unique_ptr<Shape>> cloneShapes(const Scene& scene) {
 }  // namespace
 
 Direction OpticalScene::normalOf(ShapeId shape, const Point& p) const {
-    const ShapeFacts& facts = facts_[shape];
+    const ShapeFacts& facts = factsOf(shape);
     if (!facts.isSphere) return octree_.shape(shape)->normal(p);
     // Sphere::normal, on the octree's copy of its geometry.
     const SphereGeometry sphere = octree_.packedSphere(shape);
@@ -88,6 +88,20 @@ void OpticalScene::findSealedSpheres() {
     });
 }
 
+void OpticalScene::findWhetherPackedSpheresAreAlike() {
+    std::optional<ShapeFacts> common;
+    for (ShapeId id = 0; id < octree_.slotCount(); ++id) {
+        if (!octree_.packsSphere(id)) continue;
+        const ShapeFacts& facts = facts_[id];
+        if (!common) {
+            common = facts;
+        } else if (facts != *common) {
+            return;
+        }
+    }
+    packedSpheresAlike_ = common;
+}
+
 OpticalScene::OpticalScene(const Scene& scene, bool haloes)
     : media_(scene.media),
       wavelengthNm_(scene.wavelengthNm),
@@ -106,6 +120,7 @@ OpticalScene::OpticalScene(const Scene& scene, bool haloes)
         facts.isSphere = typeid(*inner) == typeid(Sphere) && octree_.packsSphere(id);
     }
     findSealedSpheres();
+    findWhetherPackedSpheresAreAlike();
     // The numbers the scene already holds: the light of the scene wavelength is traced exactly as before.
     for (const Medium& medium : media_) sceneOptics_.push_back({medium.n, medium.absorptionPerUnit});
     for (std::size_t i = 0; i < scene.detectors.size(); ++i) {
@@ -153,7 +168,7 @@ std::optional<OpticalScene::HaloPass> OpticalScene::firstHaloPass(const Point& p
         const Shape& halo = *haloes_->shape(hit.shape);
         const ShapeId droplet = haloOwners_[hit.shape];
         const Direction normal = halo.normal(at);
-        if (!normal || d.dot(normal) >= 0.0 || facts_[droplet].parent != region) continue;
+        if (!normal || d.dot(normal) >= 0.0 || parentOf(droplet) != region) continue;
         // Entering the halo: a pass when the flight then misses the droplet itself.
         const double chord = halo.distanceToSurface(at, d);
         if (!(chord > 0.0) || !std::isnan(octree_.shape(droplet)->distanceToSurface(at, d))) continue;
