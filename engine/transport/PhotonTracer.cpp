@@ -181,7 +181,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
         double reflectance = crossing.reflectance;
         std::optional<PolarisedCrossing> polarised;
         if (light) {
-            polarised.emplace(*light, direction, crossing);
+            polarised.emplace(*light, crossing);
             reflectance = polarised->reflectance();
         }
         EventType type = EventType::Refract;
@@ -199,7 +199,7 @@ PhotonOutcome tracePhoton(const OpticalScene& scene, const Ray& emitted, PhotonR
             region = state.region = crossing.regionBeyond;
             if (light) light = withUnitPower(polarised->transmitted());
         } else {
-            direction = crossing.reflected;
+            direction = crossing.reflected();
             if (light) light = withUnitPower(polarised->reflected());
         }
         if (observer) {

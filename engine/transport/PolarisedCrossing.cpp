@@ -4,16 +4,16 @@
 
 namespace dropscope {
 
-PolarisedCrossing::PolarisedCrossing(const Polarisation& light, const Direction& incident,
-                                     const SurfaceCrossing& crossing)
-    : reflectedDirection_(crossing.reflected),
+PolarisedCrossing::PolarisedCrossing(const Polarisation& light, const SurfaceCrossing& crossing)
+    : incident_(crossing.incident),
+      normal_(crossing.normal),
       transmittedDirection_(crossing.transmitted),
-      plane_(planeOfIncidence(light, incident, crossing.normal)),
+      plane_(planeOfIncidence(light, crossing.incident, crossing.normal)),
       amplitudes_(fresnelAmplitudes(crossing.cosIncidence, crossing.n1, crossing.n2, crossing.totalInternalReflection)),
       reflectance_(crossing.totalInternalReflection ? 1.0 : polarisedReflectance(plane_, amplitudes_)) {}
 
 Polarisation PolarisedCrossing::reflected() const {
-    return reflectedPolarisation(plane_, amplitudes_, reflectedDirection_);
+    return reflectedPolarisation(plane_, amplitudes_, reflect(incident_, normal_));
 }
 
 Polarisation PolarisedCrossing::transmitted() const {

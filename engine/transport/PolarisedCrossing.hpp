@@ -11,7 +11,7 @@ namespace dropscope {
 // reflection decided as the crossing decided it.
 class PolarisedCrossing {
 public:
-    PolarisedCrossing(const Polarisation& light, const Direction& incident, const SurfaceCrossing& crossing);
+    PolarisedCrossing(const Polarisation& light, const SurfaceCrossing& crossing);
 
     // The share of this light's power reflected, (M_R S)_0 / S_0; 1 under total internal reflection.
     double reflectance() const { return reflectance_; }
@@ -20,7 +20,8 @@ public:
     Polarisation transmitted() const;
 
 private:
-    Direction reflectedDirection_;
+    Direction incident_;
+    Direction normal_;
     Direction transmittedDirection_;
     PlaneOfIncidence plane_;
     FresnelAmplitudes amplitudes_;

@@ -130,7 +130,7 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
         }
 
         std::optional<PolarisedCrossing> split;
-        if (branch.light) split.emplace(*branch.light, branch.direction, crossing);
+        if (branch.light) split.emplace(*branch.light, crossing);
         const double reflectance = split ? split->reflectance() : crossing.reflectance;
         // The child along `direction`: with polarisation its light is M S and its weight that light's I;
         // without, the weight is the parent's times `share`.
@@ -147,11 +147,11 @@ RayTree traceRayTree(const OpticalScene& scene, const Ray& ray, double weight, c
         };
         const auto reflected = [&] { return split ? std::optional(split->reflected()) : std::nullopt; };
         if (crossing.totalInternalReflection) {
-            addChild(EventType::Tir, crossing.reflected, branch.region, 1.0, reflected());
+            addChild(EventType::Tir, crossing.reflected(), branch.region, 1.0, reflected());
         } else {
             addChild(EventType::Refract, crossing.transmitted, crossing.regionBeyond, 1.0 - reflectance,
                      split ? std::optional(split->transmitted()) : std::nullopt);
-            addChild(EventType::Reflect, crossing.reflected, branch.region, reflectance, reflected());
+            addChild(EventType::Reflect, crossing.reflected(), branch.region, reflectance, reflected());
         }
     }
     return tree;

@@ -40,7 +40,7 @@ SurfaceCrossing crossSurface(const OpticalScene& scene, ShapeId region, ShapeId 
     crossing.cosIncidence = std::abs(cosine);
     crossing.n1 = n1;
     crossing.n2 = n2;
-    crossing.reflected = reflect(direction, normal);
+    crossing.incident = direction;
     const Refraction refraction = refract(direction, normal, n1, n2);
     if (refraction.outcome == InterfaceOutcome::TotalInternalReflection) {
         crossing.totalInternalReflection = true;

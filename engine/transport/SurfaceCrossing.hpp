@@ -1,5 +1,6 @@
 #pragma once
 
+#include "optics/Interface.hpp"
 #include "transport/Event.hpp"
 #include "transport/OpticalScene.hpp"
 
@@ -33,8 +34,10 @@ struct SurfaceCrossing {
     double cosIncidence = 1.0;  // |direction . normal|
     double n1 = 1.0;            // index on the incident side
     double n2 = 1.0;            // index on the far side
-    Direction reflected;
-    Direction transmitted;  // invalid on total internal reflection
+    Direction incident;         // the ray's direction as it arrived
+    Direction transmitted;      // invalid on total internal reflection
+    // Worked out when asked: most crossings of a photon transmit, and the direction costs a normalisation.
+    Direction reflected() const { return reflect(incident, normal); }
 };
 
 // The ray travelling along `direction` in `region` has reached `point` on `shape`'s surface (a hit

@@ -96,7 +96,7 @@ TEST(SurfaceCrossing, NamesTheMediaOnBothSidesWhenEnteringAndLeavingNestedShapes
         const double n1 = scene.media()[c.from].n, n2 = scene.media()[c.to].n;
         EXPECT_DOUBLE_EQ(crossing.reflectance, fresnelReflectance(1.0, n1, n2).unpolarised());
         EXPECT_EQ(crossing.transmitted.vector(), down.vector());  // normal incidence goes straight on
-        EXPECT_EQ(crossing.reflected.vector(), Eigen::Vector3d(0, 0, 1));
+        EXPECT_EQ(crossing.reflected().vector(), Eigen::Vector3d(0, 0, 1));
     }
 }
 
@@ -134,7 +134,7 @@ TEST(SurfaceCrossing, PastTheCriticalAngleTheRayIsTotallyReflected) {
     EXPECT_TRUE(crossing.totalInternalReflection);
     EXPECT_EQ(crossing.reflectance, 1.0);
     EXPECT_FALSE(crossing.transmitted);
-    EXPECT_NEAR((crossing.reflected.vector() - Eigen::Vector3d(up.x(), 0, -up.z())).norm(), 0.0,
+    EXPECT_NEAR((crossing.reflected().vector() - Eigen::Vector3d(up.x(), 0, -up.z())).norm(), 0.0,
                 4 * std::numeric_limits<double>::epsilon());  // V - 2(V.N)N: a few roundings of unit terms
 }
 
