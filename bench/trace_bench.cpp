@@ -240,19 +240,23 @@ struct FirstHitTimes {
     bool nextSurfaceIdentical = true;
 };
 
-// Seconds for Octree::firstHit on every ray, in order, split statically over `threads`; `hits` counts the
-// rays that hit.
-double replaySeconds(const Octree& octree, const std::vector<Ray>& rays, int threads, std::size_t& hits) {
+// Seconds for `query(k)` (a RayHit) on every segment k, in order, split statically over `threads`; `hits` counts
+// the segments that hit.
+template <class Query>
+double replayedSeconds(std::size_t segments, int threads, std::size_t& hits, const Query& query) {
     const Stopwatch watch;
     std::size_t found = 0;
-    const auto n = static_cast<std::ptrdiff_t>(rays.size());
+    const auto n = static_cast<std::ptrdiff_t>(segments);
 #pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : found)
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-        const Ray& ray = rays[static_cast<std::size_t>(i)];
-        found += octree.firstHit(ray.origin, ray.direction) ? 1 : 0;
-    }
+    for (std::ptrdiff_t i = 0; i < n; ++i) found += query(static_cast<std::size_t>(i)) ? 1 : 0;
     hits = found;
     return watch.seconds();
+}
+
+// Octree::firstHit on every ray.
+double replaySeconds(const Octree& octree, const std::vector<Ray>& rays, int threads, std::size_t& hits) {
+    return replayedSeconds(rays.size(), threads, hits,
+                           [&](std::size_t k) { return octree.firstHit(rays[k].origin, rays[k].direction); });
 }
 
 // Each segment's region, as the tracer held it: on a surface heading in, inside.
@@ -263,19 +267,12 @@ std::vector<ShapeId> segmentRegions(const OpticalScene& optical, const std::vect
     return regions;
 }
 
-// Seconds for OpticalScene::nextSurface (the tracer's query) on every ray from its region, as replaySeconds.
+// OpticalScene::nextSurface (the tracer's query) on every ray from its region.
 double nextSurfaceSeconds(const OpticalScene& optical, const std::vector<Ray>& rays,
                           const std::vector<ShapeId>& regions, int threads, std::size_t& hits) {
-    const Stopwatch watch;
-    std::size_t found = 0;
-    const auto n = static_cast<std::ptrdiff_t>(rays.size());
-#pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : found)
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        found += optical.nextSurface(regions[k], rays[k].origin, rays[k].direction) ? 1 : 0;
-    }
-    hits = found;
-    return watch.seconds();
+    return replayedSeconds(rays.size(), threads, hits, [&](std::size_t k) {
+        return optical.nextSurface(regions[k], rays[k].origin, rays[k].direction);
+    });
 }
 
 FirstHitTimes timeFirstHits(const OpticalScene& optical, const std::vector<Ray>& rays,
