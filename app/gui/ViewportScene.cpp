@@ -139,7 +139,26 @@ void ViewportScene::draw(AppState& state, int width, int height) {
         view.fitRequested = false;
     }
     view.camera.clipTo(viewBounds(state, bounds_));
+
+    const DrawnView drawn{rebuilds_, view.camera, width, height};
+    GLint target = 0;
+    gl_.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    const auto targetFramebuffer = static_cast<GLuint>(target);
+    if (keepImage_ && kept_ == drawn) {
+        image_.copyTo(targetFramebuffer);
+        ++copiedFrames_;
+        return;
+    }
+    const bool keep = keepImage_ && lastDrawn_ == drawn && image_.bindForDrawing(width, height);
     renderer_.draw(view.camera, view.layers.render, width, height);
+    ++drawnFrames_;
+    if (keep) {
+        image_.copyTo(targetFramebuffer);
+        kept_ = drawn;
+    } else {
+        kept_.reset();
+    }
+    lastDrawn_ = drawn;
 }
 
 }  // namespace dropscope::gui

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "gui/AppState.hpp"
+#include "render/OffscreenImage.hpp"
 #include "render/Renderer.hpp"
 
 #include <cstdint>
@@ -32,12 +33,21 @@ ViewKey viewKey(const AppState& state);
 
 // The 3D view behind the panels: turns the app state into the renderer's shapes and line layers
 // (rebuilt only when its key changed) and draws them with the state's camera.
+//
+// The picture is kept: when a frame draws the very view the frame before drew (the same build, camera and
+// size) it draws it once more into an image of its own, and from then on copies that image until the view
+// changes. Panels, tooltips and a running trace's progress redraw the window many times a second without
+// changing the view, and on a software renderer a view of 1e5 droplets takes tens of milliseconds to draw
+// (docs/performance.md, "The app"). A view that changes every frame (an orbit) is drawn straight into the
+// framebuffer, with nothing copied.
 class ViewportScene {
 public:
-    explicit ViewportScene(const render::GlFunctions& gl) : renderer_(gl) {}
+    // `keepImage` false draws the view in every frame (the frame benchmark's reference).
+    explicit ViewportScene(const render::GlFunctions& gl, bool keepImage = true)
+        : gl_(gl), renderer_(gl), image_(gl), keepImage_(keepImage) {}
 
     // Rebuilds the shapes and layers when the key changed, fits or clips the camera, and draws into the
-    // bound framebuffer.
+    // bound framebuffer, or copies the kept picture there when it shows this view.
     void draw(AppState& state, int width, int height);
 
     // The bounds of the shapes as last drawn (render::sceneBounds): they size the source handles.
@@ -45,11 +55,31 @@ public:
     // What the last rebuild handed to the renderer, for the UI tests.
     const render::SceneLayers& layers() const { return layers_; }
     std::uint64_t rebuilds() const { return rebuilds_; }
+    // Frames whose view the renderer drew, and frames that copied the kept picture instead.
+    std::uint64_t drawnFrames() const { return drawnFrames_; }
+    std::uint64_t copiedFrames() const { return copiedFrames_; }
 
 private:
+    // What the renderer's picture depends on besides the layers (which rebuilds_ counts).
+    struct DrawnView {
+        std::uint64_t build = 0;
+        render::Camera camera;
+        int width = 0;
+        int height = 0;
+
+        bool operator==(const DrawnView&) const = default;
+    };
+
     void rebuild(const AppState& state, const ViewKey& key);
 
+    const render::GlFunctions& gl_;
     render::Renderer renderer_;
+    render::OffscreenImage image_;
+    bool keepImage_ = true;
+    std::optional<DrawnView> lastDrawn_;  // the view of the last draw
+    std::optional<DrawnView> kept_;       // the view image_ holds
+    std::uint64_t drawnFrames_ = 0;
+    std::uint64_t copiedFrames_ = 0;
     render::SceneLayers layers_{render::LineBatch(render::Anchor{}), {}};
     Eigen::AlignedBox3d bounds_;
     std::optional<ViewKey> builtFrom_;

@@ -18,6 +18,8 @@ public:
     double nearPlane = 0.01;
     double farPlane = 100.0;
 
+    bool operator==(const Camera&) const = default;
+
     static Camera fromView(const SceneView& view);
     SceneView toView() const;
 

@@ -82,7 +82,8 @@ namespace dropscope::render {
     X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)               \
     X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)               \
     X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)         \
-    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)
+    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)         \
+    X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)
 
 // A function that returns the address of an OpenGL function by name, for the current context.
 using GlProcLoader = void* (*)(const char* name);

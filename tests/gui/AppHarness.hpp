@@ -143,6 +143,7 @@ public:
         return false;
     }
     snapshot::Image image() const { return context_.read(); }
+    const render::GlFunctions& gl() const { return context_.gl(); }
 
 private:
     snapshot::OsmesaContext context_;  // first: the app's GL objects live in this context

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "render/GlFunctions.hpp"
+
+namespace dropscope::render {
+
+// A framebuffer of its own (colour and depth) to draw a picture into once and copy out as often as it is
+// needed: ViewportScene keeps the 3D view in one while frames draw the same view.
+class OffscreenImage {
+public:
+    explicit OffscreenImage(const GlFunctions& gl) : gl_(gl) {}
+    ~OffscreenImage();
+    OffscreenImage(const OffscreenImage&) = delete;
+    OffscreenImage& operator=(const OffscreenImage&) = delete;
+
+    // Binds it for drawing at width x height, making it that size first. False, with nothing bound, when the
+    // driver cannot complete such a framebuffer: the caller then draws where it would have.
+    bool bindForDrawing(int width, int height);
+    // Copies the colour drawn into it to `framebuffer` (0: the window's), the scissor aside, and leaves
+    // `framebuffer` bound for reading and drawing.
+    void copyTo(GLuint framebuffer) const;
+
+private:
+    void release();
+
+    const GlFunctions& gl_;
+    GLuint framebuffer_ = 0;
+    GLuint colour_ = 0;
+    GLuint depth_ = 0;
+    int width_ = 0;
+    int height_ = 0;
+};
+
+}  // namespace dropscope::render

@@ -1,0 +1,115 @@
+// The 3D view keeps its picture (ViewportScene): the second frame of a view draws it into an image of its
+// own, later frames of that view copy the image, and any change of the view draws it again. The copy must
+// be the picture itself, so every image here is compared, pixel for pixel, with a view drawn in every frame.
+#include "AppHarness.hpp"
+#include "UiTestScenes.hpp"
+
+#include "gui/ViewportScene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+namespace dropscope::gui::testing {
+namespace {
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 200;
+
+class KeptView : public ::testing::Test {
+protected:
+    // The frame `scene` draws of the app's state, read back.
+    snapshot::Image drawn(ViewportScene& scene, int width = kWidth, int height = kHeight) {
+        // Whatever the frame before left is wiped first: a copy that did not happen must show.
+        const render::GlFunctions& gl = harness_.gl();
+        gl.ClearColor(1.0f, 0.0f, 1.0f, 1.0f);
+        gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        scene.draw(harness_.state(), width, height);
+        snapshot::Image image = harness_.image();
+        // The buffer is the harness's size; only the corner drawn is the view.
+        snapshot::Image corner{width, height, {}};
+        for (int y = 0; y < height; ++y) {
+            const auto row = image.rgba.begin() + 4 * static_cast<std::ptrdiff_t>(y) * image.width;
+            corner.rgba.insert(corner.rgba.end(), row, row + 4 * width);
+        }
+        return corner;
+    }
+    void expectFrames(const ViewportScene& scene, std::uint64_t drawnFrames, std::uint64_t copiedFrames) {
+        EXPECT_EQ(scene.drawnFrames(), drawnFrames);
+        EXPECT_EQ(scene.copiedFrames(), copiedFrames);
+    }
+
+    AppHarness harness_{kCloudScene, kWidth, kHeight};
+    AppState& state_ = harness_.state();
+};
+
+TEST_F(KeptView, ASecondFrameOfAViewKeepsItAndLaterFramesCopyTheSamePicture) {
+    ViewportScene kept(harness_.gl());
+    ViewportScene redrawn(harness_.gl(), false);
+    const snapshot::Image reference = drawn(redrawn);
+    expectFrames(redrawn, 1, 0);
+
+    EXPECT_EQ(drawn(kept).rgba, reference.rgba) << "the first frame, drawn straight";
+    expectFrames(kept, 1, 0);
+    EXPECT_EQ(drawn(kept).rgba, reference.rgba) << "the second, drawn into the kept image and copied out";
+    expectFrames(kept, 2, 0);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(drawn(kept).rgba, reference.rgba) << "copied, frame " << k;
+    expectFrames(kept, 2, 3);
+    EXPECT_EQ(drawn(redrawn).rgba, reference.rgba);
+    expectFrames(redrawn, 2, 0);
+}
+
+TEST_F(KeptView, EveryChangeOfTheViewDrawsItAgain) {
+    ViewportScene kept(harness_.gl());
+    ViewportScene redrawn(harness_.gl(), false);
+    for (int k = 0; k < 3; ++k) drawn(kept);
+    expectFrames(kept, 2, 1);
+    const snapshot::Image before = drawn(kept);
+    expectFrames(kept, 2, 2);
+
+    // After each change the frame must agree with the view drawn afresh (and differ from the picture kept
+    // before, but for the turn back), and the frames after it keep and copy it again.
+    std::uint64_t drawnFrames = 2;
+    std::uint64_t copiedFrames = 2;
+    const auto changed = [&](const char* what, int width = kWidth, int height = kHeight, bool differs = true) {
+        const snapshot::Image after = drawn(kept, width, height);
+        EXPECT_EQ(after.rgba != before.rgba, differs) << what;
+        EXPECT_EQ(after.rgba, drawn(redrawn, width, height).rgba) << what;
+        EXPECT_EQ(drawn(kept, width, height).rgba, after.rgba) << what << ", its second frame";
+        EXPECT_EQ(drawn(kept, width, height).rgba, after.rgba) << what << ", copied";
+        drawnFrames += 2;
+        copiedFrames += 1;
+        expectFrames(kept, drawnFrames, copiedFrames);
+    };
+
+    const render::Camera camera = state_.view.camera;
+    state_.view.camera.orbit(0.2, 0.0);
+    changed("the camera turned");
+    state_.view.camera = camera;
+    changed("the camera turned back", kWidth, kHeight, false);  // the first view: kept no longer, so drawn
+    state_.view.layers.render.background = {0.5f, 0.2f, 0.1f, 1.0f};
+    changed("the background");
+    state_.scene.selectShape(0);
+    changed("a droplet selected");
+    changed("another size", kWidth / 2, kHeight);
+}
+
+TEST_F(KeptView, TheAppCopiesItsViewWhileNothingInItChanges) {
+    const ViewportScene& view = harness_.app().viewport();
+    harness_.frames(3);  // settled: the view kept
+    const std::uint64_t drawnFrames = view.drawnFrames();
+    const std::uint64_t copiedFrames = view.copiedFrames();
+    harness_.frames(4);
+    EXPECT_EQ(view.drawnFrames(), drawnFrames);
+    EXPECT_EQ(view.copiedFrames(), copiedFrames + 4);
+
+    state_.view.camera.orbit(0.1, 0.0);  // what a drag does between frames
+    harness_.frame();
+    state_.view.camera.orbit(0.1, 0.0);
+    harness_.frame();
+    EXPECT_EQ(view.drawnFrames(), drawnFrames + 2);
+    EXPECT_EQ(view.copiedFrames(), copiedFrames + 4);
+}
+
+}  // namespace
+}  // namespace dropscope::gui::testing
