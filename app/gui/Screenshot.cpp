@@ -1,5 +1,6 @@
 #include "gui/Screenshot.hpp"
 
+#include "render/OffscreenImage.hpp"
 #include "render/RenderError.hpp"
 #include "results/AtomicFile.hpp"
 
@@ -31,30 +32,14 @@ snapshot::Image renderViewport(const render::GlFunctions& gl, ViewportScene& sce
         throw render::RenderError("screenshot size " + std::to_string(width) + "x" + std::to_string(height) +
                                   " is outside 1.." + std::to_string(kMaxScreenshotSide));
     }
-    GLuint framebuffer = 0;
-    GLuint buffers[2] = {0, 0};
-    gl.GenFramebuffers(1, &framebuffer);
-    gl.GenRenderbuffers(2, buffers);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    gl.BindRenderbuffer(GL_RENDERBUFFER, buffers[0]);
-    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, buffers[0]);
-    gl.BindRenderbuffer(GL_RENDERBUFFER, buffers[1]);
-    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, buffers[1]);
-    const bool complete = gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-    snapshot::Image image;
-    if (complete) {
-        scene.draw(state, width, height);
-        image = readFramebuffer(gl, width, height);
-    }
-    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    gl.DeleteRenderbuffers(2, buffers);
-    gl.DeleteFramebuffers(1, &framebuffer);
-    if (!complete) {
+    render::OffscreenImage target(gl);
+    if (!target.bindForDrawing(width, height)) {
         throw render::RenderError("the driver cannot render a " + std::to_string(width) + "x" + std::to_string(height) +
                                   " screenshot");
     }
+    scene.draw(state, width, height);
+    snapshot::Image image = readFramebuffer(gl, width, height);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     return image;
 }
 

@@ -5,7 +5,8 @@
 namespace dropscope::render {
 
 // A framebuffer of its own (colour and depth) to draw a picture into once and copy out as often as it is
-// needed: ViewportScene keeps the 3D view in one while frames draw the same view.
+// needed: ViewportScene keeps the 3D view in one while frames draw the same view, and a screenshot of the
+// view alone is drawn into one of its own size (renderViewport).
 class OffscreenImage {
 public:
     explicit OffscreenImage(const GlFunctions& gl) : gl_(gl) {}
