@@ -141,22 +141,31 @@ void ViewportScene::draw(AppState& state, int width, int height) {
     view.camera.clipTo(viewBounds(state, bounds_));
 
     const DrawnView drawn{rebuilds_, view.camera, width, height};
-    GLint target = 0;
-    gl_.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-    const auto targetFramebuffer = static_cast<GLuint>(target);
-    if (keepImage_ && kept_ == drawn) {
-        image_.copyTo(targetFramebuffer);
+    GLint target[2] = {0, 0};  // the framebuffers bound for drawing and reading
+    gl_.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target[0]);
+    gl_.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &target[1]);
+    GLint sampleBuffers = 0;  // a blit into a multisampled framebuffer of another format is an error
+    gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+    const bool keepable = keepImage_ && sampleBuffers == 0 && unkeepableSize_ != std::pair{width, height};
+    if (keepable && kept_ == drawn) {
+        image_.copyTo(static_cast<GLuint>(target[0]));
         ++copiedFrames_;
+        lastDrawn_ = drawn;
         return;
     }
-    const bool keep = keepImage_ && lastDrawn_ == drawn && image_.bindForDrawing(width, height);
+    bool keep = false;
+    if (keepable && lastDrawn_ == drawn) {
+        kept_.reset();  // the image is drawn over, or dropped
+        keep = image_.bindForDrawing(width, height);
+        if (!keep) unkeepableSize_ = std::pair{width, height};
+    }
     renderer_.draw(view.camera, view.layers.render, width, height);
     ++drawnFrames_;
     if (keep) {
-        image_.copyTo(targetFramebuffer);
+        gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target[0]));
+        gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(target[1]));
+        image_.copyTo(static_cast<GLuint>(target[0]));
         kept_ = drawn;
-    } else {
-        kept_.reset();
     }
     lastDrawn_ = drawn;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace dropscope::gui {
 
@@ -35,8 +36,8 @@ ViewKey viewKey(const AppState& state);
 // (rebuilt only when its key changed) and draws them with the state's camera.
 //
 // The picture is kept: when a frame draws the very view the frame before drew (the same build, camera and
-// size) it draws it once more into an image of its own, and from then on copies that image until the view
-// changes. Panels, tooltips and a running trace's progress redraw the window many times a second without
+// size) it draws it once more into an image of its own, and from then on copies that image while the view
+// is that one. Panels, tooltips and a running trace's progress redraw the window many times a second without
 // changing the view, and on a software renderer a view of 1e5 droplets takes tens of milliseconds to draw
 // (docs/performance.md, "The app"). A view that changes every frame (an orbit) is drawn straight into the
 // framebuffer, with nothing copied.
@@ -76,8 +77,9 @@ private:
     render::Renderer renderer_;
     render::OffscreenImage image_;
     bool keepImage_ = true;
-    std::optional<DrawnView> lastDrawn_;  // the view of the last draw
-    std::optional<DrawnView> kept_;       // the view image_ holds
+    std::optional<DrawnView> lastDrawn_;                 // the view of the last frame
+    std::optional<DrawnView> kept_;                      // the view image_ holds
+    std::optional<std::pair<int, int>> unkeepableSize_;  // a size the driver could not make image_ at
     std::uint64_t drawnFrames_ = 0;
     std::uint64_t copiedFrames_ = 0;
     render::SceneLayers layers_{render::LineBatch(render::Anchor{}), {}};

@@ -14,11 +14,13 @@ public:
     OffscreenImage(const OffscreenImage&) = delete;
     OffscreenImage& operator=(const OffscreenImage&) = delete;
 
-    // Binds it for drawing at width x height, making it that size first. False, with nothing bound, when the
-    // driver cannot complete such a framebuffer: the caller then draws where it would have.
+    // Binds it for reading and drawing at width x height, making it that size first. False when the driver
+    // cannot make such a framebuffer; the framebuffers bound before are then bound still, so the caller
+    // draws where it would have.
     bool bindForDrawing(int width, int height);
-    // Copies the colour drawn into it to `framebuffer` (0: the window's), the scissor aside, and leaves
-    // `framebuffer` bound for reading and drawing.
+    // Copies the colour drawn into it to `framebuffer` (0: the window's; single-sampled, as a blit from a
+    // single-sampled image into a multisampled one of another format is an error), the scissor aside.
+    // The framebuffers bound before stay bound.
     void copyTo(GLuint framebuffer) const;
 
 private:

@@ -4,7 +4,9 @@
 #include "AppHarness.hpp"
 #include "UiTestScenes.hpp"
 
+#include "gui/Screenshot.hpp"
 #include "gui/ViewportScene.hpp"
+#include "render/OffscreenImage.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,15 +22,22 @@ class KeptView : public ::testing::Test {
 protected:
     // The frame `scene` draws of the app's state, read back.
     snapshot::Image drawn(ViewportScene& scene, int width = kWidth, int height = kHeight) {
-        // Whatever the frame before left is wiped first: a copy that did not happen must show.
+        wipe();
+        scene.draw(harness_.state(), width, height);
+        return view(width, height);
+    }
+    // Whatever the frame before left is wiped first: a copy that did not happen must show.
+    void wipe() {
         const render::GlFunctions& gl = harness_.gl();
         gl.ClearColor(1.0f, 0.0f, 1.0f, 1.0f);
         gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        scene.draw(harness_.state(), width, height);
-        snapshot::Image image = harness_.image();
-        // The buffer is the harness's size; only the corner drawn is the view.
+    }
+    // The buffer is the harness's size; only the corner drawn is the view: the bottom left one, as the
+    // image reads from the top down.
+    snapshot::Image view(int width = kWidth, int height = kHeight) {
+        const snapshot::Image image = harness_.image();
         snapshot::Image corner{width, height, {}};
-        for (int y = 0; y < height; ++y) {
+        for (int y = image.height - height; y < image.height; ++y) {
             const auto row = image.rgba.begin() + 4 * static_cast<std::ptrdiff_t>(y) * image.width;
             corner.rgba.insert(corner.rgba.end(), row, row + 4 * width);
         }
@@ -91,15 +100,99 @@ TEST_F(KeptView, EveryChangeOfTheViewDrawsItAgain) {
     changed("the background");
     state_.scene.selectShape(0);
     changed("a droplet selected");
-    changed("another size", kWidth / 2, kHeight);
+    changed("another width", kWidth / 2, kHeight);
+    changed("another height", kWidth / 2, kHeight / 2);
+    // Back to the whole size: the picture kept at the smaller one must not be copied into it.
+    const snapshot::Image whole = drawn(kept);
+    EXPECT_EQ(whole.rgba, drawn(redrawn).rgba);
+    ++drawnFrames;
+    expectFrames(kept, drawnFrames, copiedFrames);
+}
+
+TEST_F(KeptView, AViewLeftForOneFrameAndComeBackToIsCopiedStill) {
+    ViewportScene kept(harness_.gl());
+    ViewportScene redrawn(harness_.gl(), false);
+    for (int k = 0; k < 3; ++k) drawn(kept);
+    expectFrames(kept, 2, 1);
+    const snapshot::Image first = drawn(redrawn);
+
+    const render::Camera camera = state_.view.camera;
+    state_.view.camera.orbit(0.2, 0.0);
+    EXPECT_NE(drawn(kept).rgba, first.rgba);  // drawn straight: the image still holds the first view
+    expectFrames(kept, 3, 1);
+    state_.view.camera = camera;
+    EXPECT_EQ(drawn(kept).rgba, first.rgba);
+    expectFrames(kept, 3, 2);
+
+    // So is a view a screenshot of another size came between.
+    const snapshot::Image small = renderViewport(harness_.gl(), kept, state_, kWidth / 2, kHeight / 2);
+    EXPECT_EQ(small.rgba, renderViewport(harness_.gl(), redrawn, state_, kWidth / 2, kHeight / 2).rgba);
+    expectFrames(kept, 4, 2);
+    EXPECT_EQ(drawn(kept).rgba, first.rgba);
+    expectFrames(kept, 4, 3);
+}
+
+TEST_F(KeptView, AScreenshotOfTheViewAtItsSizeIsTheViewWhetherCopiedOrNot) {
+    ViewportScene kept(harness_.gl());
+    ViewportScene redrawn(harness_.gl(), false);
+    const snapshot::Image reference = renderViewport(harness_.gl(), redrawn, state_, kWidth, kHeight);
+    EXPECT_EQ(drawn(kept).rgba, drawn(redrawn).rgba);
+    // Its second frame (kept) and a copy, each into the screenshot's own framebuffer, read the right way up.
+    EXPECT_EQ(renderViewport(harness_.gl(), kept, state_, kWidth, kHeight).rgba, reference.rgba);
+    EXPECT_EQ(renderViewport(harness_.gl(), kept, state_, kWidth, kHeight).rgba, reference.rgba);
+    expectFrames(kept, 2, 1);
+}
+
+TEST_F(KeptView, ACopyIgnoresTheScissorAndLeavesItAsItWas) {
+    ViewportScene kept(harness_.gl());
+    const snapshot::Image reference = drawn(kept);
+    drawn(kept);
+    const render::GlFunctions& gl = harness_.gl();
+    wipe();
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(0, 0, 10, 10);
+    kept.draw(state_, kWidth, kHeight);
+    expectFrames(kept, 2, 1);
+    EXPECT_EQ(gl.IsEnabled(GL_SCISSOR_TEST), GL_TRUE);
+    GLint box[4] = {};
+    gl.GetIntegerv(GL_SCISSOR_BOX, box);
+    EXPECT_EQ(box[2], 10);
+    gl.Disable(GL_SCISSOR_TEST);
+    EXPECT_EQ(view().rgba, reference.rgba);
+}
+
+TEST_F(KeptView, AnImageTheDriverCannotMakeLeavesTheFramebufferBoundBefore) {
+    const render::GlFunctions& gl = harness_.gl();
+    render::OffscreenImage target(gl);
+    ASSERT_TRUE(target.bindForDrawing(kWidth, kHeight));
+    GLint before = 0;
+    gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &before);
+    ASSERT_NE(before, 0);
+    GLint largest = 0;
+    gl.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &largest);
+    render::OffscreenImage tooLarge(gl);
+    EXPECT_FALSE(tooLarge.bindForDrawing(largest + 1, 1));
+    GLint draw = 0;
+    GLint read = 0;
+    gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    EXPECT_EQ(draw, before);
+    EXPECT_EQ(read, before);
+    EXPECT_EQ(gl.GetError(), static_cast<GLenum>(GL_NO_ERROR));
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 TEST_F(KeptView, TheAppCopiesItsViewWhileNothingInItChanges) {
     const ViewportScene& view = harness_.app().viewport();
-    harness_.frames(3);  // settled: the view kept
+    state_.view.camera.orbit(0.1, 0.0);
+    harness_.frame();
+    const snapshot::Image drawnStraight = harness_.image();
+    harness_.frame();
+    EXPECT_EQ(harness_.image().rgba, drawnStraight.rgba) << "the frame that keeps the view";
     const std::uint64_t drawnFrames = view.drawnFrames();
     const std::uint64_t copiedFrames = view.copiedFrames();
     harness_.frames(4);
+    EXPECT_EQ(harness_.image().rgba, drawnStraight.rgba) << "a frame that copies it";
     EXPECT_EQ(view.drawnFrames(), drawnFrames);
     EXPECT_EQ(view.copiedFrames(), copiedFrames + 4);
 
