@@ -85,7 +85,8 @@ public:
     std::optional<HaloPass> firstHaloPass(const Point& p, const Direction& d, double length, ShapeId region) const;
 
 private:
-    ShapeId smallestContainer(const Shape& inner, ShapeId innerId) const;
+    // Each shape's parent: the smallest shape it nests inside (nestsInside), or kAmbient.
+    void findContainers();
     // Whether no ray from inside sphere `inner` can meet shape `other`'s surface before its own.
     bool clearOf(const SphereGeometry& inner, ShapeId other) const;
     void findSealedSpheres();

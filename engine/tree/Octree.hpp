@@ -66,6 +66,9 @@ public:
     // Nothing when p is outside the root cell.
     template <class F>
     void forEachShapeAlongPath(const Point& p, F&& f) const;
+    // The index of the leaf cell holding p, where that path ends: points with one leaf have one path. Nothing
+    // when p is outside the root cell.
+    std::optional<std::uint32_t> leafHolding(const Point& p) const;
     // Calls f(a, b) for every two shapes stored on one path from the root to a leaf (some pairs more than
     // once). A shape is stored on the path to every leaf whose cell, grown by margin(), it reaches (a sphere by
     // its ball, any other shape by Shape::overlaps), which is what firstHit relies on; so every two shapes that
@@ -153,6 +156,9 @@ private:
     // Calls f(id) for every shape a frozen cell holds, spheres first.
     template <class F>
     void forEachShapeIn(const Cell& cell, F&& f) const;
+    // Calls f(index) for each cell from the root down to the leaf holding p; nothing when p is outside the root.
+    template <class F>
+    void forEachCellAlongPath(const Point& p, F&& f) const;
     // Depth first from the root; `visit(index, cell, bounds, level)` returns whether to descend.
     template <class Visit>
     void forEachNode(Visit&& visit) const;
@@ -205,12 +211,17 @@ void Octree::visitCells(Visit&& visit) const {
 
 template <class F>
 void Octree::forEachShapeAlongPath(const Point& p, F&& f) const {
+    forEachCellAlongPath(p, [&](std::uint32_t index) { forEachShapeIn(cells_[index], f); });
+}
+
+template <class F>
+void Octree::forEachCellAlongPath(const Point& p, F&& f) const {
     if (!p.allFinite() || !rootBounds_.contains(p)) return;
     std::uint32_t index = 0;
     CellBounds bounds = rootBounds_;
     while (true) {
         const Cell& cell = cells_[index];
-        forEachShapeIn(cell, f);
+        f(index);
         if (cell.isLeaf()) return;
         const Point mid = bounds.center();
         int child = 0;

@@ -1,4 +1,5 @@
-// Point and shape queries: locate (which shape encloses a point) and overlapping (placement checks).
+// Point and shape queries: locate (which shape encloses a point), leafHolding, and overlapping (placement
+// checks).
 #include "tree/Octree.hpp"
 
 #include <algorithm>
@@ -16,6 +17,12 @@ std::optional<ShapeId> Octree::locate(const Point& p) const {
         }
     });
     return innermost;
+}
+
+std::optional<std::uint32_t> Octree::leafHolding(const Point& p) const {
+    std::optional<std::uint32_t> leaf;
+    forEachCellAlongPath(p, [&](std::uint32_t index) { leaf = index; });
+    return leaf;
 }
 
 std::vector<ShapeId> Octree::overlapping(const Shape& shape) const {

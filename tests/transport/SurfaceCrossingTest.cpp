@@ -2,11 +2,13 @@
 
 #include "geometry/Sphere.hpp"
 #include "optics/Fresnel.hpp"
+#include "scene/SceneOverlaps.hpp"
 #include "transport/SurfaceCrossing.hpp"
 
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <map>
 
 namespace dropscope {
 namespace {
@@ -55,6 +57,48 @@ TEST(OpticalScene, ACloudGeneratedInsideAGlassCellHasTheCellAsParent) {
         ASSERT_EQ(optical.parentOf(id), inside ? 1U : OpticalScene::kAmbient) << id;
     }
     EXPECT_GT(nestedInSphere, 0);
+}
+
+// The parents are found a leaf at a time (OpticalScene::findContainers); here against every pair of shapes, in a
+// scene of many small leaves: clouds in two glass cells, in a water sphere inside one, and in an air bubble
+// inside that sphere.
+TEST(OpticalScene, EachParentIsTheSmallestContainerAmongAllShapes) {
+    const Scene scene = parseScene(
+        R"({"dropscope": 1, "ambient": "air",
+            "media": {"air": {"n": 1}, "glass": {"n": 1.5}, "water": {"n": 1.33}, "oil": {"n": 1.47}},
+            "octree": {"max_shapes_per_leaf": 4},
+            "shapes": [{"type": "box", "min": [0, 0, 0], "max": [10, 10, 10], "medium": "glass"},
+                       {"type": "sphere", "center": [5, 5, 5], "radius": 3, "medium": "water"},
+                       {"type": "sphere", "center": [5, 5, 6], "radius": 1.2, "medium": "air"},
+                       {"type": "box", "min": [20, 0, 0], "max": [30, 10, 10], "medium": "glass"},
+                       {"type": "sphere", "center": [25, 5, 5], "radius": 2, "medium": "water"}],
+            "generators": [{"type": "droplet_cloud", "region": {"min": [0.5, 0.5, 0.5], "max": [9.5, 9.5, 9.5]},
+                            "count": 1500, "radius": {"distribution": "uniform", "min": 0.05, "max": 0.2},
+                            "medium": "oil", "seed": 7},
+                           {"type": "droplet_cloud", "region": {"min": [19, -1, -1], "max": [31, 11, 11]},
+                            "count": 1500, "radius": {"distribution": "uniform", "min": 0.05, "max": 0.2},
+                            "medium": "water", "seed": 8}]})",
+        "clouds-in-cells.json");
+    const OpticalScene optical(scene);
+    const Octree& octree = optical.octree();
+    ASSERT_EQ(octree.slotCount(), 3005U);
+    std::map<ShapeId, int> children;
+    for (ShapeId inner = 0; inner < octree.slotCount(); ++inner) {
+        const Shape& shape = *octree.shape(inner);
+        ShapeId expected = OpticalScene::kAmbient;
+        for (ShapeId outer = 0; outer < octree.slotCount(); ++outer) {
+            const Shape& other = *octree.shape(outer);
+            if (outer == inner || other.volume() <= shape.volume() || !nestsInside(shape, other)) continue;
+            if (expected == OpticalScene::kAmbient || other.volume() < octree.shape(expected)->volume())
+                expected = outer;
+        }
+        ASSERT_EQ(optical.parentOf(inner), expected) << "shape " << inner;
+        ++children[expected];
+    }
+    // Every container holds droplets (the bubble some dozens), and some droplets are out in the air.
+    for (const ShapeId container : {ShapeId{0}, ShapeId{1}, ShapeId{2}, ShapeId{3}, ShapeId{4}})
+        EXPECT_GE(children[container], 10) << "shape " << container;
+    EXPECT_GE(children[OpticalScene::kAmbient], 100);
 }
 
 TEST(OpticalScene, RegionAtIsTheInnermostShapeAroundAPoint) {
