@@ -50,45 +50,43 @@ protected:
 
     AppHarness harness_{kCloudScene, kWidth, kHeight};
     AppState& state_ = harness_.state();
+    ViewportScene kept_{harness_.gl()};
+    ViewportScene redrawn_{harness_.gl(), false};  // draws its view in every frame
 };
 
 TEST_F(KeptView, ASecondFrameOfAViewKeepsItAndLaterFramesCopyTheSamePicture) {
-    ViewportScene kept(harness_.gl());
-    ViewportScene redrawn(harness_.gl(), false);
-    const snapshot::Image reference = drawn(redrawn);
-    expectFrames(redrawn, 1, 0);
+    const snapshot::Image reference = drawn(redrawn_);
+    expectFrames(redrawn_, 1, 0);
 
-    EXPECT_EQ(drawn(kept).rgba, reference.rgba) << "the first frame, drawn straight";
-    expectFrames(kept, 1, 0);
-    EXPECT_EQ(drawn(kept).rgba, reference.rgba) << "the second, drawn into the kept image and copied out";
-    expectFrames(kept, 2, 0);
-    for (int k = 0; k < 3; ++k) EXPECT_EQ(drawn(kept).rgba, reference.rgba) << "copied, frame " << k;
-    expectFrames(kept, 2, 3);
-    EXPECT_EQ(drawn(redrawn).rgba, reference.rgba);
-    expectFrames(redrawn, 2, 0);
+    EXPECT_EQ(drawn(kept_).rgba, reference.rgba) << "the first frame, drawn straight";
+    expectFrames(kept_, 1, 0);
+    EXPECT_EQ(drawn(kept_).rgba, reference.rgba) << "the second, drawn into the kept image and copied out";
+    expectFrames(kept_, 2, 0);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(drawn(kept_).rgba, reference.rgba) << "copied, frame " << k;
+    expectFrames(kept_, 2, 3);
+    EXPECT_EQ(drawn(redrawn_).rgba, reference.rgba);
+    expectFrames(redrawn_, 2, 0);
 }
 
 TEST_F(KeptView, EveryChangeOfTheViewDrawsItAgain) {
-    ViewportScene kept(harness_.gl());
-    ViewportScene redrawn(harness_.gl(), false);
-    for (int k = 0; k < 3; ++k) drawn(kept);
-    expectFrames(kept, 2, 1);
-    const snapshot::Image before = drawn(kept);
-    expectFrames(kept, 2, 2);
+    for (int k = 0; k < 3; ++k) drawn(kept_);
+    expectFrames(kept_, 2, 1);
+    const snapshot::Image before = drawn(kept_);
+    expectFrames(kept_, 2, 2);
 
     // After each change the frame must agree with the view drawn afresh (and differ from the picture kept
     // before, but for the turn back), and the frames after it keep and copy it again.
     std::uint64_t drawnFrames = 2;
     std::uint64_t copiedFrames = 2;
     const auto changed = [&](const char* what, int width = kWidth, int height = kHeight, bool differs = true) {
-        const snapshot::Image after = drawn(kept, width, height);
+        const snapshot::Image after = drawn(kept_, width, height);
         EXPECT_EQ(after.rgba != before.rgba, differs) << what;
-        EXPECT_EQ(after.rgba, drawn(redrawn, width, height).rgba) << what;
-        EXPECT_EQ(drawn(kept, width, height).rgba, after.rgba) << what << ", its second frame";
-        EXPECT_EQ(drawn(kept, width, height).rgba, after.rgba) << what << ", copied";
+        EXPECT_EQ(after.rgba, drawn(redrawn_, width, height).rgba) << what;
+        EXPECT_EQ(drawn(kept_, width, height).rgba, after.rgba) << what << ", its second frame";
+        EXPECT_EQ(drawn(kept_, width, height).rgba, after.rgba) << what << ", copied";
         drawnFrames += 2;
         copiedFrames += 1;
-        expectFrames(kept, drawnFrames, copiedFrames);
+        expectFrames(kept_, drawnFrames, copiedFrames);
     };
 
     const render::Camera camera = state_.view.camera;
@@ -103,56 +101,51 @@ TEST_F(KeptView, EveryChangeOfTheViewDrawsItAgain) {
     changed("another width", kWidth / 2, kHeight);
     changed("another height", kWidth / 2, kHeight / 2);
     // Back to the whole size: the picture kept at the smaller one must not be copied into it.
-    const snapshot::Image whole = drawn(kept);
-    EXPECT_EQ(whole.rgba, drawn(redrawn).rgba);
+    const snapshot::Image whole = drawn(kept_);
+    EXPECT_EQ(whole.rgba, drawn(redrawn_).rgba);
     ++drawnFrames;
-    expectFrames(kept, drawnFrames, copiedFrames);
+    expectFrames(kept_, drawnFrames, copiedFrames);
 }
 
 TEST_F(KeptView, AViewLeftForOneFrameAndComeBackToIsCopiedStill) {
-    ViewportScene kept(harness_.gl());
-    ViewportScene redrawn(harness_.gl(), false);
-    for (int k = 0; k < 3; ++k) drawn(kept);
-    expectFrames(kept, 2, 1);
-    const snapshot::Image first = drawn(redrawn);
+    for (int k = 0; k < 3; ++k) drawn(kept_);
+    expectFrames(kept_, 2, 1);
+    const snapshot::Image first = drawn(redrawn_);
 
     const render::Camera camera = state_.view.camera;
     state_.view.camera.orbit(0.2, 0.0);
-    EXPECT_NE(drawn(kept).rgba, first.rgba);  // drawn straight: the image still holds the first view
-    expectFrames(kept, 3, 1);
+    EXPECT_NE(drawn(kept_).rgba, first.rgba);  // drawn straight: the image still holds the first view
+    expectFrames(kept_, 3, 1);
     state_.view.camera = camera;
-    EXPECT_EQ(drawn(kept).rgba, first.rgba);
-    expectFrames(kept, 3, 2);
+    EXPECT_EQ(drawn(kept_).rgba, first.rgba);
+    expectFrames(kept_, 3, 2);
 
     // So is a view a screenshot of another size came between.
-    const snapshot::Image small = renderViewport(harness_.gl(), kept, state_, kWidth / 2, kHeight / 2);
-    EXPECT_EQ(small.rgba, renderViewport(harness_.gl(), redrawn, state_, kWidth / 2, kHeight / 2).rgba);
-    expectFrames(kept, 4, 2);
-    EXPECT_EQ(drawn(kept).rgba, first.rgba);
-    expectFrames(kept, 4, 3);
+    const snapshot::Image small = renderViewport(harness_.gl(), kept_, state_, kWidth / 2, kHeight / 2);
+    EXPECT_EQ(small.rgba, renderViewport(harness_.gl(), redrawn_, state_, kWidth / 2, kHeight / 2).rgba);
+    expectFrames(kept_, 4, 2);
+    EXPECT_EQ(drawn(kept_).rgba, first.rgba);
+    expectFrames(kept_, 4, 3);
 }
 
 TEST_F(KeptView, AScreenshotOfTheViewAtItsSizeIsTheViewWhetherCopiedOrNot) {
-    ViewportScene kept(harness_.gl());
-    ViewportScene redrawn(harness_.gl(), false);
-    const snapshot::Image reference = renderViewport(harness_.gl(), redrawn, state_, kWidth, kHeight);
-    EXPECT_EQ(drawn(kept).rgba, drawn(redrawn).rgba);
-    // Its second frame (kept) and a copy, each into the screenshot's own framebuffer, read the right way up.
-    EXPECT_EQ(renderViewport(harness_.gl(), kept, state_, kWidth, kHeight).rgba, reference.rgba);
-    EXPECT_EQ(renderViewport(harness_.gl(), kept, state_, kWidth, kHeight).rgba, reference.rgba);
-    expectFrames(kept, 2, 1);
+    const snapshot::Image reference = renderViewport(harness_.gl(), redrawn_, state_, kWidth, kHeight);
+    EXPECT_EQ(drawn(kept_).rgba, drawn(redrawn_).rgba);
+    // Its second frame (kept_) and a copy, each into the screenshot's own framebuffer, read the right way up.
+    EXPECT_EQ(renderViewport(harness_.gl(), kept_, state_, kWidth, kHeight).rgba, reference.rgba);
+    EXPECT_EQ(renderViewport(harness_.gl(), kept_, state_, kWidth, kHeight).rgba, reference.rgba);
+    expectFrames(kept_, 2, 1);
 }
 
 TEST_F(KeptView, ACopyIgnoresTheScissorAndLeavesItAsItWas) {
-    ViewportScene kept(harness_.gl());
-    const snapshot::Image reference = drawn(kept);
-    drawn(kept);
+    const snapshot::Image reference = drawn(kept_);
+    drawn(kept_);
     const render::GlFunctions& gl = harness_.gl();
     wipe();
     gl.Enable(GL_SCISSOR_TEST);
     gl.Scissor(0, 0, 10, 10);
-    kept.draw(state_, kWidth, kHeight);
-    expectFrames(kept, 2, 1);
+    kept_.draw(state_, kWidth, kHeight);
+    expectFrames(kept_, 2, 1);
     EXPECT_EQ(gl.IsEnabled(GL_SCISSOR_TEST), GL_TRUE);
     GLint box[4] = {};
     gl.GetIntegerv(GL_SCISSOR_BOX, box);
