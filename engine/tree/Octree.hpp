@@ -67,7 +67,7 @@ public:
     template <class F>
     void forEachShapeAlongPath(const Point& p, F&& f) const;
     // The index of the leaf cell holding p, where that path ends: points with one leaf have one path. Nothing
-    // when p is outside the root cell.
+    // when p is outside the root cell. Valid until the next insert, remove or rebuild.
     std::optional<std::uint32_t> leafHolding(const Point& p) const;
     // Calls f(a, b) for every two shapes stored on one path from the root to a leaf (some pairs more than
     // once). A shape is stored on the path to every leaf whose cell, grown by margin(), it reaches (a sphere by

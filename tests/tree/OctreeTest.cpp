@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 
 namespace dropscope {
 namespace {
@@ -289,6 +291,30 @@ TEST(Octree, LocateFindsTheInnermostEnclosingShape) {
         }
         EXPECT_EQ(tree.locate(p), expected) << "point " << i;
     }
+}
+
+// OpticalScene::findContainers walks one point's path for every shape centred in its leaf.
+TEST(Octree, PointsInOneLeafHaveOnePath) {
+    Rng rng(19);
+    const Octree tree(randomScene(rng, 800, 4.0), OctreeSettings{8, 4});
+    std::map<std::uint32_t, std::vector<ShapeId>> pathOfLeaf;
+    int shared = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Point p = testing::randomPoint(rng, 4.0);
+        const std::optional<std::uint32_t> leaf = tree.leafHolding(p);
+        ASSERT_TRUE(leaf) << "point " << i;
+        std::vector<ShapeId> path;
+        tree.forEachShapeAlongPath(p, [&](ShapeId id) { path.push_back(id); });
+        const auto [known, fresh] = pathOfLeaf.try_emplace(*leaf, path);
+        if (!fresh) {
+            ++shared;
+            ASSERT_EQ(path, known->second) << "point " << i << ", leaf " << *leaf;
+        }
+    }
+    EXPECT_GE(pathOfLeaf.size(), 200u);
+    EXPECT_GE(shared, 10000);
+    EXPECT_FALSE(tree.leafHolding(Point(1e3, 0, 0)));
+    EXPECT_FALSE(tree.leafHolding(Point(std::numeric_limits<double>::quiet_NaN(), 0, 0)));
 }
 
 TEST(Octree, OverlappingEqualsBruteForce) {
