@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -75,6 +76,10 @@ public:
     // reach one such cell are among the pairs.
     template <class F>
     void forEachPairOnAPath(F&& f) const;
+    // The same pairs, as f(record(a), record(b)): each shape's record is made once per cell that stores it and
+    // kept while the cells below are visited, so f reads what it needs of a shape from the path, not by id.
+    template <class Record, class F>
+    void forEachPairOnAPath(Record&& record, F&& f) const;
     // Ids of the stored shapes that overlap `shape` (Shape::overlaps), ascending.
     std::vector<ShapeId> overlapping(const Shape& shape) const;
 
@@ -233,13 +238,19 @@ void Octree::forEachCellAlongPath(const Point& p, F&& f) const {
 
 template <class F>
 void Octree::forEachPairOnAPath(F&& f) const {
-    std::vector<ShapeId> path;  // the shapes of the cells from the root down to this one
+    forEachPairOnAPath([](ShapeId id) { return id; }, f);
+}
+
+template <class Record, class F>
+void Octree::forEachPairOnAPath(Record&& record, F&& f) const {
+    std::vector<std::invoke_result_t<Record&, ShapeId>> path;  // the shapes of the cells from the root down
     const auto visit = [&](const auto& self, std::uint32_t index) -> void {
         const Cell& cell = cells_[index];
         const std::size_t above = path.size();
         forEachShapeIn(cell, [&](ShapeId id) {
-            for (const ShapeId other : path) f(id, other);
-            path.push_back(id);
+            auto made = record(id);
+            for (const auto& other : path) f(made, other);
+            path.push_back(std::move(made));
         });
         if (!cell.isLeaf()) {
             for (std::uint32_t child = 0; child < 8; ++child) self(self, cell.firstChild + child);

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace dropscope {
 namespace {
 
@@ -36,8 +38,8 @@ Scene sealingCases() {
     return scene;
 }
 
-TEST(SealedDroplets, OnlySpheresNoOtherSurfaceComesNearAreSealed) {
-    const OpticalScene optical(sealingCases());
+// Each shape of sealingCases sealed or not, as its comment says.
+void expectTheSealingCases(const OpticalScene& optical) {
     const bool expected[] = {
         true,   // 0: alone
         false,  // 1: holds sphere 2
@@ -56,6 +58,19 @@ TEST(SealedDroplets, OnlySpheresNoOtherSurfaceComesNearAreSealed) {
     ASSERT_EQ(optical.octree().slotCount(), std::size(expected));
     for (ShapeId id = 0; id < std::size(expected); ++id) EXPECT_EQ(optical.sealed(id), expected[id]) << "shape " << id;
     EXPECT_FALSE(optical.sealed(OpticalScene::kAmbient));
+}
+
+// The pairs checked are those on one octree path (Octree::forEachPairOnAPath, each shape's geometry carried on
+// the path): the same cases come out the same in an octree of one cell (every pair), of the default leaves, and
+// of leaves of one shape.
+TEST(SealedDroplets, OnlySpheresNoOtherSurfaceComesNearAreSealed) {
+    for (const OctreeSettings settings : {OctreeSettings{}, OctreeSettings{0, 64}, OctreeSettings{10, 1}}) {
+        SCOPED_TRACE("max depth " + std::to_string(settings.maxDepth) + ", leaves of " +
+                     std::to_string(settings.maxShapesPerLeaf));
+        Scene scene = sealingCases();
+        scene.octree = settings;
+        expectTheSealingCases(OpticalScene(scene));
+    }
 }
 
 // Rays from every sphere's centre region, from its surface heading in and out, and from each box and ellipsoid,
@@ -143,6 +158,45 @@ TEST(SealedDroplets, TheNextSurfaceIsTheOctreesFirstHitInADenseCloudInACell) {
     int fromSealed = 0;
     expectNextSurfaceIsFirstHit(optical, 12, 20, fromSealed);
     EXPECT_GT(fromSealed, 10000);
+}
+
+// An octree of one cell pairs every shape with every other, one of small leaves only those stored on one path;
+// a shape whose bounds come within the margins of a sphere's (a box or an ellipsoid, checked by its bounds) may
+// not share a path with it, so every pair seals no more spheres than the small leaves do, and in a cloud in a
+// cell nearly the same ones (2,995 of 3,004 here; one more with the small leaves).
+TEST(SealedDroplets, EveryPairSealsNoMoreThanThePairsOnAPath) {
+    const auto cloud = [](const std::string& octree) {
+        return parseScene(
+            R"({"dropscope": 1, "ambient": "air",
+                "media": {"air": {"n": 1}, "glass": {"n": 1.5}, "water": {"n": 1.33}},
+                "octree": )" +
+                octree + R"(,
+                "shapes": [{"type": "box", "min": [0, 0, 0], "max": [4, 4, 4], "medium": "glass"},
+                           {"type": "sphere", "center": [2, 2, 2], "radius": 0.3, "medium": "water"},
+                           {"type": "sphere", "center": [2.1, 2, 2], "radius": 0.1, "medium": "air"},
+                           {"type": "ellipsoid", "center": [3, 1, 1], "semi_axes": [0.5, 0.2, 0.2],
+                            "medium": "glass"}],
+                "generators": [{"type": "droplet_cloud", "region": {"min": [-1, -1, -1], "max": [5, 5, 5]},
+                                "count": 3000, "radius": {"distribution": "uniform", "min": 0.02, "max": 0.12},
+                                "medium": "water", "seed": 6}]})",
+            "cloud.json");
+    };
+    const OpticalScene everyPair(cloud(R"({"max_depth": 0})"));
+    const OpticalScene smallLeaves(cloud(R"({"max_shapes_per_leaf": 4})"));
+    ASSERT_EQ(smallLeaves.octree().slotCount(), everyPair.octree().slotCount());
+    int sealed = 0;
+    int onlyOnAPath = 0;
+    for (ShapeId id = 0; id < everyPair.octree().slotCount(); ++id) {
+        if (everyPair.sealed(id)) {
+            ASSERT_TRUE(smallLeaves.sealed(id)) << "shape " << id;
+            ++sealed;
+        } else if (smallLeaves.sealed(id)) {
+            ++onlyOnAPath;
+        }
+    }
+    EXPECT_GT(sealed, 1000);
+    EXPECT_GT(static_cast<int>(everyPair.octree().slotCount()) - sealed, 3);  // the box, ellipsoid, bubble's sphere
+    EXPECT_LT(onlyOnAPath, 10);
 }
 
 // Packed spheres that all have one medium, parent and sealing share one record (OpticalScene::packedSpheresAlike):
