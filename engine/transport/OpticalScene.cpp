@@ -221,13 +221,11 @@ void OpticalScene::opticsAt(double wavelengthNm, std::vector<MediumOptics>& opti
 // The candidates are tried in the path's order, so ties of volume go to the same shape either way.
 void OpticalScene::findContainers() {
     std::vector<std::pair<std::uint32_t, ShapeId>> byLeaf;  // (leaf holding the centre, shape)
-    std::vector<Point> centres(octree_.slotCount());
     byLeaf.reserve(octree_.shapeCount());
     for (ShapeId id = 0; id < octree_.slotCount(); ++id) {
         const Shape* shape = octree_.shape(id);
         if (!shape) continue;
-        centres[id] = shape->bounds().center();
-        if (const auto leaf = octree_.leafHolding(centres[id])) byLeaf.emplace_back(*leaf, id);
+        if (const auto leaf = octree_.leafHolding(shape->bounds().center())) byLeaf.emplace_back(*leaf, id);
     }
     std::sort(byLeaf.begin(), byLeaf.end());
     struct Candidate {
@@ -240,7 +238,8 @@ void OpticalScene::findContainers() {
         std::size_t end = first;
         while (end < byLeaf.size() && byLeaf[end].first == byLeaf[first].first) ++end;
         candidates.clear();
-        octree_.forEachShapeAlongPath(centres[byLeaf[first].second], [&](ShapeId other) {
+        const Point centre = octree_.shape(byLeaf[first].second)->bounds().center();  // any of the group's
+        octree_.forEachShapeAlongPath(centre, [&](ShapeId other) {
             const Shape* shape = octree_.shape(other);
             candidates.push_back({other, shape->volume(), shape});
         });
