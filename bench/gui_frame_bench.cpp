@@ -12,7 +12,8 @@
 //            view without ImGui and picking.
 // Then, in blocks, the 3D view with only the shapes and with only the lines, and the shapes alone with the
 // spheres' points drawn by the sphere programs and by the general ones (RenderOptions::sphereProgram), in
-// alternate blocks.
+// alternate blocks; and the app orbiting and the 3D view alone with the hidden chords left out (as the app
+// draws) and drawn (RenderOptions::skipHiddenChords), in alternate blocks.
 // docs/performance.md ("The app") has the figures.
 //
 // Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--point-pixels 6] [--png FILE]
@@ -132,9 +133,11 @@ int run(const Options& options) {
         app.frame(input);
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    std::printf("traced %zu paths (%zu line vertices drawn) in %.2f s of frames\n",
-                app.state().traces.trace->outcome.result.paths.size(), app.viewport().layers().lines.vertices().size(),
-                tracing.seconds());
+    std::printf(
+        "traced %zu paths (%zu line vertices, and %zu of chords drawn only when they can show) in %.2f s "
+        "of frames\n",
+        app.state().traces.trace->outcome.result.paths.size(), app.viewport().layers().lines.vertices().size(),
+        app.viewport().layers().chords.vertices().size(), tracing.seconds());
 
     gui::ViewportScene reference(context.gl(), false);  // draws its view in every frame
     reference.draw(app.state(), kWidth, kHeight);       // uploads the same layers once, then only draws
@@ -171,12 +174,14 @@ int run(const Options& options) {
         }
     }
     // What the 3D view's time is made of: each layer alone (a block of frames each, after a rebuild).
-    const auto layerAlone = [&](bool shapes, bool lines, bool sphereProgram = true, int frames = 0) {
+    const auto layerAlone = [&](bool shapes, bool lines, bool sphereProgram = true, int frames = 0,
+                                bool skipHiddenChords = true) {
         gui::AppState& state = app.state();
         const render::RenderOptions kept = state.view.layers.render;
         state.view.layers.render.shapes = shapes;
         state.view.layers.render.lines = lines;
         state.view.layers.render.sphereProgram = sphereProgram;
+        state.view.layers.render.skipHiddenChords = skipHiddenChords;
         reference.draw(state, kWidth, kHeight);
         Series series;
         for (int k = 0; k < (frames > 0 ? frames : options.frames); ++k) {
@@ -196,6 +201,29 @@ int run(const Options& options) {
         const int frames = std::max(1, options.frames / 4);
         Series& into = sphereProgram ? shapesSphereProgram : shapesGeneral;
         const Series block = layerAlone(true, false, sphereProgram, frames);
+        into.ms.insert(into.ms.end(), block.ms.begin(), block.ms.end());
+    }
+    // The peer of leaving the hidden chords out: drawing them, for the app orbiting and for the 3D view alone,
+    // in alternate blocks (each after one untimed frame that rebuilds the layers).
+    const auto orbitBlock = [&](bool skipHiddenChords, int frames, Series& into) {
+        gui::AppState& state = app.state();
+        state.view.layers.render.skipHiddenChords = skipHiddenChords;
+        app.frame(input);
+        for (int k = 0; k < frames; ++k) {
+            state.view.camera.orbit(kOrbitStep, 0.0);
+            Stopwatch watch;
+            app.frame(input);
+            context.gl().Finish();
+            into.ms.push_back(1e3 * watch.seconds());
+        }
+        state.view.layers.render.skipHiddenChords = true;
+    };
+    Series orbitSkipping, orbitChords, viewSkipping, viewChords;
+    for (const bool skip : {true, false, false, true}) {
+        const int frames = std::max(1, options.frames / 4);
+        orbitBlock(skip, frames, skip ? orbitSkipping : orbitChords);
+        const Series block = layerAlone(true, true, true, frames, skip);
+        Series& into = skip ? viewSkipping : viewChords;
         into.ms.insert(into.ms.end(), block.ms.begin(), block.ms.end());
     }
     const double reference3d = alone.median();
@@ -219,6 +247,14 @@ int run(const Options& options) {
                 shapesSphereProgram.median() / reference3d);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "  shapes alone, general programs (alternated)", shapesGeneral.median(),
                 shapesGeneral.minimum(), shapesGeneral.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, orbiting, hidden chords left out (alt.)", orbitSkipping.median(),
+                orbitSkipping.minimum(), orbitSkipping.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, orbiting, hidden chords drawn (alt.)", orbitChords.median(),
+                orbitChords.minimum(), orbitChords.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "3D view alone, hidden chords left out (alt.)", viewSkipping.median(),
+                viewSkipping.minimum(), viewSkipping.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "3D view alone, hidden chords drawn (alt.)", viewChords.median(),
+                viewChords.minimum(), viewChords.median() / reference3d);
     std::printf("steady (kept view copied): %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steadyCopied.median(),
                 1e3 / orbit.median());
     // The ray tree (R) is traced on the UI thread from an optical scene built from the document.

@@ -31,7 +31,7 @@ Colour segmentColour(const Event& start, PathColouring colouring) {
 }  // namespace
 
 void addPhotonPaths(LineBatch& lines, const std::vector<PhotonPath>& paths, double escapeLength,
-                    PathColouring colouring) {
+                    PathColouring colouring, const ChordSplit* chords) {
     for (const PhotonPath& path : paths) {
         if (path.events.empty()) continue;
         const bool byWavelength = colouring == PathColouring::Wavelength;
@@ -40,7 +40,10 @@ void addPhotonPaths(LineBatch& lines, const std::vector<PhotonPath>& paths, doub
             return byWavelength ? pathColour : segmentColour(start, colouring);
         };
         for (std::size_t k = 0; k + 1 < path.events.size(); ++k) {
-            lines.add(path.events[k].position, path.events[k + 1].position, colourFrom(path.events[k]));
+            const Event& from = path.events[k];
+            const Event& to = path.events[k + 1];
+            LineBatch& into = chords && isChord(from, to, chords->octree) ? chords->batch : lines;
+            into.add(from.position, to.position, colourFrom(from));
         }
         const Event& last = path.events.back();
         if (last.type == EventType::Escape) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render/Chords.hpp"
 #include "render/DrawData.hpp"
 #include "run/TraceRun.hpp"
 #include "transport/RayTree.hpp"
@@ -17,9 +18,10 @@ enum class PathColouring {
     Wavelength,  // the colour of the photon's wavelength (displayColourOfWavelength, docs/spectra.md "Colour")
 };
 
-// Photon paths as polylines; an escape goes on for `escapeLength` along its direction.
+// Photon paths as polylines; an escape goes on for `escapeLength` along its direction. With `chords`, the
+// segments that are chords of a sphere or ellipsoid (isChord) go to its batch instead.
 void addPhotonPaths(LineBatch& lines, const std::vector<PhotonPath>& paths, double escapeLength,
-                    PathColouring colouring = PathColouring::Weight);
+                    PathColouring colouring = PathColouring::Weight, const ChordSplit* chords = nullptr);
 
 // One small sphere of `radius` at every event of the paths, coloured by event type (eventColour).
 void addEventMarkers(std::vector<ShapeInstance>& markers, const std::vector<PhotonPath>& paths, double radius,

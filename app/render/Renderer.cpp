@@ -308,7 +308,23 @@ void Renderer::setShapes(const ShapeInstances& instances) {
     meshes_ = std::move(kept);  // the buffers of geometries no longer drawn are deleted here
 }
 
-void Renderer::setLines(const LineBatch& lines) { lines_->upload(lines.vertices()); }
+void Renderer::setLines(const LineBatch& lines) {
+    lines_->upload(lines.vertices());
+    chordsFrom_ = lines_->count;
+}
+
+void Renderer::setLines(const LineBatch& lines, const LineBatch& chords) {
+    if (chords.empty()) {
+        setLines(lines);
+        return;
+    }
+    std::vector<LineVertex> vertices;
+    vertices.reserve(lines.vertices().size() + chords.vertices().size());
+    vertices.insert(vertices.end(), lines.vertices().begin(), lines.vertices().end());
+    vertices.insert(vertices.end(), chords.vertices().begin(), chords.vertices().end());
+    lines_->upload(vertices);
+    chordsFrom_ = static_cast<GLsizei>(lines.vertices().size());
+}
 
 void Renderer::setSurfaces(const TriangleBatch& surfaces) { surfaces_->upload(surfaces.vertices()); }
 
@@ -421,6 +437,12 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
     gl_.Disable(GL_PROGRAM_POINT_SIZE);
 }
 
+bool Renderer::roundedWithin(const glm::dvec3& eye, double reach) const {
+    return std::any_of(chunks_.begin(), chunks_.end(), [&](const RoundedChunk& chunk) {
+        return glm::length(chunk.centre - eye) - chunk.radius <= reach;
+    });
+}
+
 void Renderer::drawMeshes(const FrameUniforms& frame, float opacity) {
     for (const auto& mesh : meshes_) drawShapes(*mesh.second, *box_, frame, opacity);
 }
@@ -457,11 +479,15 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     if (options.shapes && !options.translucent) drawRounded(frame, 1.0f, options.pointPixels, options.sphereProgram);
     if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, frame, 1.0f);
     if (options.shapes && !options.translucent) drawMeshes(frame, 1.0f);
-    if (options.lines && lines_->count > 0) {
+    // The near plane's corners are the farthest of its points from the eye: 1 / cos of the angle off the axis.
+    const double nearReach = 1.01 * local.nearPlane * std::sqrt(1.0 + cornerTan2);
+    const bool chordsHidden = options.skipHiddenChords && options.shapes && !options.translucent &&
+                              chordsFrom_ < lines_->count && !roundedWithin(local.eye, nearReach);
+    if (const GLsizei lineVertices = chordsHidden ? chordsFrom_ : lines_->count; options.lines && lineVertices > 0) {
         line_->use();
         gl_.UniformMatrix4fv(line_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
         gl_.BindVertexArray(lines_->vertexArray);
-        gl_.DrawArrays(GL_LINES, 0, lines_->count);
+        gl_.DrawArrays(GL_LINES, 0, lineVertices);
     }
     if (options.lines && surfaces_->count > 0) {
         line_->use();

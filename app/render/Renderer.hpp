@@ -36,6 +36,10 @@ struct RenderOptions {
     // picture, less vertex work: docs/rendering.md, "Spheres' points"); false draws them as ellipsoids are,
     // for comparison.
     bool sphereProgram = true;
+    // The chords handed to setLines are left out while they cannot show: shapes drawn opaque, no sphere's
+    // or ellipsoid's chunk reaching the eye or the near plane (the same picture, fewer segments for the
+    // driver: docs/rendering.md, "Chords"). false draws them always, for comparison.
+    bool skipHiddenChords = true;
     bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid) and the surfaces
     Colour background{0.08f, 0.09f, 0.11f, 1.0f};
 
@@ -60,6 +64,9 @@ public:
     // Where uploadScene keeps the mesh geometries between uploads (buildShapeInstances).
     MeshCache& meshCache() { return *meshCache_; }
     void setLines(const LineBatch& lines);
+    // `chords` (SceneLayers::chords) after `lines`, in one buffer: a frame draws them only when they can
+    // show (RenderOptions::skipHiddenChords).
+    void setLines(const LineBatch& lines, const LineBatch& chords);
     // Opaque flat-coloured faces (detector images), drawn after the lines: a line lying on a face wins.
     void setSurfaces(const TriangleBatch& surfaces);
     // Small spheres (event markers): instances of the impostor, drawn with the shapes, always opaque.
@@ -96,6 +103,9 @@ private:
     void drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity);
     void drawRounded(const FrameUniforms& frame, float opacity, float pointPixels, bool sphereProgram);
     void drawMeshes(const FrameUniforms& frame, float opacity);
+    // Whether a run of spheres and ellipsoids comes within `reach` of the eye: the eye may be inside one of
+    // them, or the near plane cut one open.
+    bool roundedWithin(const glm::dvec3& eye, double reach) const;
 
     const GlFunctions& gl_;
     Anchor anchor_;
@@ -113,6 +123,7 @@ private:
     std::unique_ptr<Mesh> boxes_;
     std::unique_ptr<Mesh> markers_;
     std::unique_ptr<Mesh> lines_;
+    GLsizei chordsFrom_ = 0;  // lines_'s vertices from here on are chords
     std::unique_ptr<Mesh> surfaces_;
     std::unique_ptr<MeshCache> meshCache_;
     // One per geometry, in the order the shapes list them (a fixed drawing order, for determinism).

@@ -34,9 +34,11 @@ void addSliced(LineBatch& lines, const std::optional<SlicePlane>& slice, const A
 }  // namespace
 
 SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& options, const Anchor& anchor) {
-    SceneLayers layers{LineBatch(anchor), {}, TriangleBatch(anchor)};
+    SceneLayers layers{LineBatch(anchor), {}, TriangleBatch(anchor), LineBatch(anchor)};
     LineBatch& lines = layers.lines;
     const std::optional<SlicePlane>& slice = options.slice;
+    const ChordSplit split{inputs.octree, layers.chords};
+    const ChordSplit* chords = slice ? nullptr : &split;
     const double size = inputs.bounds.diagonal().norm();
     if (const Event* event = inputs.currentEvent; event && event->polarisation) {
         addSliced(lines, slice, anchor, [&](LineBatch& batch) {
@@ -48,12 +50,12 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
     }
     if (options.rayTree && inputs.rayTree) {
         addSliced(lines, slice, anchor,
-                  [&](LineBatch& batch) { addRayTree(batch, *inputs.rayTree, kEscapeLength * size); });
+                  [&](LineBatch& batch) { addRayTree(batch, *inputs.rayTree, kEscapeLength * size, chords); });
         if (options.markers) addEventMarkers(layers.markers, *inputs.rayTree, kMarkerRadius * size, anchor);
     }
     if (options.paths && inputs.paths) {
         addSliced(lines, slice, anchor, [&](LineBatch& batch) {
-            addPhotonPaths(batch, *inputs.paths, kEscapeLength * size, options.pathColouring);
+            addPhotonPaths(batch, *inputs.paths, kEscapeLength * size, options.pathColouring, chords);
         });
         if (options.markers) addEventMarkers(layers.markers, *inputs.paths, kMarkerRadius * size, anchor);
     }
@@ -84,7 +86,7 @@ void uploadScene(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& 
     ShapeInstances instances = buildShapeInstances(shapes, renderer.anchor(), options.selected, &renderer.meshCache());
     if (options.slice) instances = keptShapes(instances, shapes, *options.slice);
     renderer.setShapes(instances);
-    renderer.setLines(layers.lines);
+    renderer.setLines(layers.lines, layers.chords);
     renderer.setSurfaces(layers.surfaces);
     renderer.setMarkers(layers.markers);
 }

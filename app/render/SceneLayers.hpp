@@ -68,6 +68,9 @@ struct SceneLayers {
     LineBatch lines;
     std::vector<ShapeInstance> markers;
     TriangleBatch surfaces{Anchor{}};  // detector images and fills
+    // The paths' and the ray tree's chords of spheres and ellipsoids (Chords.hpp), drawn only when they can
+    // show. Without a slice plane only: a shape beyond the plane is left out, and its chord may show.
+    LineBatch chords{Anchor{}};
 };
 
 // The bounds of the shapes (null slots skipped); the cube [-1, 1]^3 for a scene with none.

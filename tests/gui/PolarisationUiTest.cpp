@@ -168,20 +168,29 @@ TEST(PolarisationUi, ColouringByDolpChangesThePathColours) {
     fire(harness);
     const std::vector<PhotonPath>& paths = shownTrace(harness).paths;
     const render::Anchor anchor{};  // the sphere's centre, the origin
+    // The colours of the segments outside the sphere, then of its chords (kept apart: render/Chords.hpp).
     const auto coloured = [&](render::PathColouring colouring) {
         render::LineBatch lines(anchor);
-        render::addPhotonPaths(lines, paths, 1.0, colouring);
-        return coloursOf(lines, lines.vertices().size());
+        render::LineBatch chords(anchor);
+        const render::ChordSplit split{harness.state().scene.document().octree(), chords};
+        render::addPhotonPaths(lines, paths, 1.0, colouring, &split);
+        return std::pair{coloursOf(lines, lines.vertices().size()), coloursOf(chords, chords.vertices().size())};
     };
-    const std::vector<render::Colour> byWeight = coloured(render::PathColouring::Weight);
-    const std::vector<render::Colour> byDolp = coloured(render::PathColouring::Dolp);
+    const auto drawn = [&](std::size_t lineVertices) {
+        const render::SceneLayers& layers = harness.app().viewport().layers();
+        return std::pair{coloursOf(layers.lines, lineVertices),
+                         coloursOf(layers.chords, layers.chords.vertices().size())};
+    };
+    const auto byWeight = coloured(render::PathColouring::Weight);
+    const auto byDolp = coloured(render::PathColouring::Dolp);
     ASSERT_NE(byWeight, byDolp);
+    ASSERT_FALSE(byWeight.second.empty());
     // Nothing else is drawn before the paths: no event is selected and there is no ray tree.
-    EXPECT_EQ(coloursOf(harness.app().viewport().layers().lines, byWeight.size()), byWeight);
+    EXPECT_EQ(drawn(byWeight.first.size()), byWeight);
 
     ASSERT_TRUE(harness.choose("colour", "DoLP"));
     EXPECT_EQ(harness.state().view.layers.pathColouring, render::PathColouring::Dolp);
-    EXPECT_EQ(coloursOf(harness.app().viewport().layers().lines, byDolp.size()), byDolp);
+    EXPECT_EQ(drawn(byDolp.first.size()), byDolp);
 }
 
 TEST(PolarisationUi, TheEventTableShowsEachEventsStokesVector) {

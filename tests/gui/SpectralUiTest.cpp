@@ -164,21 +164,28 @@ TEST(SpectralUi, ColouringByWavelengthGivesEachPathItsWavelengthsColour) {
     ASSERT_GT(paths.size(), 1u);
     EXPECT_NE(paths[0].wavelengthNm, paths[1].wavelengthNm) << "drawn from the sun's spectrum";
     const render::Anchor anchor{};
+    const auto colours = [](const render::LineBatch& batch, std::size_t count) {
+        std::vector<render::Colour> result;
+        for (std::size_t v = 0; v < count && v < batch.vertices().size(); ++v)
+            result.push_back(batch.vertices()[v].colour);
+        return result;
+    };
+    // The colours of the segments outside the droplets, then of their chords (kept apart: render/Chords.hpp).
     const auto coloured = [&](render::PathColouring colouring) {
         render::LineBatch lines(anchor);
-        render::addPhotonPaths(lines, paths, 1.0, colouring);
-        std::vector<render::Colour> colours;
-        for (const auto& vertex : lines.vertices()) colours.push_back(vertex.colour);
-        return colours;
+        render::LineBatch chords(anchor);
+        const render::ChordSplit split{harness.state().scene.document().octree(), chords};
+        render::addPhotonPaths(lines, paths, 1.0, colouring, &split);
+        return std::pair{colours(lines, lines.vertices().size()), colours(chords, chords.vertices().size())};
     };
-    const std::vector<render::Colour> byWavelength = coloured(render::PathColouring::Wavelength);
+    const auto byWavelength = coloured(render::PathColouring::Wavelength);
     ASSERT_NE(coloured(render::PathColouring::Weight), byWavelength);
 
     ASSERT_TRUE(harness.choose("colour", "wavelength"));
     EXPECT_EQ(harness.state().view.layers.pathColouring, render::PathColouring::Wavelength);
-    const auto& drawn = harness.app().viewport().layers().lines.vertices();
-    ASSERT_GE(drawn.size(), byWavelength.size());
-    for (std::size_t v = 0; v < byWavelength.size(); ++v) ASSERT_EQ(drawn[v].colour, byWavelength[v]) << v;
+    const render::SceneLayers& layers = harness.app().viewport().layers();
+    EXPECT_EQ(colours(layers.lines, byWavelength.first.size()), byWavelength.first);
+    EXPECT_EQ(colours(layers.chords, layers.chords.vertices().size()), byWavelength.second);
 
     // The event table says the selected photon's wavelength.
     harness.press(kKeyRight);
