@@ -141,14 +141,12 @@ void ViewportScene::draw(AppState& state, int width, int height) {
     view.camera.clipTo(viewBounds(state, bounds_));
 
     const DrawnView drawn{rebuilds_, view.camera, width, height};
-    GLint target[2] = {0, 0};  // the framebuffers bound for drawing and reading
-    gl_.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target[0]);
-    gl_.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &target[1]);
+    const render::FramebufferBindings target(gl_);
     GLint sampleBuffers = 0;  // a blit into a multisampled framebuffer of another format is an error
     gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
     const bool keepable = keepImage_ && sampleBuffers == 0 && unkeepableSize_ != std::pair{width, height};
     if (keepable && kept_ == drawn) {
-        image_.copyTo(static_cast<GLuint>(target[0]));
+        image_.copyTo(static_cast<GLuint>(target.draw));
         ++copiedFrames_;
         lastDrawn_ = drawn;
         return;
@@ -162,9 +160,8 @@ void ViewportScene::draw(AppState& state, int width, int height) {
     renderer_.draw(view.camera, view.layers.render, width, height);
     ++drawnFrames_;
     if (keep) {
-        gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target[0]));
-        gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(target[1]));
-        image_.copyTo(static_cast<GLuint>(target[0]));
+        target.restore(gl_);
+        image_.copyTo(static_cast<GLuint>(target.draw));
         kept_ = drawn;
     }
     lastDrawn_ = drawn;

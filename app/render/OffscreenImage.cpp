@@ -2,24 +2,15 @@
 
 namespace dropscope::render {
 
-namespace {
+FramebufferBindings::FramebufferBindings(const GlFunctions& gl) {
+    gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+}
 
-// The framebuffers bound for drawing and for reading, to put back.
-struct FramebufferBindings {
-    explicit FramebufferBindings(const GlFunctions& gl) {
-        gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
-        gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
-    }
-    void restore(const GlFunctions& gl) const {
-        gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw));
-        gl.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
-    }
-
-    GLint draw = 0;
-    GLint read = 0;
-};
-
-}  // namespace
+void FramebufferBindings::restore(const GlFunctions& gl) const {
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw));
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
+}
 
 OffscreenImage::~OffscreenImage() { release(); }
 

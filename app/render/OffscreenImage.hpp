@@ -4,6 +4,15 @@
 
 namespace dropscope::render {
 
+// The framebuffers bound for drawing and for reading when made, to bind again.
+struct FramebufferBindings {
+    explicit FramebufferBindings(const GlFunctions& gl);
+    void restore(const GlFunctions& gl) const;
+
+    GLint draw = 0;
+    GLint read = 0;
+};
+
 // A framebuffer of its own (colour and depth) to draw a picture into once and copy out as often as it is
 // needed: ViewportScene keeps the 3D view in one while frames draw the same view, and a screenshot of the
 // view alone is drawn into one of its own size (renderViewport).
