@@ -13,8 +13,11 @@
 layout(depth_greater) out float gl_FragDepth;
 #endif
 #ifdef POINT_SPRITE
-uniform mat4 inverseViewProjection;
-uniform vec2 viewportSize;
+// The eye ray through a pixel is affine in its window coordinates: rayAtOrigin + x rayPerPixelX + y rayPerPixelY
+// (the near plane's point minus the eye, Renderer::draw).
+uniform vec3 rayAtOrigin;
+uniform vec3 rayPerPixelX;
+uniform vec3 rayPerPixelY;
 #else
 in vec3 worldPosition;
 #endif
@@ -26,23 +29,27 @@ flat in mat3 toObject;
 #endif
 flat in vec4 shapeColour;
 
-uniform mat4 viewProjection;
 uniform vec3 eye;
+// The clip z and w of eye + t ray: eyeClip + t (dot(clipZ, ray), dot(clipW, ray)) (the view-projection's rows).
+uniform vec2 eyeClip;
+uniform vec3 clipZ;
+uniform vec3 clipW;
 uniform float opacity;
 
 out vec4 fragmentColour;
 
 void main() {
 #ifdef POINT_SPRITE
-    vec4 near = inverseViewProjection * vec4(2.0 * gl_FragCoord.xy / viewportSize - 1.0, -1.0, 1.0);
-    vec3 worldPosition = near.xyz / near.w;
+    vec3 ray = rayAtOrigin + gl_FragCoord.x * rayPerPixelX + gl_FragCoord.y * rayPerPixelY;
+#else
+    vec3 ray = worldPosition - eye;
 #endif
 #ifdef SPHERE
     vec3 origin = inverseRadius * (eye - shapeCenter);
-    vec3 direction = inverseRadius * (worldPosition - eye);
+    vec3 direction = inverseRadius * ray;
 #else
     vec3 origin = toObject * (eye - shapeCenter);
-    vec3 direction = toObject * (worldPosition - eye);
+    vec3 direction = toObject * ray;
 #endif
     float a = dot(direction, direction);
     float b = dot(origin, direction);
@@ -55,15 +62,14 @@ void main() {
     if (t < 0.0) discard;
     vec3 surface = origin + t * direction;
 #ifdef WRITES_DEPTH
-    vec3 world = eye + t * (worldPosition - eye);  // the same t along the ray in world space
-    vec4 clip = viewProjection * vec4(world, 1.0);
-    gl_FragDepth = 0.5 * clip.z / clip.w + 0.5;
+    vec2 clip = eyeClip + t * vec2(dot(clipZ, ray), dot(clipW, ray));  // the same t along the ray in world space
+    gl_FragDepth = 0.5 * clip.x / clip.y + 0.5;
 #endif
 #ifdef SPHERE
     vec3 normal = normalize(inverseRadius * surface);
 #else
     vec3 normal = normalize(transpose(toObject) * surface);
 #endif
-    float diffuse = abs(dot(normal, normalize(eye - worldPosition)));  // a headlight
+    float diffuse = abs(dot(normal, normalize(-ray)));  // a headlight
     fragmentColour = vec4(shapeColour.rgb * (0.3 + 0.7 * diffuse), shapeColour.a * opacity);
 }

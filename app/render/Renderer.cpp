@@ -343,6 +343,12 @@ void Renderer::setShapeUniforms(const ShaderProgram& program, const FrameUniform
     gl_.Uniform1f(program.uniform("pixelsPerUnit"), frame.pixelsPerUnit);
     gl_.Uniform1f(program.uniform("maxStretch"), frame.maxStretch);
     gl_.Uniform2f(program.uniform("viewportSize"), frame.width, frame.height);
+    gl_.Uniform3fv(program.uniform("rayAtOrigin"), 1, glm::value_ptr(frame.rayAtOrigin));
+    gl_.Uniform3fv(program.uniform("rayPerPixelX"), 1, glm::value_ptr(frame.rayPerPixelX));
+    gl_.Uniform3fv(program.uniform("rayPerPixelY"), 1, glm::value_ptr(frame.rayPerPixelY));
+    gl_.Uniform2f(program.uniform("eyeClip"), frame.eyeClip.x, frame.eyeClip.y);
+    gl_.Uniform3fv(program.uniform("clipZ"), 1, glm::value_ptr(frame.clipZ));
+    gl_.Uniform3fv(program.uniform("clipW"), 1, glm::value_ptr(frame.clipW));
     gl_.Uniform3fv(program.uniform("eye"), 1, glm::value_ptr(frame.eye));
     gl_.Uniform1f(program.uniform("opacity"), opacity);
 }
@@ -457,6 +463,15 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     const glm::mat4 projection = local.projectionMatrix(aspect);
     // The widening of a shape in the image's corners, 1 / cos^2 of the angle off the axis (impostor.vert).
     const double cornerTan2 = 1.0 / (projection[0][0] * projection[0][0]) + 1.0 / (projection[1][1] * projection[1][1]);
+    // A point (x, y, -1) of the near plane in normalised device coordinates is inverse(P V) (x, y, -1, 1), whose
+    // w does not depend on x and y under a perspective projection: the near plane's point, and the eye ray
+    // to it, are affine in the window coordinates.
+    const glm::dmat4 unproject = glm::inverse(glm::dmat4(viewProjection));
+    const glm::dvec4 nearAtOrigin = unproject * glm::dvec4(-1.0, -1.0, -1.0, 1.0);
+    const glm::dvec3 rayAtOrigin = glm::dvec3(nearAtOrigin) / nearAtOrigin.w - local.eye;
+    const glm::dvec3 rayPerPixelX = glm::dvec3(unproject[0]) * (2.0 / width) / nearAtOrigin.w;
+    const glm::dvec3 rayPerPixelY = glm::dvec3(unproject[1]) * (2.0 / height) / nearAtOrigin.w;
+    const glm::dvec4 eyeClip = glm::dmat4(viewProjection) * glm::dvec4(local.eye, 1.0);
     const FrameUniforms frame{viewProjection,
                               glm::inverse(viewProjection),
                               glm::vec3(local.eye),
@@ -464,7 +479,13 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
                               static_cast<float>(projection[1][1] * static_cast<double>(height) / 2.0),
                               static_cast<float>(1.0 + cornerTan2),
                               static_cast<float>(width),
-                              static_cast<float>(height)};
+                              static_cast<float>(height),
+                              glm::vec3(rayAtOrigin),
+                              glm::vec3(rayPerPixelX),
+                              glm::vec3(rayPerPixelY),
+                              glm::vec2(glm::dvec2(eyeClip.z, eyeClip.w)),
+                              glm::vec3(viewProjection[0][2], viewProjection[1][2], viewProjection[2][2]),
+                              glm::vec3(viewProjection[0][3], viewProjection[1][3], viewProjection[2][3])};
 
     gl_.Viewport(0, 0, width, height);
     gl_.ClearColor(options.background[0], options.background[1], options.background[2], options.background[3]);

@@ -85,6 +85,14 @@ private:
         float maxStretch;
         float width;
         float height;
+        // The eye ray through window coordinates (x, y): rayAtOrigin + x rayPerPixelX + y rayPerPixelY.
+        glm::vec3 rayAtOrigin;
+        glm::vec3 rayPerPixelX;
+        glm::vec3 rayPerPixelY;
+        // The clip z and w of a point eye + t ray: eyeClip + t (dot(clipZ, ray), dot(clipW, ray)).
+        glm::vec2 eyeClip;
+        glm::vec3 clipZ;
+        glm::vec3 clipW;
     };
     // A run of spheres and ellipsoids next to each other in space and in the instance buffer: the frame
     // skips it outside the view, and draws it as quads, points or both by the sizes it can have on screen.
