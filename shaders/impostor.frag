@@ -21,7 +21,7 @@ uniform vec3 rayPerPixelY;
 #else
 in vec3 worldPosition;
 #endif
-flat in vec3 shapeCenter;
+flat in vec3 objectEye;  // the eye in the shape's unit-sphere frame (impostor.vert)
 #ifdef SPHERE
 flat in float inverseRadius;  // toObject is I / r: the same products, without the matrix
 #else
@@ -44,11 +44,10 @@ void main() {
 #else
     vec3 ray = worldPosition - eye;
 #endif
+    vec3 origin = objectEye;
 #ifdef SPHERE
-    vec3 origin = inverseRadius * (eye - shapeCenter);
     vec3 direction = inverseRadius * ray;
 #else
-    vec3 origin = toObject * (eye - shapeCenter);
     vec3 direction = toObject * ray;
 #endif
     float a = dot(direction, direction);

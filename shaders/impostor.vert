@@ -41,7 +41,7 @@ uniform vec2 viewportSize;
 #ifndef POINT_SPRITE
 out vec3 worldPosition;
 #endif
-flat out vec3 shapeCenter;
+flat out vec3 objectEye;  // the eye in the shape's unit-sphere frame
 #ifdef SPHERE
 flat out float inverseRadius;
 #else
@@ -52,13 +52,14 @@ flat out vec4 shapeColour;
 const vec4 kDropped = vec4(0.0, 0.0, 2.0, 1.0);  // beyond the far plane: clipped
 
 void main() {
-    shapeCenter = center;
     shapeColour = colour;
 #ifdef SPHERE
     inverseRadius = inverseLinearX.x;
+    objectEye = inverseRadius * (eye - center);
     float radius = length(linearX);  // as the largest column's length below: the three are equal
 #else
     toObject = inverseLinear;
+    objectEye = inverseLinear * (eye - center);
     float radius = max(length(linear[0]), max(length(linear[1]), length(linear[2])));
 #endif
     vec3 toEye = eye - center;
