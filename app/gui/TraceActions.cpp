@@ -54,11 +54,20 @@ void traceRayTree(AppState& state, bool automatic) {
     if (sources.empty()) return state.ui.status.refuse("nothing to fire: add a source first (Fire panel)");
     const Source& source = sources[state.scene.selectedSource()];
     state.ui.status.attempt("ray tree failed", [&] {
-        const OpticalScene optical(document.toScene());
+        const std::shared_ptr<const RayTreeScene>& kept = traces.rayTreeScene;
+        if (!kept || kept->generation != state.scene.generation() ||
+            kept->revision != document.revisionBesidesSources()) {
+            auto built = std::make_shared<RayTreeScene>();
+            built->generation = state.scene.generation();
+            built->revision = document.revisionBesidesSources();
+            built->optical = std::make_shared<const OpticalScene>(document.toScene(&built->slotOfShape));
+            traces.rayTreeScene = std::move(built);
+        }
         const Ray ray{source.origin, source.direction};
         RayTreeSettings settings;
         settings.polarisation = traces.fire.polarisation;
-        traces.rayTree = traceRayTree(optical, ray, 1.0, settings, emittedPolarisation(source, source.direction));
+        traces.rayTree = traceRayTree(*traces.rayTreeScene->optical, ray, 1.0, settings,
+                                      emittedPolarisation(source, source.direction));
         ++traces.shownId;
         state.view.layers.rayTree = true;
         if (!automatic) {
@@ -166,6 +175,7 @@ void forgetTraces(TraceState& traces) {
     traces.partial.reset();
     traces.trace.reset();
     traces.rayTree.reset();
+    traces.rayTreeScene.reset();
     traces.traversal.reset();
     traces.selectedPath = -1;
     traces.selectedEvent = 0;

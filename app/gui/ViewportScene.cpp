@@ -86,13 +86,17 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
     if (traces.trace) {
         const std::vector<PhotonPath>& paths = traces.trace->outcome.result.paths;
         inputs.paths = &paths;
+        inputs.pathSlots = &traces.trace->slotOfShape;
         if (traces.pathFilter != PathFilter{}) {
             for (int index : filterPaths(paths, traces.trace->outcome.scene.detectors, traces.pathFilter))
                 kept.push_back(paths[static_cast<std::size_t>(index)]);
             inputs.paths = &kept;
         }
     }
-    if (traces.rayTree) inputs.rayTree = &*traces.rayTree;
+    if (traces.rayTree) {
+        inputs.rayTree = &*traces.rayTree;
+        if (traces.rayTreeScene) inputs.rayTreeSlots = &traces.rayTreeScene->slotOfShape;
+    }
     inputs.traversal = traversal;
     inputs.currentEvent = currentEvent(traces);
     inputs.detectors = &document.detectors();

@@ -10,9 +10,11 @@ bool atInterface(const Event& event) {
 
 }  // namespace
 
-bool isChord(const Event& from, const Event& to, const Octree& octree) {
+bool isChord(const Event& from, const Event& to, const Octree& octree, const std::vector<ShapeId>* slotOfShape) {
     if (from.shape == RayHit::kNone || from.shape != to.shape || !atInterface(from) || !atInterface(to)) return false;
-    const Shape* shape = octree.shape(from.shape);
+    ShapeId id = from.shape;
+    if (slotOfShape) id = id < slotOfShape->size() ? (*slotOfShape)[id] : RayHit::kNone;
+    const Shape* shape = octree.shape(id);
     if (shape == nullptr || (shape->kind() != ShapeKind::Sphere && shape->kind() != ShapeKind::Ellipsoid)) return false;
     // The shape as it is now, which an edit after the trace may have moved off the path.
     return shape->locatePoint(from.position) != PointLocation::Outside &&

@@ -42,7 +42,7 @@ void addPhotonPaths(LineBatch& lines, const std::vector<PhotonPath>& paths, doub
         for (std::size_t k = 0; k + 1 < path.events.size(); ++k) {
             const Event& from = path.events[k];
             const Event& to = path.events[k + 1];
-            LineBatch& into = chords && isChord(from, to, chords->octree) ? chords->batch : lines;
+            LineBatch& into = chords && isChord(from, to, chords->octree, chords->slotOfShape) ? chords->batch : lines;
             into.add(from.position, to.position, colourFrom(from));
         }
         const Event& last = path.events.back();

@@ -24,7 +24,8 @@ void addRayTree(LineBatch& lines, const RayTree& tree, double escapeLength, cons
         const Event& from = tree.nodes[static_cast<std::size_t>(node.parent)].event;
         const Event& to = node.event;
         if (to.position != from.position) {
-            segments.push_back({from.position, to.position, from.weight, chords && isChord(from, to, chords->octree)});
+            segments.push_back({from.position, to.position, from.weight,
+                                chords && isChord(from, to, chords->octree, chords->slotOfShape)});
         }
         // A leaf sits where its branch last was: an escape goes on along its direction, the other leaves
         // (truncated, lost, absorbed with no surface ahead) end there.

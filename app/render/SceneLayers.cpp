@@ -37,8 +37,10 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
     SceneLayers layers{LineBatch(anchor), {}, TriangleBatch(anchor), LineBatch(anchor)};
     LineBatch& lines = layers.lines;
     const std::optional<SlicePlane>& slice = options.slice;
-    const ChordSplit split{inputs.octree, layers.chords};
-    const ChordSplit* chords = slice ? nullptr : &split;
+    const ChordSplit pathSplit{inputs.octree, layers.chords, inputs.pathSlots};
+    const ChordSplit rayTreeSplit{inputs.octree, layers.chords, inputs.rayTreeSlots};
+    const ChordSplit* pathChords = slice ? nullptr : &pathSplit;
+    const ChordSplit* rayTreeChords = slice ? nullptr : &rayTreeSplit;
     const double size = inputs.bounds.diagonal().norm();
     if (const Event* event = inputs.currentEvent; event && event->polarisation) {
         addSliced(lines, slice, anchor, [&](LineBatch& batch) {
@@ -50,12 +52,12 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
     }
     if (options.rayTree && inputs.rayTree) {
         addSliced(lines, slice, anchor,
-                  [&](LineBatch& batch) { addRayTree(batch, *inputs.rayTree, kEscapeLength * size, chords); });
+                  [&](LineBatch& batch) { addRayTree(batch, *inputs.rayTree, kEscapeLength * size, rayTreeChords); });
         if (options.markers) addEventMarkers(layers.markers, *inputs.rayTree, kMarkerRadius * size, anchor);
     }
     if (options.paths && inputs.paths) {
         addSliced(lines, slice, anchor, [&](LineBatch& batch) {
-            addPhotonPaths(batch, *inputs.paths, kEscapeLength * size, options.pathColouring, chords);
+            addPhotonPaths(batch, *inputs.paths, kEscapeLength * size, options.pathColouring, pathChords);
         });
         if (options.markers) addEventMarkers(layers.markers, *inputs.paths, kMarkerRadius * size, anchor);
     }

@@ -47,6 +47,10 @@ struct LayerInputs {
     Eigen::Vector3d up = Eigen::Vector3d::UnitY();  // the camera's: the grid lies across it
     const std::vector<PhotonPath>* paths = nullptr;
     const RayTree* rayTree = nullptr;
+    // The octree slot of each shape id the paths' and the ray tree's events name (a trace's compact scene:
+    // SceneDocument::toScene); null: the octree's own ids.
+    const std::vector<ShapeId>* pathSlots = nullptr;
+    const std::vector<ShapeId>* rayTreeSlots = nullptr;
     const RayTraversal* traversal = nullptr;
     // The event the path inspector is at: its polarisation ellipse is drawn there when it carries a
     // polarisation (PolarisationEllipse.hpp).

@@ -52,12 +52,18 @@ std::string SceneDocument::shapeTitle(ShapeId id) const {
     return title + " " + (name.empty() ? std::to_string(id) : jsonpath::quoted(name));
 }
 
+void SceneDocument::advance(StepKind kind) {
+    ++revision_;
+    if (kind != StepKind::Sources) ++revisionBesidesSources_;
+}
+
 void SceneDocument::commit(Step step) {
     apply(step, true);
+    const StepKind kind = step.kind;
     undo_.push_back(std::move(step));
     if (undo_.size() > kMaxUndoSteps) undo_.pop_front();
     redo_.clear();
-    ++revision_;
+    advance(kind);
 }
 
 void SceneDocument::undo() {
@@ -65,8 +71,9 @@ void SceneDocument::undo() {
     Step step = std::move(undo_.back());
     undo_.pop_back();
     apply(step, false);
+    const StepKind kind = step.kind;
     redo_.push_back(std::move(step));
-    ++revision_;
+    advance(kind);
 }
 
 void SceneDocument::redo() {
@@ -74,8 +81,9 @@ void SceneDocument::redo() {
     Step step = std::move(redo_.back());
     redo_.pop_back();
     apply(step, true);
+    const StepKind kind = step.kind;
     undo_.push_back(std::move(step));
-    ++revision_;
+    advance(kind);
 }
 
 void SceneDocument::apply(const Step& step, bool forward) {
@@ -140,9 +148,10 @@ void SceneDocument::setProperties(const Properties& properties) {
     for (const Detector& detector : rest_.detectors) seen_.add(detector);
 }
 
-void SceneDocument::commitProperties(std::string label, Properties after) {
+void SceneDocument::commitProperties(std::string label, Properties after, StepKind kind) {
     Step step;
     step.label = std::move(label);
+    step.kind = kind;
     step.before = properties();
     step.after = std::move(after);
     commit(std::move(step));

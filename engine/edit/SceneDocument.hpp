@@ -70,6 +70,9 @@ public:
     const std::string& origin() const { return rest_.origin; }
 
     std::uint64_t revision() const { return revision_; }
+    // Increases with revision() on every change but an edit of the sources (and its undo and redo): what an
+    // OpticalScene is built from (shapes, media, ambient, detectors) is the same while it stays.
+    std::uint64_t revisionBesidesSources() const { return revisionBesidesSources_; }
 
     // Shape edits; each throws EditRefused and changes nothing when the edit is not allowed.
     // A new shape, named (unique among the shapes) or unnamed; returns its id.
@@ -158,13 +161,15 @@ private:
 
     // Applies a new step, records it (dropping the oldest beyond kMaxUndoSteps) and clears redo.
     void commit(Step step);
+    // The revisions after a change of `kind`.
+    void advance(StepKind kind);
     void apply(const Step& step, bool forward);
     void applyShapeChanges(const std::vector<SlotChange>& changes, bool forward);
     void setSlot(ShapeId id, std::unique_ptr<Shape> shape, const std::string& name);
     void setName(ShapeId id, const std::string& name);
     void setProperties(const Properties& properties);
     Properties properties() const { return {rest_.media, rest_.ambient, rest_.sources, rest_.detectors}; }
-    void commitProperties(std::string label, Properties after);
+    void commitProperties(std::string label, Properties after, StepKind kind = StepKind::Other);
     // Commits a detectors edit labelled `label`, or folds it into the last one (setDetectors).
     void commitDetectors(std::string label, std::vector<Detector> detectors, bool mergeWithPrevious);
     const Detector& liveDetector(std::size_t index) const;
@@ -191,6 +196,7 @@ private:
     std::unordered_map<std::string, ShapeId> nameIndex_;
     Scene rest_;  // the scene without its shapes, which octree_ and names_ hold
     std::uint64_t revision_ = 0;
+    std::uint64_t revisionBesidesSources_ = 0;
     // The extremes of every shape, source and detector this document has held: when a new one keeps them
     // within the limit, the scene surely is, and checkScale need not visit every shape.
     ScaleExtremes seen_;

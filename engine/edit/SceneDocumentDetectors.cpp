@@ -46,11 +46,10 @@ void SceneDocument::commitDetectors(std::string label, std::vector<Detector> det
     if (mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Detectors) {
         setProperties(after);
         undo_.back().after = std::move(after);
-        ++revision_;
+        advance(StepKind::Detectors);
         return;
     }
-    commitProperties(std::move(label), std::move(after));
-    undo_.back().kind = StepKind::Detectors;
+    commitProperties(std::move(label), std::move(after), StepKind::Detectors);
 }
 
 void SceneDocument::setDetectors(std::vector<Detector> detectors, bool mergeWithPrevious) {

@@ -233,7 +233,7 @@ void SceneDocument::modifyShape(ShapeId id, const ShapeSpec& spec, bool mergeWit
         setSlot(id, shape->clone(), change.nameAfter);
         change.after = std::move(shape);
         undo_.back().label = modifyLabel(id, *change.before, *change.after);
-        ++revision_;
+        advance(StepKind::Modify);
         return;
     }
     Step step;
@@ -359,11 +359,10 @@ void SceneDocument::setSources(std::vector<Source> sources, bool mergeWithPrevio
     if (mergeWithPrevious && redo_.empty() && !undo_.empty() && undo_.back().kind == StepKind::Sources) {
         setProperties(after);
         undo_.back().after = std::move(after);
-        ++revision_;
+        advance(StepKind::Sources);
         return;
     }
-    commitProperties("edit sources", std::move(after));
-    undo_.back().kind = StepKind::Sources;
+    commitProperties("edit sources", std::move(after), StepKind::Sources);
 }
 
 }  // namespace dropscope

@@ -33,6 +33,61 @@ TEST(SceneDocument, RedoReappliesAndEveryStepBumpsTheRevision) {
     EXPECT_EQ(document.revision(), now);
 }
 
+// What an optical scene is built from stays through source edits, their merged drags, undo and redo; every
+// other edit moves it on, a merged shape drag at every step.
+TEST(SceneDocument, TheRevisionBesidesSourcesStaysThroughSourceEditsOnly) {
+    SceneDocument document(smallScene());
+    const auto moved = [&](double x) {
+        std::vector<Source> sources = document.sources();
+        sources[0].origin = Point(x, 0, -10);
+        return sources;
+    };
+    std::uint64_t revision = document.revision();
+    const std::uint64_t besides = document.revisionBesidesSources();
+    const auto expectOnlyRevisionMoves = [&] {
+        EXPECT_GT(document.revision(), revision);
+        EXPECT_EQ(document.revisionBesidesSources(), besides);
+        revision = document.revision();
+    };
+    document.setSources(moved(0.5));
+    expectOnlyRevisionMoves();
+    document.setSources(moved(0.7), true);  // a drag, merged
+    expectOnlyRevisionMoves();
+    document.undo();
+    expectOnlyRevisionMoves();
+    document.redo();
+    expectOnlyRevisionMoves();
+
+    std::uint64_t last = besides;
+    const auto expectBothMove = [&](const char* edit) {
+        EXPECT_GT(document.revision(), revision) << edit;
+        EXPECT_GT(document.revisionBesidesSources(), last) << edit;
+        revision = document.revision();
+        last = document.revisionBesidesSources();
+    };
+    document.modifyShape(1, sphereAt(Point(3, 0.5, 0), 1.0));
+    expectBothMove("move");
+    document.modifyShape(1, sphereAt(Point(3, 1.0, 0), 1.0), true);
+    expectBothMove("merged move");
+    Medium water = document.media()[1];
+    water.n = 1.34;
+    document.setMedium(1, water);
+    expectBothMove("medium");
+    Detector absorber;
+    absorber.name = "absorber";
+    absorber.center = Point(0, 0, 20);
+    absorber.normal = Direction(0, 0, -1);
+    absorber.size = {8.0, 6.0};
+    absorber.pixels = {4, 4};
+    document.addDetector(absorber);
+    expectBothMove("detector");
+    absorber.center = Point(0, 0, 21);
+    document.setDetector(0, absorber, true);
+    expectBothMove("merged detector drag");
+    document.undo();
+    expectBothMove("undo of the detector");
+}
+
 TEST(SceneDocument, ANewEditClearsRedo) {
     SceneDocument document(smallScene());
     document.addShape(sphereAt(Point(-4, 0, 0), 0.5));

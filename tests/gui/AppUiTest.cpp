@@ -6,6 +6,7 @@
 #include "run/TraceRun.hpp"
 #include "scene/ShapeSpec.hpp"
 #include "snapshot/Image.hpp"
+#include "transport/Emission.hpp"
 #include "transport/OpticalScene.hpp"
 #include "transport/TallyExpectations.hpp"
 
@@ -251,6 +252,54 @@ TEST(AppUi, TheRayTreeKeySplitsTheRayAtTheFirstSurfaceByFresnel) {
     std::sort(weights.begin(), weights.end());
     EXPECT_NEAR(weights[0], kHeadOnReflectance, kFresnelRounding);
     EXPECT_NEAR(weights[1], 1.0 - kHeadOnReflectance, kFresnelRounding);
+}
+
+// The live ray tree, traced again as the source moves, keeps the optical scene it was traced through until
+// something else changes; every tree is the one a scene built from the document then gives.
+TEST(AppUi, TheRayTreeKeepsItsOpticalSceneWhileOnlyTheSourceMoves) {
+    AppHarness harness(kAxisScene);
+    SceneDocument& document = harness.state().scene.document();
+    const auto expectTreeOfTheDocument = [&](const char* when) {
+        const RayTree& shown = *harness.state().traces.rayTree;
+        const Source& source = document.sources().front();
+        RayTreeSettings settings;
+        settings.polarisation = harness.state().traces.fire.polarisation;
+        const RayTree direct = traceRayTree(OpticalScene(document.toScene()), Ray{source.origin, source.direction}, 1.0,
+                                            settings, emittedPolarisation(source, source.direction));
+        ASSERT_EQ(shown.nodes.size(), direct.nodes.size()) << when;
+        for (std::size_t k = 0; k < direct.nodes.size(); ++k) {
+            EXPECT_EQ(shown.nodes[k].event.position, direct.nodes[k].event.position) << when << ", node " << k;
+            EXPECT_EQ(shown.nodes[k].event.weight, direct.nodes[k].event.weight) << when << ", node " << k;
+        }
+    };
+    harness.press('R');
+    ASSERT_TRUE(harness.state().traces.rayTreeScene);
+    const RayTreeScene* first = harness.state().traces.rayTreeScene.get();
+    expectTreeOfTheDocument("fired");
+
+    std::vector<Source> sources = document.sources();
+    sources[0].origin = Point(0.3, 0.2, -5.0);
+    document.setSources(sources);
+    harness.frame();  // live: traced again
+    EXPECT_EQ(harness.state().traces.rayTreeScene.get(), first);
+    expectTreeOfTheDocument("the source moved");
+
+    ShapeSpec moved;
+    moved.center = Point(0.1, 0.0, 0.0);
+    moved.medium = 1;
+    document.modifyShape(0, moved);
+    harness.frame();
+    EXPECT_NE(harness.state().traces.rayTreeScene.get(), first);
+    EXPECT_EQ(harness.state().traces.rayTreeScene->revision, document.revisionBesidesSources());
+    expectTreeOfTheDocument("the droplet moved");
+
+    const RayTreeScene* second = harness.state().traces.rayTreeScene.get();
+    Medium water = document.media()[1];
+    water.n = 1.5;
+    document.setMedium(1, water);
+    harness.frame();
+    EXPECT_NE(harness.state().traces.rayTreeScene.get(), second);
+    expectTreeOfTheDocument("the water's index changed");
 }
 
 TEST(AppUi, StepsThroughTheEventsOfASelectedPathWithItsOctreeTraversal) {

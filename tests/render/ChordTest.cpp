@@ -92,6 +92,21 @@ TEST(Chords, ASphereMovedOffThePathSinceTheTraceNoLongerHidesIt) {
     EXPECT_TRUE(render::isChord(path.events[1], path.events[2], inPlace));
 }
 
+// A trace's compact ids (the document's empty slots left out) name the shapes through its map of slots.
+TEST(Chords, TheEventsShapeIdsGoThroughTheTracesSlots) {
+    const Octree octree = threeShapes();
+    PhotonPath path = pathThroughThreeShapes();
+    for (Event& event : path.events) {
+        if (event.shape != RayHit::kNone) event.shape = event.shape == 0 ? 1 : (event.shape == 1 ? 0 : 2);
+    }
+    const std::vector<ShapeId> slots{1, 0, 2};                              // compact 1 is the sphere's slot 0
+    EXPECT_FALSE(render::isChord(path.events[1], path.events[2], octree));  // the ellipsoid does not hold them
+    EXPECT_TRUE(render::isChord(path.events[1], path.events[2], octree, &slots));
+    EXPECT_TRUE(render::isChord(path.events[4], path.events[5], octree, &slots));
+    const std::vector<ShapeId> short_{1};
+    EXPECT_FALSE(render::isChord(path.events[1], path.events[2], octree, &short_));  // compact 1 has no slot
+}
+
 // The ray tree's segments are split without losing or reordering any: the lines and the chords are the
 // unsplit batch's segments, each in the order it had there.
 TEST(Chords, TheRayTreesChordsAreItsSegmentsInsideItsDroplets) {
