@@ -6,8 +6,10 @@
 //   steady   nothing changes: ImGui's panels, the pick, and the 3D view, in two frames: the second of its
 //            view, which the app draws and keeps, and the next, which copies the kept picture;
 //   orbit    the camera turns a degree about the target before each frame (what a drag does);
-//   rebuild  every frame rebuilds the layers (what a change of a view option costs; here the selection
-//            changes);
+//   rebuild  every frame rebuilds the layers (what a change of a view option costs; here the axes are
+//            switched on and off);
+//   select   the selected droplet changes every frame (droplet 0, then none), which recolours two instances
+//            in place;
 //   reference ViewportScene::draw alone on the same state, drawn every frame (it keeps no picture): the 3D
 //            view without ImGui and picking.
 // Then, in blocks, the 3D view with only the shapes and with only the lines, and the shapes alone with the
@@ -141,10 +143,11 @@ int run(const Options& options) {
 
     gui::ViewportScene reference(context.gl(), false);  // draws its view in every frame
     reference.draw(app.state(), kWidth, kHeight);       // uploads the same layers once, then only draws
-    Series steady, steadyCopied, orbit, rebuild, alone;
-    // Droplet 0 selected for one timed frame and nothing again for the next: both rebuild, and the
-    // reference always draws the state it was built from (nothing selected). The first steady frame is the
-    // second of its view (after the last rebuild), which the app draws and keeps; the next copies it.
+    Series steady, steadyCopied, orbit, rebuild, select, alone;
+    // The axes on for one timed frame and off for the next, both rebuilding; droplet 0 selected for one and
+    // nothing again for the next, both recolouring. The reference always draws the state it was built from
+    // (no axes, nothing selected). The first steady frame is the second of its view (after the last
+    // change), which the app draws and keeps; the next copies it.
     for (int k = 0; k < options.frames; ++k) {
         for (Series* series : {&steady, &steadyCopied}) {
             Stopwatch watch;
@@ -159,12 +162,19 @@ int run(const Options& options) {
             context.gl().Finish();
             orbit.ms.push_back(1e3 * watch.seconds());
         }
+        for (const bool axes : {true, false}) {
+            app.state().view.layers.axes = axes;
+            Stopwatch watch;
+            app.frame(input);
+            context.gl().Finish();
+            rebuild.ms.push_back(1e3 * watch.seconds());
+        }
         for (const ShapeId selected : {ShapeId{0}, RayHit::kNone}) {
             app.state().scene.selectShape(selected);
             Stopwatch watch;
             app.frame(input);
             context.gl().Finish();
-            rebuild.ms.push_back(1e3 * watch.seconds());
+            select.ms.push_back(1e3 * watch.seconds());
         }
         {
             Stopwatch watch;
@@ -236,6 +246,8 @@ int run(const Options& options) {
                 orbit.median() / reference3d);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, layers rebuilt every frame", rebuild.median(), rebuild.minimum(),
                 rebuild.median() / reference3d);
+    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, selection changed every frame", select.median(), select.minimum(),
+                select.median() / reference3d);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "reference: 3D view alone (ViewportScene)", reference3d,
                 alone.minimum(), 1.0);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "  of which the shapes alone", shapesAlone.median(),

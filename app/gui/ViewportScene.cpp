@@ -129,8 +129,24 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
     builtFrom_ = key;
 }
 
+bool ViewportScene::recolour(const AppState& state, const ViewKey& key) {
+    if (!builtFrom_) return false;
+    ViewKey selectionMoved = *builtFrom_;
+    selectionMoved.selectedShape = key.selectedShape;
+    if (selectionMoved != key) return false;
+    const SceneDocument& document = state.scene.document();
+    if (const Shape* was = document.shape(builtFrom_->selectedShape)) {
+        renderer_.recolourShape(builtFrom_->selectedShape, render::mediumColour(was->mediumId()));
+    }
+    if (document.shape(key.selectedShape)) renderer_.recolourShape(key.selectedShape, render::kHighlight);
+    ++rebuilds_;
+    ++recolours_;
+    builtFrom_ = key;
+    return true;
+}
+
 void ViewportScene::draw(AppState& state, int width, int height) {
-    if (const ViewKey key = viewKey(state); key != builtFrom_) rebuild(state, key);
+    if (const ViewKey key = viewKey(state); key != builtFrom_ && !recolour(state, key)) rebuild(state, key);
     ViewState& view = state.view;
     const double aspect = static_cast<double>(width) / static_cast<double>(std::max(height, 1));
     if (view.fitRequested) {

@@ -55,7 +55,10 @@ public:
     const Eigen::AlignedBox3d& sceneBounds() const { return bounds_; }
     // What the last rebuild handed to the renderer, for the UI tests.
     const render::SceneLayers& layers() const { return layers_; }
+    // Changes of what the view draws: rebuilds, and of those the ones that only recoloured the shape selected
+    // before and the one selected now (nothing else changed).
     std::uint64_t rebuilds() const { return rebuilds_; }
+    std::uint64_t recolours() const { return recolours_; }
     // Frames whose view the renderer drew, and frames that copied the kept picture instead.
     std::uint64_t drawnFrames() const { return drawnFrames_; }
     std::uint64_t copiedFrames() const { return copiedFrames_; }
@@ -72,6 +75,9 @@ private:
     };
 
     void rebuild(const AppState& state, const ViewKey& key);
+    // When `key` differs from the last one in the selected shape alone, recolours the two shapes in place (a
+    // rebuild of 1e6 droplets takes half a second) and says so; false, changing nothing, otherwise.
+    bool recolour(const AppState& state, const ViewKey& key);
 
     const render::GlFunctions& gl_;
     render::Renderer renderer_;
@@ -86,6 +92,7 @@ private:
     Eigen::AlignedBox3d bounds_;
     std::optional<ViewKey> builtFrom_;
     std::uint64_t rebuilds_ = 0;
+    std::uint64_t recolours_ = 0;
 };
 
 // The box the camera keeps between its near and far planes: the shapes, the sources, the detectors when drawn,

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 
 namespace dropscope::render {
 
@@ -70,8 +71,10 @@ std::uint32_t mortonCode(const std::array<float, 3>& p, const glm::dvec3& low, c
 }
 
 // The shapes in space-filling-curve order (unchanged when they fit in one chunk).
-std::vector<ShapeInstance> spatiallyOrdered(const std::vector<ShapeInstance>& shapes) {
-    if (shapes.size() <= kChunkShapes) return shapes;
+std::vector<std::uint32_t> spatialOrder(const std::vector<ShapeInstance>& shapes) {
+    std::vector<std::uint32_t> order(shapes.size());
+    std::iota(order.begin(), order.end(), 0u);
+    if (shapes.size() <= kChunkShapes) return order;
     glm::dvec3 low(std::numeric_limits<double>::max());
     glm::dvec3 high(std::numeric_limits<double>::lowest());
     for (const ShapeInstance& shape : shapes) {
@@ -87,10 +90,8 @@ std::vector<ShapeInstance> spatiallyOrdered(const std::vector<ShapeInstance>& sh
         keys[i] = {mortonCode(shapes[i].center, low, scale), static_cast<std::uint32_t>(i)};
     }
     std::sort(keys.begin(), keys.end());
-    std::vector<ShapeInstance> out;
-    out.reserve(shapes.size());
-    for (const auto& key : keys) out.push_back(shapes[key.second]);
-    return out;
+    for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
+    return order;
 }
 
 // The planes bounding what viewProjection sees, as (n, d) with n.x + d >= 0 inside, |n| = 1.
@@ -254,8 +255,18 @@ Renderer::Renderer(const GlFunctions& gl)
 Renderer::~Renderer() = default;
 
 void Renderer::setShapes(const ShapeInstances& instances) {
-    const std::vector<ShapeInstance> rounded = spatiallyOrdered(instances.rounded);
+    const std::vector<std::uint32_t> order = spatialOrder(instances.rounded);
+    std::vector<ShapeInstance> rounded;
+    rounded.reserve(order.size());
+    for (const std::uint32_t k : order) rounded.push_back(instances.rounded[k]);
     rounded_->upload(rounded);
+    roundedAt_.clear();
+    for (std::size_t place = 0; place < order.size(); ++place) {
+        const ShapeId id = instances.roundedIds[order[place]];
+        if (id >= roundedAt_.size()) roundedAt_.resize(id + std::size_t{1}, kNoInstance);
+        roundedAt_[id] = static_cast<std::uint32_t>(place);
+    }
+    boxIds_ = instances.boxIds;
     chunks_.clear();
     const std::size_t perChunk = std::max(kChunkShapes, (rounded.size() + kMostChunks - 1) / kMostChunks);
     for (std::size_t first = 0; first < rounded.size(); first += perChunk) {
@@ -279,16 +290,21 @@ void Renderer::setShapes(const ShapeInstances& instances) {
         chunks_.push_back(chunk);
     }
     boxes_->upload(instances.boxes);
-    // The instances of each geometry, in the order of their first shape.
+    // The instances of each geometry, in the order of their first shape, and their shapes' ids.
     std::vector<std::pair<std::shared_ptr<const MeshGeometry>, std::vector<ShapeInstance>>> groups;
-    for (const MeshInstance& mesh : instances.meshes) {
+    meshIds_.clear();
+    for (std::size_t k = 0; k < instances.meshes.size(); ++k) {
+        const MeshInstance& mesh = instances.meshes[k];
         const auto group =
             std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == mesh.geometry; });
+        const auto at = static_cast<std::size_t>(group - groups.begin());
         if (group != groups.end()) {
             group->second.push_back(mesh.instance);
         } else {
             groups.push_back({mesh.geometry, {mesh.instance}});
+            meshIds_.emplace_back();
         }
+        meshIds_[at].push_back(instances.meshIds[k]);
     }
     decltype(meshes_) kept;
     for (auto& group : groups) {
@@ -306,6 +322,25 @@ void Renderer::setShapes(const ShapeInstances& instances) {
         kept.emplace_back(geometry, std::move(mesh));
     }
     meshes_ = std::move(kept);  // the buffers of geometries no longer drawn are deleted here
+}
+
+bool Renderer::recolourShape(ShapeId id, const Colour& colour) {
+    const auto write = [&](const Mesh& mesh, std::size_t place) {
+        gl_.BindBuffer(GL_ARRAY_BUFFER, mesh.dataBuffer);
+        gl_.BufferSubData(GL_ARRAY_BUFFER,
+                          static_cast<GLintptr>(place * sizeof(ShapeInstance) + offsetof(ShapeInstance, colour)),
+                          sizeof(Colour), colour.data());
+        return true;
+    };
+    if (id < roundedAt_.size() && roundedAt_[id] != kNoInstance) return write(*rounded_, roundedAt_[id]);
+    if (const auto box = std::find(boxIds_.begin(), boxIds_.end(), id); box != boxIds_.end())
+        return write(*boxes_, static_cast<std::size_t>(box - boxIds_.begin()));
+    for (std::size_t group = 0; group < meshIds_.size(); ++group) {
+        const std::vector<ShapeId>& ids = meshIds_[group];
+        if (const auto mesh = std::find(ids.begin(), ids.end(), id); mesh != ids.end())
+            return write(*meshes_[group].second, static_cast<std::size_t>(mesh - ids.begin()));
+    }
+    return false;
 }
 
 void Renderer::setLines(const LineBatch& lines) {

@@ -6,6 +6,7 @@
 #include "render/MeshCache.hpp"
 #include "render/ShaderProgram.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -61,6 +62,9 @@ public:
     const Anchor& anchor() const { return anchor_; }
     // Keeps the buffers of the mesh geometries still in use and uploads the new ones.
     void setShapes(const ShapeInstances& instances);
+    // The colour of shape `id`'s instance, as setShapes last gave it, written in place: a new selection
+    // without uploading every shape again. False when it has no instance.
+    bool recolourShape(ShapeId id, const Colour& colour);
     // Where uploadScene keeps the mesh geometries between uploads (buildShapeInstances).
     MeshCache& meshCache() { return *meshCache_; }
     void setLines(const LineBatch& lines);
@@ -128,6 +132,10 @@ private:
     std::unique_ptr<Mesh> rounded_;
     std::unique_ptr<Mesh> roundedPoints_;  // rounded_'s instances, one vertex each
     std::vector<RoundedChunk> chunks_;
+    static constexpr std::uint32_t kNoInstance = 0xFFFFFFFFu;
+    std::vector<std::uint32_t> roundedAt_;       // by shape id: its place in rounded_'s (ordered) instances
+    std::vector<ShapeId> boxIds_;                // the shape of each of boxes_'s instances
+    std::vector<std::vector<ShapeId>> meshIds_;  // the shapes of each of meshes_'s instances
     std::unique_ptr<Mesh> boxes_;
     std::unique_ptr<Mesh> markers_;
     std::unique_ptr<Mesh> lines_;

@@ -137,6 +137,29 @@ TEST_F(KeptView, AScreenshotOfTheViewAtItsSizeIsTheViewWhetherCopiedOrNot) {
     expectFrames(kept_, 2, 1);
 }
 
+// A new selection alone recolours two instances in place (ViewportScene::recolour); the picture is the one
+// a view built afresh draws, for droplets across the cloud (the renderer keeps them in Morton order, not by
+// id) and with a slice plane leaving some of them out.
+TEST_F(KeptView, ASelectionRecoloursTheViewAsARebuildWould) {
+    drawn(kept_);
+    const snapshot::Image unselected = drawn(kept_);
+    int changed = 0;
+    for (const bool sliced : {false, true}) {
+        state_.view.slice.enabled = sliced;
+        drawn(kept_);
+        for (ShapeId id = 3; id < 300; id += 23) {
+            state_.scene.selectShape(id);
+            const std::uint64_t recolours = kept_.recolours();
+            const snapshot::Image recoloured = drawn(kept_);
+            EXPECT_EQ(kept_.recolours(), recolours + 1) << "shape " << id;
+            ViewportScene rebuilt(harness_.gl(), false);
+            EXPECT_EQ(recoloured.rgba, drawn(rebuilt).rgba) << "shape " << id << (sliced ? ", sliced" : "");
+            changed += !sliced && recoloured.rgba != unselected.rgba ? 1 : 0;
+        }
+    }
+    EXPECT_GT(changed, 5) << "the selected droplets show";
+}
+
 TEST_F(KeptView, ACopyIgnoresTheScissorAndLeavesItAsItWas) {
     const snapshot::Image reference = drawn(kept_);
     drawn(kept_);
