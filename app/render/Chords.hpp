@@ -12,7 +12,8 @@ namespace dropscope::render {
 // (reflect, refract, TIR) at that one shape of `octree` and neither end is outside it as it is now (the
 // scene may have been edited since the trace). A chord lies inside the shape, which is convex, so where
 // the shape is drawn opaque and neither the eye nor the near plane is inside it, the shape's front hides
-// every pixel of the chord. In a cloud nearly half the path segments are such
+// the chord (but for pixels at its rim, which a line lights up to half a pixel off the segment:
+// docs/rendering.md, "Chords"). In a cloud nearly half the path segments are such
 // chords (a photon crosses each droplet it enters), and llvmpipe pays for every segment it sets up, seen
 // or not: the layers keep them apart so that the renderer can leave them out (Renderer::setLines).
 // `slotOfShape`, when given, maps the shape ids the events name to `octree`'s (a trace's compact scene leaves out

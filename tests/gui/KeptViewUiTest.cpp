@@ -7,6 +7,8 @@
 #include "gui/Screenshot.hpp"
 #include "gui/ViewportScene.hpp"
 #include "render/OffscreenImage.hpp"
+#include "render/TestOctahedron.hpp"
+#include "scene/ShapeSpec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -158,6 +160,38 @@ TEST_F(KeptView, ASelectionRecoloursTheViewAsARebuildWould) {
         }
     }
     EXPECT_GT(changed, 5) << "the selected droplets show";
+}
+
+// The same for a box and for two instances of one mesh geometry (Renderer::recolourShape finds them by
+// their own lists, not the droplets' order).
+TEST_F(KeptView, ASelectedBoxOrMeshIsRecolouredAsARebuildWould) {
+    SceneDocument& document = state_.scene.document();
+    ShapeSpec box;
+    box.kind = ShapeKind::Box;
+    box.boxMin = Point(-1.0, 2.5, -1.0);
+    box.boxMax = Point(1.0, 3.0, 1.0);
+    box.medium = 1;
+    std::vector<ShapeId> ids{document.addShape(box)};
+    for (const double x : {-3.0, 3.0}) {
+        ShapeSpec octahedron;
+        octahedron.kind = ShapeKind::Parametric;
+        octahedron.general = std::make_shared<test::TestOctahedron>(0.6);
+        octahedron.center = Point(x, 0.0, 0.0);
+        octahedron.medium = 1;
+        ids.push_back(document.addShape(octahedron));
+    }
+    state_.view.fitRequested = true;
+    drawn(kept_);
+    const snapshot::Image unselected = drawn(kept_);
+    for (const ShapeId id : ids) {
+        state_.scene.selectShape(id);
+        const std::uint64_t recolours = kept_.recolours();
+        const snapshot::Image recoloured = drawn(kept_);
+        EXPECT_EQ(kept_.recolours(), recolours + 1) << "shape " << id;
+        EXPECT_NE(recoloured.rgba, unselected.rgba) << "shape " << id << " shows selected";
+        ViewportScene rebuilt(harness_.gl(), false);
+        EXPECT_EQ(recoloured.rgba, drawn(rebuilt).rgba) << "shape " << id;
+    }
 }
 
 TEST_F(KeptView, ACopyIgnoresTheScissorAndLeavesItAsItWas) {

@@ -92,6 +92,23 @@ TEST(Chords, ASphereMovedOffThePathSinceTheTraceNoLongerHidesIt) {
     EXPECT_TRUE(render::isChord(path.events[1], path.events[2], inPlace));
 }
 
+// With a slice plane nothing is split off: the slice leaves droplets out by their centre but cuts the lines at
+// the plane, so a chord may outlive its droplet.
+TEST(Chords, WithASlicePlaneNoneAreSplitOff) {
+    const Octree octree = threeShapes();
+    const std::vector<Source> sources;
+    const std::vector<PhotonPath> paths{pathThroughThreeShapes()};
+    render::LayerInputs inputs{octree, sources, render::sceneBounds(octree.shapes())};
+    inputs.paths = &paths;
+    render::LayerOptions options;
+    const render::SceneLayers whole = render::buildSceneLayers(inputs, options, render::Anchor{});
+    EXPECT_EQ(whole.chords.vertices().size(), 6u);
+    options.slice = render::SlicePlane{Point(0, 0, 10), Direction(0, 0, 1)};  // keeps everything
+    const render::SceneLayers sliced = render::buildSceneLayers(inputs, options, render::Anchor{});
+    EXPECT_TRUE(sliced.chords.empty());
+    EXPECT_EQ(sliced.lines.vertices().size(), whole.lines.vertices().size() + whole.chords.vertices().size());
+}
+
 // A trace's compact ids (the document's empty slots left out) name the shapes through its map of slots.
 TEST(Chords, TheEventsShapeIdsGoThroughTheTracesSlots) {
     const Octree octree = threeShapes();
