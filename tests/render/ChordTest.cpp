@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -208,7 +209,8 @@ protected:
     }
 
     // The layers uploaded as the app does (the chords kept apart), then one frame from `eye`.
-    snapshot::Image draw(const Point& eye, render::RenderOptions options) {
+    // `nearPlane`, when given, in place of the one fitted to the bounds.
+    snapshot::Image draw(const Point& eye, render::RenderOptions options, std::optional<double> nearPlane = {}) {
         render::LayerOptions layerOptions;
         layerOptions.pathColouring = render::PathColouring::Event;
         render::LayerInputs inputs{*octree_, sources_, render::sceneBounds(octree_->shapes())};
@@ -217,7 +219,8 @@ protected:
         renderer_.setAnchor(anchor);
         layers_ = std::make_unique<render::SceneLayers>(render::buildSceneLayers(inputs, layerOptions, anchor));
         render::uploadScene(renderer_, octree_->shapes(), *layers_, layerOptions);
-        const render::Camera camera = test::cameraLookingAt(eye, Point(0, 0, -1), 60.0, kBounds);
+        render::Camera camera = test::cameraLookingAt(eye, Point(0, 0, -1), 60.0, kBounds);
+        if (nearPlane) camera.nearPlane = *nearPlane;
         options.background = {0.0f, 0.0f, 0.0f, 1.0f};
         lineDraws().clear();
         renderer_.draw(camera, options, kWidth, kHeight);
@@ -296,6 +299,18 @@ TEST_F(ChordsDrawn, DrawnWhereTheyCanShow) {
             EXPECT_GT(orangePixels(image), 10) << eye.transpose();
         }
     }
+}
+
+// The eye outside the sphere, 3 from its front: a near plane 3.2 ahead cuts it open and the chords are drawn.
+// The test is against the chunk's bounding sphere, around the box of its shapes' bounds (here sqrt(3) times
+// the sphere's radius, 2.27 from the eye), so a near plane 1.5 ahead, short of it even at its corners
+// (1.01 x 1.5 / cos of their angle off the axis: 2.1 at this field of view and aspect), leaves them out.
+TEST_F(ChordsDrawn, DrawnWhenTheNearPlaneCutsTheSphereOpen) {
+    const Point eye(0.0, 0.0, 4.0);
+    draw(eye, render::RenderOptions{}, 3.2);
+    EXPECT_EQ(drawnLineVertices(), otherLineVertices() + chordVertices());
+    draw(eye, render::RenderOptions{}, 1.5);
+    EXPECT_EQ(drawnLineVertices(), otherLineVertices());
 }
 
 }  // namespace
