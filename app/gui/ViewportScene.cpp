@@ -135,10 +135,11 @@ bool ViewportScene::recolour(const AppState& state, const ViewKey& key) {
     selectionMoved.selectedShape = key.selectedShape;
     if (selectionMoved != key) return false;
     const SceneDocument& document = state.scene.document();
-    if (const Shape* was = document.shape(builtFrom_->selectedShape)) {
-        renderer_.recolourShape(builtFrom_->selectedShape, render::mediumColour(was->mediumId()));
+    for (const ShapeId id : {builtFrom_->selectedShape, key.selectedShape}) {
+        if (const Shape* shape = document.shape(id)) {
+            renderer_.recolourShape(id, render::shapeColour(*shape, id == key.selectedShape));
+        }
     }
-    if (document.shape(key.selectedShape)) renderer_.recolourShape(key.selectedShape, render::kHighlight);
     ++rebuilds_;
     ++recolours_;
     builtFrom_ = key;

@@ -37,13 +37,15 @@ bool isSphereInstance(const ShapeInstance& shape) {
     return scaled(shape.linear) && scaled(shape.inverseLinear);
 }
 
+Colour shapeColour(const Shape& shape, bool selected) { return selected ? kHighlight : mediumColour(shape.mediumId()); }
+
 ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& shapes, const Anchor& anchor,
                                    ShapeId selected, MeshCache* cache) {
     ShapeInstances out;
     for (ShapeId id = 0; id < shapes.size(); ++id) {
         const Shape* shape = shapes[id].get();
         if (!shape) continue;
-        const Colour colour = id == selected ? kHighlight : mediumColour(shape->mediumId());
+        const Colour colour = shapeColour(*shape, id == selected);
         switch (shape->kind()) {
         case ShapeKind::Sphere: {
             const auto& sphere = static_cast<const Sphere&>(*shape);

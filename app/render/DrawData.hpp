@@ -70,6 +70,9 @@ ShapeInstances buildShapeInstances(const std::vector<std::unique_ptr<Shape>>& sh
 
 inline constexpr Colour kHighlight{1.0f, 0.85f, 0.1f, 1.0f};
 
+// The colour a shape's instance is drawn in: kHighlight when selected, else its medium's.
+Colour shapeColour(const Shape& shape, bool selected);
+
 // A small sphere for the impostor shaders (event markers).
 ShapeInstance sphereInstance(const Point& center, double radius, const Anchor& anchor, const Colour& colour);
 // Whether the instance's matrices are exactly r I and I / r in float (equal diagonal, zero elsewhere): a sphere,

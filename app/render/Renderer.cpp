@@ -532,13 +532,14 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
 
     drawShapes(*markers_, *impostor_, frame, 1.0f);
     const bool boxesBlended = options.translucent || options.translucentBoxes;
-    if (options.shapes && !options.translucent) drawRounded(frame, 1.0f, options.pointPixels, options.sphereProgram);
+    const bool roundedOpaque = options.shapes && !options.translucent;
+    if (roundedOpaque) drawRounded(frame, 1.0f, options.pointPixels, options.sphereProgram);
     if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, frame, 1.0f);
     if (options.shapes && !options.translucent) drawMeshes(frame, 1.0f);
     // The near plane's corners are the farthest of its points from the eye: 1 / cos of the angle off the axis.
     const double nearReach = 1.01 * local.nearPlane * std::sqrt(1.0 + cornerTan2);
-    const bool chordsHidden = options.skipHiddenChords && options.shapes && !options.translucent &&
-                              chordsFrom_ < lines_->count && !roundedWithin(local.eye, nearReach);
+    const bool chordsHidden = options.skipHiddenChords && roundedOpaque && chordsFrom_ < lines_->count &&
+                              !roundedWithin(local.eye, nearReach);
     if (const GLsizei lineVertices = chordsHidden ? chordsFrom_ : lines_->count; options.lines && lineVertices > 0) {
         line_->use();
         gl_.UniformMatrix4fv(line_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
