@@ -12,16 +12,6 @@ namespace {
 
 using namespace test;
 
-Detector screen(const std::string& name = "screen") {
-    Detector plane;
-    plane.name = name;
-    plane.center = Point(0, 0, 20);
-    plane.normal = Direction(0, 0, -1);
-    plane.size = {8.0, 6.0};
-    plane.pixels = {32, 24};
-    return plane;
-}
-
 Detector camera(const std::string& name = "sky") {
     Detector farField;
     farField.name = name;

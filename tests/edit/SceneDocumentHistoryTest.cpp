@@ -73,12 +73,7 @@ TEST(SceneDocument, TheRevisionBesidesSourcesStaysThroughSourceEditsOnly) {
     water.n = 1.34;
     document.setMedium(1, water);
     expectBothMove("medium");
-    Detector absorber;
-    absorber.name = "absorber";
-    absorber.center = Point(0, 0, 20);
-    absorber.normal = Direction(0, 0, -1);
-    absorber.size = {8.0, 6.0};
-    absorber.pixels = {4, 4};
+    Detector absorber = screen("absorber");
     document.addDetector(absorber);
     expectBothMove("detector");
     absorber.center = Point(0, 0, 21);

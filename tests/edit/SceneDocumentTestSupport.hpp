@@ -31,6 +31,17 @@ inline ShapeSpec sphereAt(const Point& center, double radius, MediumId medium = 
     return spec;
 }
 
+// A plane detector 20 above the droplets, facing them.
+inline Detector screen(const std::string& name = "screen") {
+    Detector plane;
+    plane.name = name;
+    plane.center = Point(0, 0, 20);
+    plane.normal = Direction(0, 0, -1);
+    plane.size = {8.0, 6.0};
+    plane.pixels = {32, 24};
+    return plane;
+}
+
 // The shape firstHit finds from `origin` along `direction`, or RayHit::kNone.
 inline ShapeId hitFrom(const SceneDocument& document, const Point& origin, const Eigen::Vector3d& direction) {
     return document.octree().firstHit(origin, Direction(direction)).shape;
