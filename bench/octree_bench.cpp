@@ -152,6 +152,7 @@ struct SizeResult {
     std::size_t count = 0;
     double halfSide = 0.0;
     double octreeBuild = 0.0;
+    double oneByOneBuild = 0.0;
     double floatBuild = 0.0;
     double userBuild = 0.0;
     double octreeBytesUsed = 0.0;  // per droplet: Octree::bytesUsed()
@@ -251,6 +252,16 @@ SizeResult runSize(std::size_t count, const Options& options) {
     result.octreeHeap = perDroplet(static_cast<double>(heapOctree) - static_cast<double>(heapShapes));
     result.octreeTotal = perDroplet(static_cast<double>(heapOctree) - static_cast<double>(heapStart));
     result.gridLevel = octree.gridLevel();
+    {
+        // The same tree placed one shape at a time (OctreeBuild::OneByOne), as the octree was built before the
+        // top-down build: its peer for the build time.
+        std::vector<std::unique_ptr<Shape>> copies;
+        copies.reserve(count);
+        for (const auto& shape : octree.shapes()) copies.push_back(shape->clone());
+        const Stopwatch oneByOneWatch;
+        const Octree oneByOne(std::move(copies), options.octree, OctreeBuild::OneByOne);
+        result.oneByOneBuild = oneByOneWatch.seconds();
+    }
     for (const LevelStatistics& level : octree.statistics()) {
         result.depth = std::max(result.depth, level.level);
         result.leaves += level.leaves;
@@ -295,16 +306,17 @@ SizeResult runSize(std::size_t count, const Options& options) {
 
 void printTables(const std::vector<SizeResult>& results, double floatTnearRelative) {
     std::cout << "\n### Build and memory (bytes per droplet)\n\n"
-                 "| N | cube half-side | octree build s | Embree float build s | Embree user build s | "
+                 "| N | cube half-side | octree build s | one by one s | Embree float build s | Embree user build s | "
                  "octree bytesUsed | octree heap | octree + Spheres heap | Embree float | Embree user + spheres | "
                  "octree depth | top grid level | leaves | references per droplet |\n"
-                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SizeResult& r : results) {
         std::cout << "| " << r.count << " | " << fixed(r.halfSide, 3) << " | " << fixed(r.octreeBuild, 3) << " | "
-                  << fixed(r.floatBuild, 3) << " | " << fixed(r.userBuild, 3) << " | " << fixed(r.octreeBytesUsed, 1)
-                  << " | " << fixed(r.octreeHeap, 0) << " | " << fixed(r.octreeTotal, 0) << " | "
-                  << fixed(r.floatBytes, 0) << " | " << fixed(r.userBytes, 0) << " | " << r.depth << " | "
-                  << r.gridLevel << " | " << r.leaves << " | " << fixed(r.referencesPerDroplet, 2) << " |\n";
+                  << fixed(r.oneByOneBuild, 3) << " | " << fixed(r.floatBuild, 3) << " | " << fixed(r.userBuild, 3)
+                  << " | " << fixed(r.octreeBytesUsed, 1) << " | " << fixed(r.octreeHeap, 0) << " | "
+                  << fixed(r.octreeTotal, 0) << " | " << fixed(r.floatBytes, 0) << " | " << fixed(r.userBytes, 0)
+                  << " | " << r.depth << " | " << r.gridLevel << " | " << r.leaves << " | "
+                  << fixed(r.referencesPerDroplet, 2) << " |\n";
     }
     std::cout << "\n### Throughput (Mrays/s, one thread)\n\n"
                  "| N | rays | brute force | octree | Embree float | Embree user (double) | octree / Embree float | "

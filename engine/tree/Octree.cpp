@@ -4,6 +4,7 @@
 #include "tree/BoundingBox.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -67,8 +68,8 @@ std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 }  // namespace
 
-Octree::Octree(std::vector<std::unique_ptr<Shape>> shapes, OctreeSettings settings)
-    : shapes_(std::move(shapes)), settings_(settings) {
+Octree::Octree(std::vector<std::unique_ptr<Shape>> shapes, OctreeSettings settings, OctreeBuild build)
+    : shapes_(std::move(shapes)), settings_(settings), build_(build) {
     if (settings_.maxDepth < 0 || settings_.maxDepth > 30)
         throw std::invalid_argument("octree max_depth must be in 0..30");
     if (settings_.maxShapesPerLeaf < 1) throw std::invalid_argument("octree max_shapes_per_leaf must be >= 1");
@@ -84,23 +85,116 @@ void Octree::rebuild(const CellBounds& bounds) {
     margin_ = std::max(kMarginRelative * bounds.diagonal().norm(), 4.0 * largestBand(shapes_));
     building_.assign(1, Node{});
     liveShapes_ = 0;
-    // Placed in Morton order of their centres: consecutive shapes then walk the same cells, which
-    // stay in cache (the final tree does not depend on the order).
+    // In Morton order of their centres: placed one by one, consecutive shapes then walk the same cells, which
+    // stay in cache. The tree's cells do not depend on the order, but each cell keeps its shapes in it.
     std::vector<std::pair<std::uint64_t, ShapeId>> order;
     order.reserve(shapes_.size());
+    std::vector<CellBounds> extents(shapes_.size());
     const Eigen::Array3d scale = 2097151.0 / rootBounds_.sizes().array();  // 21 bits per axis
     for (std::size_t id = 0; id < shapes_.size(); ++id) {
         if (!shapes_[id]) continue;
+        extents[id] = shapes_[id]->bounds();
         const Eigen::Array3d cell =
-            ((shapes_[id]->bounds().center() - rootBounds_.min()).array() * scale).max(0.0).min(2097151.0);
+            ((extents[id].center() - rootBounds_.min()).array() * scale).max(0.0).min(2097151.0);
         order.emplace_back(mortonCode(static_cast<std::uint32_t>(cell.x()), static_cast<std::uint32_t>(cell.y()),
                                       static_cast<std::uint32_t>(cell.z())),
                            static_cast<ShapeId>(id));
     }
     std::sort(order.begin(), order.end());
-    for (const auto& [code, id] : order) place(0, rootBounds_, id, shapes_[id]->bounds());
     liveShapes_ = order.size();
+    if (build_ == OctreeBuild::OneByOne) {
+        for (const auto& [code, id] : order) place(0, rootBounds_, id, extents[id]);
+        freeze();
+        return;
+    }
+    // Read once, in that order, so that the cells' lists (positions in it, ascending) read them in sequence.
+    std::vector<Placing> placing(order.size());
+    std::vector<std::uint32_t> positions(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const ShapeId id = order[k].second;
+        Placing& shape = placing[k];
+        shape.extent = extents[id];
+        shape.shape = shapes_[id].get();
+        shape.id = id;
+        shape.sphere = shape.shape->kind() == ShapeKind::Sphere;
+        if (shape.sphere) {
+            shape.center = static_cast<const Sphere*>(shape.shape)->center();
+            shape.radius = static_cast<const Sphere*>(shape.shape)->radius();
+        }
+        positions[k] = static_cast<std::uint32_t>(k);
+    }
+    order = {};
+    extents = {};
+    placeTopDown(0, rootBounds_, positions, placing);
     freeze();
+}
+
+// A cell is split exactly when more than maxShapesPerLeaf shapes are placed into it (below maxDepth), whatever
+// their order, so the cells can be made from the top down: each cell's shapes handed to the children they reach,
+// in order, but those reaching all eight, which it keeps. The same tests as place() and reaches(), on the
+// shapes' bounds and spheres read once; the children are numbered depth first instead of in the order of the
+// splits, which no query depends on.
+void Octree::placeTopDown(std::uint32_t node, const CellBounds& bounds, std::vector<std::uint32_t>& positions,
+                          const std::vector<Placing>& placing) {
+    const std::uint32_t level = building_[node].level;
+    if (positions.size() <= static_cast<std::size_t>(settings_.maxShapesPerLeaf) ||
+        static_cast<int>(level) >= settings_.maxDepth) {
+        Node& leaf = building_[node];
+        for (const std::uint32_t at : positions) {
+            (placing[at].sphere ? leaf.sphereIds : leaf.otherIds).push_back(placing[at].id);
+        }
+        return;
+    }
+    const auto first = static_cast<std::uint32_t>(building_.size());
+    building_.resize(building_.size() + 8);
+    for (std::uint32_t k = 0; k < 8; ++k) building_[first + k].level = level + 1;
+    Node& inner = building_[node];
+    inner.firstChild = first;
+    std::array<CellBounds, 8> children;
+    std::array<CellBounds, 8> grown;
+    for (int child = 0; child < 8; ++child) {
+        children[child] = childBounds(bounds, child);
+        grown[child] = inflated(children[child], margin_);
+    }
+    // A grown child's side along each axis is the lower child's (child 0) or the upper one's (child 7), and a box
+    // meets it when it meets all three sides (CellBounds::intersects): each side is compared once per shape.
+    const CellBounds& lower = grown[0];
+    const CellBounds& upper = grown[7];
+    std::array<std::vector<std::uint32_t>, 8> lists;
+    for (const std::uint32_t at : positions) {
+        const Placing& shape = placing[at];
+        std::uint32_t meetsLower = 0;
+        std::uint32_t meetsUpper = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double low = shape.extent.min()[axis];
+            const double high = shape.extent.max()[axis];
+            meetsLower |= (lower.min()[axis] <= high && low <= lower.max()[axis] ? 1U : 0U) << axis;
+            meetsUpper |= (upper.min()[axis] <= high && low <= upper.max()[axis] ? 1U : 0U) << axis;
+        }
+        std::uint32_t reached = 0;
+        for (std::uint32_t child = 0; child < 8; ++child) {
+            if (((child & meetsUpper) | (~child & 7U & meetsLower)) != 7U) continue;
+            const CellBounds& cell = grown[child];
+            bool reaches = false;
+            if (shape.sphere) {
+                const Point closest = shape.center.cwiseMax(cell.min()).cwiseMin(cell.max());
+                reaches = (closest - shape.center).squaredNorm() < shape.radius * shape.radius;
+            } else {
+                reaches = shape.shape->overlaps(Box(cell.min(), cell.max()));
+            }
+            reached |= (reaches ? 1U : 0U) << child;
+        }
+        if (reached == 0xff) {
+            (shape.sphere ? inner.sphereIds : inner.otherIds).push_back(shape.id);
+            continue;
+        }
+        for (int child = 0; child < 8; ++child) {
+            if ((reached >> child) & 1U) lists[child].push_back(at);
+        }
+    }
+    positions = {};  // handed down: freed before the children's lists are
+    for (std::uint32_t child = 0; child < 8; ++child)
+        placeTopDown(first + child, children[child], lists[child], placing);
 }
 
 void Octree::freeze() {

@@ -29,7 +29,8 @@ class BoundingBox;
 // insert or remove thaws, edits and refreezes (O(N), a few ms per 1e5 shapes).
 class Octree {
 public:
-    explicit Octree(std::vector<std::unique_ptr<Shape>> shapes, OctreeSettings settings = {});
+    explicit Octree(std::vector<std::unique_ptr<Shape>> shapes, OctreeSettings settings = {},
+                    OctreeBuild build = OctreeBuild::TopDown);
     ~Octree();
     Octree(Octree&&) noexcept;
     Octree& operator=(Octree&&) noexcept;
@@ -132,6 +133,19 @@ private:
     struct Traversal;
 
     void rebuild(const CellBounds& bounds);
+    // What the top-down build reads of each shape, once.
+    struct Placing {
+        CellBounds extent;
+        Point center;  // a sphere's
+        double radius;
+        const Shape* shape;
+        ShapeId id;
+        bool sphere;
+    };
+    // Stores the shapes at `positions` of `placing` (ascending, the order they are kept in) at `node` and below,
+    // splitting as place() would.
+    void placeTopDown(std::uint32_t node, const CellBounds& bounds, std::vector<std::uint32_t>& positions,
+                      const std::vector<Placing>& placing);
     // insert and insertAt: stores `shape` in the empty slot `id` and places it.
     void fillSlot(ShapeId id, std::unique_ptr<Shape> shape);
     // rootSpan given 1 / d (componentwise; the traversal has it already), without rootSpan's checks: d must be
@@ -171,6 +185,7 @@ private:
     std::vector<std::unique_ptr<Shape>> shapes_;
     std::size_t liveShapes_ = 0;
     OctreeSettings settings_;
+    OctreeBuild build_ = OctreeBuild::TopDown;
     CellBounds rootBounds_;
     double margin_ = 0.0;
     std::vector<Node> building_;  // empty between edits

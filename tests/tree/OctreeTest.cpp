@@ -1,15 +1,18 @@
 #include "tree/BoundingBox.hpp"
 #include "tree/Octree.hpp"
 
+#include "geometry/Box.hpp"
 #include "geometry/RandomGeometry.hpp"
 #include "geometry/Sphere.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <tuple>
 
 namespace dropscope {
 namespace {
@@ -315,6 +318,62 @@ TEST(Octree, PointsInOneLeafHaveOnePath) {
     EXPECT_GE(shared, 10000);
     EXPECT_FALSE(tree.leafHolding(Point(1e3, 0, 0)));
     EXPECT_FALSE(tree.leafHolding(Point(std::numeric_limits<double>::quiet_NaN(), 0, 0)));
+}
+
+// Every cell, and the shapes each holds in their order, as visitCells and the paths to the leaves give them:
+// what the queries can see of a tree, the cells' numbering aside.
+struct TreeContents {
+    std::vector<std::tuple<std::array<double, 6>, int, bool, std::size_t>> cells;  // min, max, level, leaf, count
+    std::vector<std::vector<ShapeId>> leafPaths;
+};
+
+TreeContents contentsOf(const Octree& tree) {
+    TreeContents contents;
+    tree.visitCells([&](const CellBounds& bounds, int level, bool leaf, std::size_t stored) {
+        const std::array<double, 6> corners{bounds.min().x(), bounds.min().y(), bounds.min().z(),
+                                            bounds.max().x(), bounds.max().y(), bounds.max().z()};
+        contents.cells.emplace_back(corners, level, leaf, stored);
+        if (leaf) {
+            std::vector<ShapeId>& path = contents.leafPaths.emplace_back();
+            tree.forEachShapeAlongPath(bounds.center(), [&](ShapeId id) { path.push_back(id); });
+        }
+        return true;
+    });
+    return contents;
+}
+
+std::vector<std::unique_ptr<Shape>> copies(const std::vector<std::unique_ptr<Shape>>& shapes) {
+    std::vector<std::unique_ptr<Shape>> copied;
+    for (const auto& shape : shapes) copied.push_back(shape->clone());
+    return copied;
+}
+
+// The top-down build makes the tree that placing the shapes one by one makes: the same cells, each holding the
+// same shapes in the same order, whatever the leaf size and depth limit; with boxes, ellipsoids, a sphere and a
+// box reaching every cell (kept high up), coincident spheres, and spheres on the root's mid-planes.
+TEST(Octree, TheTopDownBuildMakesTheTreeOfTheOneByOneBuild) {
+    Rng rng(23);
+    std::vector<std::unique_ptr<Shape>> shapes = randomScene(rng, 1500, 4.0);
+    shapes.push_back(std::make_unique<Sphere>(Point(0.0, 0.0, 0.0), 9.0));
+    shapes.push_back(std::make_unique<Box>(Point(-3.0, -3.0, -3.0), Point(3.0, 3.0, 3.0)));
+    for (int k = 0; k < 40; ++k) shapes.push_back(std::make_unique<Sphere>(Point(1.0, 1.0, 1.0), 0.1));
+    for (int k = 0; k < 40; ++k) {
+        shapes.push_back(std::make_unique<Sphere>(Point(0.0, testing::uniform(rng, -4.0, 4.0), 0.0), 0.05));
+    }
+    for (const OctreeSettings settings :
+         {OctreeSettings{}, OctreeSettings{10, 4}, OctreeSettings{3, 2}, OctreeSettings{0, 8}, OctreeSettings{12, 1}}) {
+        SCOPED_TRACE("max depth " + std::to_string(settings.maxDepth) + ", leaf " +
+                     std::to_string(settings.maxShapesPerLeaf));
+        const Octree topDown(copies(shapes), settings);
+        const Octree oneByOne(copies(shapes), settings, OctreeBuild::OneByOne);
+        const TreeContents expected = contentsOf(oneByOne);
+        const TreeContents actual = contentsOf(topDown);
+        EXPECT_GT(expected.cells.size(), settings.maxDepth > 0 ? 8U : 0U);
+        EXPECT_TRUE(actual.cells == expected.cells);
+        EXPECT_TRUE(actual.leafPaths == expected.leafPaths);
+        EXPECT_EQ(topDown.margin(), oneByOne.margin());
+        EXPECT_EQ(topDown.gridLevel(), oneByOne.gridLevel());
+    }
 }
 
 TEST(Octree, OverlappingEqualsBruteForce) {
