@@ -34,6 +34,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <thread>
 #include <vector>
@@ -269,18 +270,49 @@ int run(const Options& options) {
                 viewChords.minimum(), viewChords.median() / reference3d);
     std::printf("steady (kept view copied): %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steadyCopied.median(),
                 1e3 / orbit.median());
-    // The ray tree (R) is traced on the UI thread from an optical scene built from the document.
-    Stopwatch rayTree;
-    gui::fireRayTree(app.state());
-    std::printf("ray tree on the UI thread (optical scene build included): %.1f ms, %zu events\n",
-                1e3 * rayTree.seconds(), app.state().traces.rayTree ? app.state().traces.rayTree->nodes.size() : 0);
-    // Again from a source moved a little (what a drag with "live" on does): the optical scene is kept.
-    std::vector<Source> sources = app.state().scene.document().sources();
-    sources[app.state().scene.selectedSource()].origin += Point(1e-3, 0.0, 0.0);
-    app.state().scene.document().setSources(sources);
-    Stopwatch again;
-    gui::fireRayTree(app.state());
-    std::printf("ray tree again, the source moved (optical scene kept): %.1f ms\n", 1e3 * again.seconds());
+    // The ray tree (R): first of the scene (its optical scene built from the document), then again from a source
+    // moved a little (what a drag with "live" on does: the optical scene is kept). On the UI thread, as every tree
+    // was before RayTreeJob and as a document of up to TraceState::rayTreeBackgroundShapes shapes still is; then
+    // on the job, the app drawing orbiting frames until the tree arrives. The two get the same tree.
+    gui::TraceState& traces = app.state().traces;
+    const auto moveSource = [&] {
+        std::vector<Source> sources = app.state().scene.document().sources();
+        sources[app.state().scene.selectedSource()].origin += Point(1e-3, 0.0, 0.0);
+        app.state().scene.document().setSources(sources);
+    };
+    const std::size_t background = traces.rayTreeBackgroundShapes;
+    traces.rayTreeBackgroundShapes = std::numeric_limits<std::size_t>::max();
+    for (const bool kept : {false, true}) {
+        if (kept) moveSource();
+        Stopwatch watch;
+        gui::fireRayTree(app.state());
+        std::printf("ray tree on the UI thread, %s: %.1f ms, %zu events\n",
+                    kept ? "the source moved (optical scene kept)" : "optical scene built", 1e3 * watch.seconds(),
+                    traces.rayTree ? traces.rayTree->nodes.size() : 0);
+    }
+    traces.rayTreeBackgroundShapes = 0;
+    gui::forgetTraces(traces);
+    for (const bool kept : {false, true}) {
+        if (kept) moveSource();
+        Stopwatch shown;
+        Stopwatch call;
+        gui::fireRayTree(app.state());
+        const double asked = 1e3 * call.seconds();
+        Series frames;
+        while (traces.rayTreeJob.running() || !traces.rayTree) {
+            app.state().view.camera.orbit(kOrbitStep, 0.0);
+            Stopwatch frame;
+            app.frame(input);
+            context.gl().Finish();
+            frames.ms.push_back(1e3 * frame.seconds());
+        }
+        std::printf(
+            "ray tree on the job, %s: %.1f ms on the UI thread to ask, shown after %.1f ms and %zu "
+            "orbiting frames (median %.1f ms, longest %.1f ms), %zu events\n",
+            kept ? "the source moved" : "optical scene built", asked, 1e3 * shown.seconds(), frames.ms.size(),
+            frames.median(), *std::max_element(frames.ms.begin(), frames.ms.end()), traces.rayTree->nodes.size());
+    }
+    traces.rayTreeBackgroundShapes = background;
     if (!options.png.empty()) {
         app.frame(input);
         gui::writePng(gui::readFramebuffer(context.gl(), kWidth, kHeight), options.png);

@@ -82,10 +82,11 @@ void App::frame(const InputFrame& input) {
     if (state_.ui.screenshot && state_.ui.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
 }
 
-// A trace running, a screenshot due, or a text field being edited (its cursor blinks).
+// A trace or a ray tree running, a screenshot due, or a text field being edited (its cursor blinks).
 bool App::busy() const {
     ImGui::SetCurrentContext(context_);
-    return state_.traces.job.running() || state_.ui.screenshot.has_value() || ImGui::GetIO().WantTextInput;
+    return state_.traces.job.running() || state_.traces.rayTreeJob.running() || state_.ui.screenshot.has_value() ||
+           ImGui::GetIO().WantTextInput;
 }
 
 void App::takeScreenshot(int framebufferWidth, int framebufferHeight) {

@@ -46,34 +46,55 @@ void startTrace(AppState& state, bool automatic) {
     if (!automatic) state.ui.status.say("tracing " + std::to_string(settings.photons) + " photons ...");
 }
 
+// Shows a tree worked out by traceRayTreeRequest, here or on the job.
+void showRayTree(AppState& state, RayTreeOutcome outcome, bool automatic) {
+    TraceState& traces = state.traces;
+    if (outcome.error) return state.ui.status.refuse("ray tree failed: " + *outcome.error);
+    traces.rayTreeScene = std::move(outcome.scene);
+    traces.rayTree = std::move(*outcome.tree);
+    ++traces.shownId;
+    state.view.layers.rayTree = true;
+    if (!automatic) {
+        state.ui.status.say("ray tree: " + std::to_string(traces.rayTree->nodes.size()) + " events, " +
+                            std::to_string(traces.rayTree->absorbed) + " absorbed");
+    }
+}
+
 void traceRayTree(AppState& state, bool automatic) {
     TraceState& traces = state.traces;
     const SceneDocument& document = state.scene.document();
     traces.rayTreeTraced = tracedNow(state);
     const auto& sources = document.sources();
     if (sources.empty()) return state.ui.status.refuse("nothing to fire: add a source first (Fire panel)");
+    if (traces.rayTreeJob.running()) {  // asked again once it is done, with the document as it is then
+        traces.rayTreeAskedAutomatic = traces.rayTreeAskedAutomatic.value_or(true) && automatic;
+        return;
+    }
     const Source& source = sources[state.scene.selectedSource()];
     state.ui.status.attempt("ray tree failed", [&] {
+        RayTreeRequest request;
+        request.generation = state.scene.generation();
+        request.revision = document.revisionBesidesSources();
         const std::shared_ptr<const RayTreeScene>& kept = traces.rayTreeScene;
-        if (!kept || kept->generation != state.scene.generation() ||
-            kept->revision != document.revisionBesidesSources()) {
-            auto built = std::make_shared<RayTreeScene>();
-            built->generation = state.scene.generation();
-            built->revision = document.revisionBesidesSources();
-            built->optical = std::make_shared<const OpticalScene>(document.toScene(&built->slotOfShape));
-            traces.rayTreeScene = std::move(built);
+        if (kept && kept->generation == request.generation && kept->revision == request.revision) {
+            request.kept = kept;
+        } else {
+            request.scene = document.toScene(&request.slotOfShape);
         }
-        const Ray ray{source.origin, source.direction};
-        RayTreeSettings settings;
-        settings.polarisation = traces.fire.polarisation;
-        traces.rayTree = traceRayTree(*traces.rayTreeScene->optical, ray, 1.0, settings,
-                                      emittedPolarisation(source, source.direction));
-        ++traces.shownId;
-        state.view.layers.rayTree = true;
+        request.ray = Ray{source.origin, source.direction};
+        request.settings.polarisation = traces.fire.polarisation;
+        request.polarisation = emittedPolarisation(source, source.direction);
+        if (document.shapeCount() <= traces.rayTreeBackgroundShapes) {
+            return showRayTree(state, traceRayTreeRequest(std::move(request)), automatic);
+        }
         if (!automatic) {
-            state.ui.status.say("ray tree: " + std::to_string(traces.rayTree->nodes.size()) + " events, " +
-                                std::to_string(traces.rayTree->absorbed) + " absorbed");
+            state.ui.status.say(request.kept ? std::string("tracing the ray tree ...")
+                                             : "ray tree: building the optical scene of " +
+                                                   std::to_string(document.shapeCount()) + " shapes ...");
         }
+        traces.rayTreeJob.start(std::move(request));
+        traces.rayTreeJobAutomatic = automatic;
+        traces.rayTreeJobWanted = true;
     });
 }
 
@@ -122,6 +143,14 @@ void updateTraces(AppState& state) {
                 state.ui.status.say(text.str());
             }
         }
+    }
+    if (auto outcome = traces.rayTreeJob.takeResult(); outcome && traces.rayTreeJobWanted) {
+        traces.rayTreeJobWanted = false;
+        showRayTree(state, std::move(*outcome), traces.rayTreeJobAutomatic);
+    }
+    if (const std::optional<bool> asked = traces.rayTreeAskedAutomatic; asked && !traces.rayTreeJob.running()) {
+        traces.rayTreeAskedAutomatic.reset();
+        traceRayTree(state, *asked);
     }
     if (!traces.fire.live) return;
     const TracedWith now = tracedNow(state);
@@ -176,6 +205,8 @@ void forgetTraces(TraceState& traces) {
     traces.trace.reset();
     traces.rayTree.reset();
     traces.rayTreeScene.reset();
+    traces.rayTreeJobWanted = false;  // a tree still being traced was of what is forgotten
+    traces.rayTreeAskedAutomatic.reset();
     traces.traversal.reset();
     traces.selectedPath = -1;
     traces.selectedEvent = 0;

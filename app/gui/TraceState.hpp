@@ -1,6 +1,7 @@
 #pragma once
 
 #include "gui/PathFilter.hpp"
+#include "gui/RayTreeJob.hpp"
 #include "gui/ResultViews.hpp"
 #include "gui/TraceJob.hpp"
 #include "render/OctreeLayer.hpp"
@@ -40,17 +41,6 @@ struct TracedWith {
     bool operator==(const TracedWith&) const = default;
 };
 
-// The optical scene a ray tree is traced through, with its compact shape ids' slots in the document, and
-// what it was built from: it is kept for the next tree while the document changes only its sources (a drag of
-// the source with "live" on traces a tree a frame), as building it costs about what the tree does at 1e5
-// droplets and seconds at 1e6.
-struct RayTreeScene {
-    std::uint64_t generation = 0;  // SceneState::generation
-    std::uint64_t revision = 0;    // SceneDocument::revisionBesidesSources
-    std::shared_ptr<const OpticalScene> optical;
-    std::vector<ShapeId> slotOfShape;
-};
-
 // A finished trace and how its compact shape ids map back to the document's slots.
 struct TraceShown {
     TraceOutcome outcome;
@@ -77,6 +67,15 @@ struct TraceState {
     TracedWith rayTreeTraced;        // what it was traced with
     // What it was traced through, and the next one may be.
     std::shared_ptr<const RayTreeScene> rayTreeScene;
+    // Trees of documents with more shapes than this are traced on rayTreeJob, so that the app keeps drawing:
+    // above it the first tree of a scene costs more than about 0.1 s (its optical scene built), 2.3 s at 1e6
+    // droplets, and each tree again 0.08-0.4 s (docs/performance.md).
+    std::size_t rayTreeBackgroundShapes = 50'000;
+    RayTreeJob rayTreeJob;
+    bool rayTreeJobAutomatic = false;  // the tree on rayTreeJob was asked for by "live", not the user
+    bool rayTreeJobWanted = false;     // its outcome is to be shown (not since the traces were forgotten)
+    // A tree asked for while rayTreeJob was busy, traced when it is done: whether only by "live".
+    std::optional<bool> rayTreeAskedAutomatic;
     // Which results are shown: moves on whenever `trace` or `rayTree` is replaced or dropped, so the 3D
     // view knows to draw them again (as SceneDocument::revision() does for the scene).
     std::uint64_t shownId = 0;

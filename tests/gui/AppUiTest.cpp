@@ -3,6 +3,7 @@
 
 #include "geometry/Sphere.hpp"
 #include "gui/Actions.hpp"
+#include "gui/TraceActions.hpp"
 #include "run/TraceRun.hpp"
 #include "scene/ShapeSpec.hpp"
 #include "snapshot/Image.hpp"
@@ -12,12 +13,14 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <numbers>
+#include <thread>
 
 namespace dropscope::gui::testing {
 namespace {
@@ -254,24 +257,40 @@ TEST(AppUi, TheRayTreeKeySplitsTheRayAtTheFirstSurfaceByFresnel) {
     EXPECT_NEAR(weights[1], 1.0 - kHeadOnReflectance, kFresnelRounding);
 }
 
+// The ray tree shown is the one an optical scene built afresh from the document gives, node for node.
+void expectTreeOfTheDocument(AppHarness& harness, const char* when) {
+    ASSERT_TRUE(harness.state().traces.rayTree) << when;
+    const RayTree& shown = *harness.state().traces.rayTree;
+    const SceneDocument& document = harness.state().scene.document();
+    const Source& source = document.sources().front();
+    RayTreeSettings settings;
+    settings.polarisation = harness.state().traces.fire.polarisation;
+    const RayTree direct = traceRayTree(OpticalScene(document.toScene()), Ray{source.origin, source.direction}, 1.0,
+                                        settings, emittedPolarisation(source, source.direction));
+    ASSERT_EQ(shown.nodes.size(), direct.nodes.size()) << when;
+    for (std::size_t k = 0; k < direct.nodes.size(); ++k) {
+        EXPECT_EQ(shown.nodes[k].event.position, direct.nodes[k].event.position) << when << ", node " << k;
+        EXPECT_EQ(shown.nodes[k].event.weight, direct.nodes[k].event.weight) << when << ", node " << k;
+    }
+}
+
+// Frames until the ray tree's job is done and nothing is left asked of it.
+void waitForTheRayTreeJob(AppHarness& harness) {
+    const TraceState& traces = harness.state().traces;
+    for (int k = 0; k < 2000 && (traces.rayTreeJob.running() || traces.rayTreeAskedAutomatic); ++k) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        harness.frame();
+    }
+    ASSERT_FALSE(traces.rayTreeJob.running());
+    harness.frame();  // takes the last outcome
+}
+
 // The live ray tree, traced again as the source moves, keeps the optical scene it was traced through until
 // something else changes; every tree is the one a scene built from the document then gives.
 TEST(AppUi, TheRayTreeKeepsItsOpticalSceneWhileOnlyTheSourceMoves) {
     AppHarness harness(kAxisScene);
     SceneDocument& document = harness.state().scene.document();
-    const auto expectTreeOfTheDocument = [&](const char* when) {
-        const RayTree& shown = *harness.state().traces.rayTree;
-        const Source& source = document.sources().front();
-        RayTreeSettings settings;
-        settings.polarisation = harness.state().traces.fire.polarisation;
-        const RayTree direct = traceRayTree(OpticalScene(document.toScene()), Ray{source.origin, source.direction}, 1.0,
-                                            settings, emittedPolarisation(source, source.direction));
-        ASSERT_EQ(shown.nodes.size(), direct.nodes.size()) << when;
-        for (std::size_t k = 0; k < direct.nodes.size(); ++k) {
-            EXPECT_EQ(shown.nodes[k].event.position, direct.nodes[k].event.position) << when << ", node " << k;
-            EXPECT_EQ(shown.nodes[k].event.weight, direct.nodes[k].event.weight) << when << ", node " << k;
-        }
-    };
+    const auto expectTreeOfTheDocument = [&](const char* when) { testing::expectTreeOfTheDocument(harness, when); };
     harness.press('R');
     ASSERT_TRUE(harness.state().traces.rayTreeScene);
     const RayTreeScene* first = harness.state().traces.rayTreeScene.get();
@@ -300,6 +319,55 @@ TEST(AppUi, TheRayTreeKeepsItsOpticalSceneWhileOnlyTheSourceMoves) {
     harness.frame();
     EXPECT_NE(harness.state().traces.rayTreeScene.get(), second);
     expectTreeOfTheDocument("the water's index changed");
+}
+
+// A document above TraceState::rayTreeBackgroundShapes has its trees traced on the job: the frames go on, the
+// tree is the document's, a tree asked for while one is traced follows it with the document as it is then (the
+// source moved twice: its last place), the optical scene is kept as on the UI thread, and a tree still being
+// traced when the traces are forgotten is not shown.
+TEST(AppUi, TheRayTreeOfALargeDocumentIsTracedBesideTheFrames) {
+    AppHarness harness(kAxisScene);
+    TraceState& traces = harness.state().traces;
+    SceneDocument& document = harness.state().scene.document();
+    traces.rayTreeBackgroundShapes = 0;
+    harness.press('R');
+    waitForTheRayTreeJob(harness);
+    expectTreeOfTheDocument(harness, "fired");
+    EXPECT_EQ(harness.state().ui.status.text().rfind("ray tree: ", 0), 0U) << harness.state().ui.status.text();
+    const RayTreeScene* first = traces.rayTreeScene.get();
+    ASSERT_NE(first, nullptr);
+
+    ShapeSpec moved;
+    moved.center = Point(0.1, 0.0, 0.0);
+    moved.medium = 1;
+    document.modifyShape(0, moved);
+    harness.frame();  // live: the tree again, its optical scene built on the job
+    std::vector<Source> sources = document.sources();
+    sources[0].origin = Point(0.3, 0.2, -5.0);
+    document.setSources(sources);
+    harness.frame();
+    sources[0].origin = Point(-0.2, 0.1, -5.0);
+    document.setSources(sources);
+    harness.frame();
+    waitForTheRayTreeJob(harness);
+    expectTreeOfTheDocument(harness, "the droplet and the source moved");
+    EXPECT_NE(traces.rayTreeScene.get(), first);
+    const RayTreeScene* second = traces.rayTreeScene.get();
+    sources[0].origin = Point(0.0, 0.3, -5.0);
+    document.setSources(sources);
+    harness.frame();
+    waitForTheRayTreeJob(harness);
+    expectTreeOfTheDocument(harness, "the source moved again");
+    EXPECT_EQ(traces.rayTreeScene.get(), second);
+
+    fireRayTree(harness.state());  // no frame between: its outcome is not yet taken when the traces are forgotten
+    // Busy while it runs, so that an idle window wakes to show the tree (FramePacing).
+    const bool running = traces.rayTreeJob.running();
+    EXPECT_TRUE(!running || harness.app().busy());
+    forgetTraces(traces);
+    waitForTheRayTreeJob(harness);
+    EXPECT_FALSE(traces.rayTree);
+    EXPECT_FALSE(traces.rayTreeScene);
 }
 
 TEST(AppUi, StepsThroughTheEventsOfASelectedPathWithItsOctreeTraversal) {
