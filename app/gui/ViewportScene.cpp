@@ -53,6 +53,7 @@ ViewKey viewKey(const AppState& state) {
     return ViewKey{
         .document = scene.generation(),
         .revision = scene.document().revision(),
+        .shapesRevision = scene.document().revisionBesidesSources(),
         .layers = state.view.layers,
         .slice = state.view.slice,
         .selectedShape = scene.selectedShape(),
@@ -70,7 +71,8 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
     const SceneDocument& document = state.scene.document();
     const TraceState& traces = state.traces;
     const Octree& octree = document.octree();
-    bounds_ = render::sceneBounds(octree.shapes());
+    const bool shapesKept = shapesStay(key);
+    if (!shapesKept) bounds_ = render::sceneBounds(octree.shapes());
     const render::Anchor anchor{bounds_.center()};
     renderer_.setAnchor(anchor);
 
@@ -124,9 +126,19 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
         }
         layers_.markers.push_back(render::sphereInstance(handles->aim, handles->radius, anchor, kAimDetectorColour));
     }
-    render::uploadScene(renderer_, octree.shapes(), layers_, options);
+    if (!shapesKept) {
+        render::uploadShapes(renderer_, octree.shapes(), options);
+        ++shapeUploads_;
+    }
+    render::uploadLayers(renderer_, layers_);
     ++rebuilds_;
     builtFrom_ = key;
+}
+
+bool ViewportScene::shapesStay(const ViewKey& key) const {
+    // What uploadShapes reads: the document's shapes and media, the selected shape and the slice plane.
+    return builtFrom_ && builtFrom_->document == key.document && builtFrom_->shapesRevision == key.shapesRevision &&
+           builtFrom_->selectedShape == key.selectedShape && builtFrom_->slice == key.slice;
 }
 
 bool ViewportScene::recolour(const AppState& state, const ViewKey& key) {

@@ -16,6 +16,7 @@ namespace dropscope::gui {
 struct ViewKey {
     std::uint64_t document = 0;  // which document (SceneState::generation), and its revision
     std::uint64_t revision = 0;
+    std::uint64_t shapesRevision = 0;  // SceneDocument::revisionBesidesSources
     render::LayerOptions layers;
     SliceSettings slice;
     ShapeId selectedShape = RayHit::kNone;
@@ -59,6 +60,8 @@ public:
     // before and the one selected now (nothing else changed).
     std::uint64_t rebuilds() const { return rebuilds_; }
     std::uint64_t recolours() const { return recolours_; }
+    // Of the rebuilds, those that built and uploaded the shapes' instances.
+    std::uint64_t shapeUploads() const { return shapeUploads_; }
     // Frames whose view the renderer drew, and frames that copied the kept picture instead.
     std::uint64_t drawnFrames() const { return drawnFrames_; }
     std::uint64_t copiedFrames() const { return copiedFrames_; }
@@ -78,6 +81,11 @@ private:
     // When `key` differs from the last one in the selected shape alone, recolours the two shapes in place (a
     // rebuild of 1e6 droplets takes half a second) and says so; false, changing nothing, otherwise.
     bool recolour(const AppState& state, const ViewKey& key);
+    // Whether the shapes' instances made for the last key serve `key`: it has the same document, shapes and
+    // media (SceneDocument::revisionBesidesSources), selected shape and slice plane. Then a rebuild (a trace or
+    // ray tree shown, a layer switched, a source moved) makes and uploads the layers alone, not the shapes (half
+    // a second at 1e6 droplets).
+    bool shapesStay(const ViewKey& key) const;
 
     const render::GlFunctions& gl_;
     render::Renderer renderer_;
@@ -93,6 +101,7 @@ private:
     std::optional<ViewKey> builtFrom_;
     std::uint64_t rebuilds_ = 0;
     std::uint64_t recolours_ = 0;
+    std::uint64_t shapeUploads_ = 0;
 };
 
 // The box the camera keeps between its near and far planes: the shapes, the sources, the detectors when drawn,

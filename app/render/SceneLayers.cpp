@@ -85,9 +85,17 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
 
 void uploadScene(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& shapes, const SceneLayers& layers,
                  const LayerOptions& options) {
+    uploadShapes(renderer, shapes, options);
+    uploadLayers(renderer, layers);
+}
+
+void uploadShapes(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& shapes, const LayerOptions& options) {
     ShapeInstances instances = buildShapeInstances(shapes, renderer.anchor(), options.selected, &renderer.meshCache());
     if (options.slice) instances = keptShapes(instances, shapes, *options.slice);
     renderer.setShapes(instances);
+}
+
+void uploadLayers(Renderer& renderer, const SceneLayers& layers) {
     renderer.setLines(layers.lines, layers.chords);
     renderer.setSurfaces(layers.surfaces);
     renderer.setMarkers(layers.markers);

@@ -90,5 +90,8 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
 // layers to the renderer.
 void uploadScene(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& shapes, const SceneLayers& layers,
                  const LayerOptions& options);
+// Its two halves: the shapes alone (the costly one at 1e6 droplets), and the layers alone.
+void uploadShapes(Renderer& renderer, const std::vector<std::unique_ptr<Shape>>& shapes, const LayerOptions& options);
+void uploadLayers(Renderer& renderer, const SceneLayers& layers);
 
 }  // namespace dropscope::render

@@ -5,6 +5,7 @@
 #include "UiTestScenes.hpp"
 
 #include "gui/Screenshot.hpp"
+#include "gui/TraceActions.hpp"
 #include "gui/ViewportScene.hpp"
 #include "render/OffscreenImage.hpp"
 #include "render/TestOctahedron.hpp"
@@ -192,6 +193,52 @@ TEST_F(KeptView, ASelectedBoxOrMeshIsRecolouredAsARebuildWould) {
         ViewportScene rebuilt(harness_.gl(), false);
         EXPECT_EQ(recoloured.rgba, drawn(rebuilt).rgba) << "shape " << id;
     }
+}
+
+// A ray tree shown or dropped, a layer switched or a source moved rebuilds the layers and keeps the shapes'
+// instances (not uploaded again), for the picture a view built afresh draws; a droplet moved or the slice plane
+// switched on uploads them again.
+TEST_F(KeptView, TracesShownOrDroppedKeepTheShapesAsTheyWere) {
+    SceneDocument& document = state_.scene.document();
+    document.setSources({Source{SourceType::Ray, Point(0.1, 0.05, -5.0), Direction(0.0, 0.0, 1.0), 0.0}});
+    const snapshot::Image before = drawn(kept_);
+    const std::uint64_t uploads = kept_.shapeUploads();
+    fireRayTree(state_);  // on the UI thread: 300 shapes
+    ASSERT_TRUE(state_.traces.rayTree);
+    const std::uint64_t rebuilds = kept_.rebuilds();
+    const snapshot::Image withTree = drawn(kept_);
+    EXPECT_EQ(kept_.rebuilds(), rebuilds + 1);
+    EXPECT_EQ(kept_.shapeUploads(), uploads);
+    EXPECT_NE(withTree.rgba, before.rgba) << "the tree shows";
+    ViewportScene rebuilt(harness_.gl(), false);
+    EXPECT_EQ(withTree.rgba, drawn(rebuilt).rgba);
+
+    forgetTraces(state_.traces);
+    EXPECT_EQ(drawn(kept_).rgba, before.rgba);
+    EXPECT_EQ(kept_.shapeUploads(), uploads);
+
+    const ShapeSpec described = describeShape(*document.shape(7));
+    document.modifyShape(7, withCenter(described, described.center + Point(0.3, 0.0, 0.0)));
+    const snapshot::Image edited = drawn(kept_);
+    EXPECT_EQ(kept_.shapeUploads(), uploads + 1);
+    ViewportScene afresh(harness_.gl(), false);
+    EXPECT_EQ(edited.rgba, drawn(afresh).rgba);
+
+    // A layer switched, or the source moved, keeps them; the slice plane, which drops droplets, does not.
+    state_.view.layers.axes = !state_.view.layers.axes;
+    std::vector<Source> sources = document.sources();
+    sources[0].origin = Point(0.2, 0.0, -5.0);
+    document.setSources(sources);
+    const snapshot::Image switched = drawn(kept_);
+    EXPECT_EQ(kept_.shapeUploads(), uploads + 1);
+    ViewportScene switchedAfresh(harness_.gl(), false);
+    EXPECT_EQ(switched.rgba, drawn(switchedAfresh).rgba);
+    state_.view.slice.enabled = true;
+    const snapshot::Image sliced = drawn(kept_);
+    EXPECT_EQ(kept_.shapeUploads(), uploads + 2);
+    ViewportScene slicedAfresh(harness_.gl(), false);
+    EXPECT_EQ(sliced.rgba, drawn(slicedAfresh).rgba);
+    EXPECT_NE(sliced.rgba, switched.rgba);
 }
 
 TEST_F(KeptView, ACopyIgnoresTheScissorAndLeavesItAsItWas) {
