@@ -21,6 +21,8 @@ RayTreeOutcome traceRayTreeRequest(RayTreeRequest request) {
         outcome.scene = std::move(scene);
     } catch (const std::exception& error) {
         outcome.error = error.what();
+    } catch (...) {
+        outcome.error = "an unknown error";
     }
     return outcome;
 }
@@ -31,17 +33,27 @@ void RayTreeJob::start(RayTreeRequest request) {
     joinWorker();
     outcome_.reset();
     finished_.store(false);
-    worker_ = std::thread([this, traced = std::move(request)]() mutable {
-        outcome_ = traceRayTreeRequest(std::move(traced));
+    worker_ = std::thread([this, traced = std::move(request), gate = std::exchange(gate_, {})]() mutable {
+        if (gate.valid()) gate.wait();
+        // traceRayTreeRequest catches what the engine throws; only running out of memory for the outcome's own
+        // message could escape, and the thread must still say it is done.
+        try {
+            outcome_ = traceRayTreeRequest(std::move(traced));
+        } catch (...) {
+            outcome_.reset();
+        }
         finished_.store(true, std::memory_order_release);
     });
 }
+
+void RayTreeJob::holdNext(std::shared_future<void> gate) { gate_ = std::move(gate); }
 
 bool RayTreeJob::running() const { return worker_.joinable() && !finished_.load(std::memory_order_acquire); }
 
 std::optional<RayTreeOutcome> RayTreeJob::takeResult() {
     if (!worker_.joinable() || !finished_.load(std::memory_order_acquire)) return std::nullopt;
     joinWorker();
+    if (!outcome_) return RayTreeOutcome{nullptr, std::nullopt, "out of memory"};
     return std::exchange(outcome_, std::nullopt);
 }
 

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,9 @@ public:
 
     // Requires !running().
     void start(RayTreeRequest request);
+    // For tests: the next request started waits for `gate` before it begins, so that it is surely still being
+    // traced until the test releases it.
+    void holdNext(std::shared_future<void> gate);
     bool running() const;
     // The outcome of the finished request, once; nothing while it runs or when already taken.
     std::optional<RayTreeOutcome> takeResult();
@@ -74,6 +78,7 @@ private:
     std::thread worker_;
     std::optional<RayTreeOutcome> outcome_;  // written by the worker, read after joining it
     std::atomic<bool> finished_{false};
+    std::shared_future<void> gate_;  // holdNext's
 };
 
 }  // namespace dropscope::gui

@@ -66,8 +66,11 @@ void traceRayTree(AppState& state, bool automatic) {
     traces.rayTreeTraced = tracedNow(state);
     const auto& sources = document.sources();
     if (sources.empty()) return state.ui.status.refuse("nothing to fire: add a source first (Fire panel)");
-    if (traces.rayTreeJob.running()) {  // asked again once it is done, with the document as it is then
-        traces.rayTreeAskedAutomatic = traces.rayTreeAskedAutomatic.value_or(true) && automatic;
+    const bool background = document.shapeCount() > traces.rayTreeBackgroundShapes;
+    if (background && traces.rayTreeJob.running()) {  // asked again once it is done, with the document as it is then
+        using Asked = TraceState::RayTreeAsked;
+        traces.rayTreeAsked = automatic && traces.rayTreeAsked != Asked::ByUser ? Asked::ByLive : Asked::ByUser;
+        if (!automatic) state.ui.status.say("ray tree: waiting for the tree being traced ...");
         return;
     }
     const Source& source = sources[state.scene.selectedSource()];
@@ -84,7 +87,8 @@ void traceRayTree(AppState& state, bool automatic) {
         request.ray = Ray{source.origin, source.direction};
         request.settings.polarisation = traces.fire.polarisation;
         request.polarisation = emittedPolarisation(source, source.direction);
-        if (document.shapeCount() <= traces.rayTreeBackgroundShapes) {
+        if (!background) {
+            traces.rayTreeJobWanted = false;  // a tree the job still traces is older than this one
             return showRayTree(state, traceRayTreeRequest(std::move(request)), automatic);
         }
         if (!automatic) {
@@ -148,9 +152,9 @@ void updateTraces(AppState& state) {
         traces.rayTreeJobWanted = false;
         showRayTree(state, std::move(*outcome), traces.rayTreeJobAutomatic);
     }
-    if (const std::optional<bool> asked = traces.rayTreeAskedAutomatic; asked && !traces.rayTreeJob.running()) {
-        traces.rayTreeAskedAutomatic.reset();
-        traceRayTree(state, *asked);
+    if (const auto asked = traces.rayTreeAsked; asked != TraceState::RayTreeAsked::No && !traces.rayTreeJob.running()) {
+        traces.rayTreeAsked = TraceState::RayTreeAsked::No;
+        traceRayTree(state, asked == TraceState::RayTreeAsked::ByLive);
     }
     if (!traces.fire.live) return;
     const TracedWith now = tracedNow(state);
@@ -206,7 +210,7 @@ void forgetTraces(TraceState& traces) {
     traces.rayTree.reset();
     traces.rayTreeScene.reset();
     traces.rayTreeJobWanted = false;  // a tree still being traced was of what is forgotten
-    traces.rayTreeAskedAutomatic.reset();
+    traces.rayTreeAsked = TraceState::RayTreeAsked::No;
     traces.traversal.reset();
     traces.selectedPath = -1;
     traces.selectedEvent = 0;

@@ -68,14 +68,15 @@ struct TraceState {
     // What it was traced through, and the next one may be.
     std::shared_ptr<const RayTreeScene> rayTreeScene;
     // Trees of documents with more shapes than this are traced on rayTreeJob, so that the app keeps drawing:
-    // above it the first tree of a scene costs more than about 0.1 s (its optical scene built), 2.3 s at 1e6
+    // above it the first tree of a scene costs more than about 0.1 s (its optical scene built), 2.2 s at 1e6
     // droplets, and each tree again 0.08-0.4 s (docs/performance.md).
     std::size_t rayTreeBackgroundShapes = 50'000;
     RayTreeJob rayTreeJob;
     bool rayTreeJobAutomatic = false;  // the tree on rayTreeJob was asked for by "live", not the user
     bool rayTreeJobWanted = false;     // its outcome is to be shown (not since the traces were forgotten)
-    // A tree asked for while rayTreeJob was busy, traced when it is done: whether only by "live".
-    std::optional<bool> rayTreeAskedAutomatic;
+    // A tree asked for while rayTreeJob was busy, traced when it is done: by "live" alone, or by the user.
+    enum class RayTreeAsked { No, ByLive, ByUser };
+    RayTreeAsked rayTreeAsked = RayTreeAsked::No;
     // Which results are shown: moves on whenever `trace` or `rayTree` is replaced or dropped, so the 3D
     // view knows to draw them again (as SceneDocument::revision() does for the scene).
     std::uint64_t shownId = 0;

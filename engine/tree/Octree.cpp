@@ -33,6 +33,12 @@ constexpr int kMaxGridLevel = 6;
 
 CellBounds inflated(const CellBounds& b, double by) { return CellBounds(b.min().array() - by, b.max().array() + by); }
 
+// Whether a sphere reaches an inflated cell (Octree::reaches): the cell's point nearest its centre is within it.
+bool sphereReaches(const Point& center, double radius, const CellBounds& grown) {
+    const Point closest = center.cwiseMax(grown.min()).cwiseMin(grown.max());
+    return (closest - center).squaredNorm() < radius * radius;
+}
+
 // A cube around all the shapes, so that cells are cubes too.
 CellBounds cubeAround(const std::vector<std::unique_ptr<Shape>>& shapes, const CellBounds& mustContain) {
     CellBounds all = mustContain;
@@ -89,13 +95,11 @@ void Octree::rebuild(const CellBounds& bounds) {
     // stay in cache. The tree's cells do not depend on the order, but each cell keeps its shapes in it.
     std::vector<std::pair<std::uint64_t, ShapeId>> order;
     order.reserve(shapes_.size());
-    std::vector<CellBounds> extents(shapes_.size());
     const Eigen::Array3d scale = 2097151.0 / rootBounds_.sizes().array();  // 21 bits per axis
     for (std::size_t id = 0; id < shapes_.size(); ++id) {
         if (!shapes_[id]) continue;
-        extents[id] = shapes_[id]->bounds();
         const Eigen::Array3d cell =
-            ((extents[id].center() - rootBounds_.min()).array() * scale).max(0.0).min(2097151.0);
+            ((shapes_[id]->bounds().center() - rootBounds_.min()).array() * scale).max(0.0).min(2097151.0);
         order.emplace_back(mortonCode(static_cast<std::uint32_t>(cell.x()), static_cast<std::uint32_t>(cell.y()),
                                       static_cast<std::uint32_t>(cell.z())),
                            static_cast<ShapeId>(id));
@@ -103,18 +107,20 @@ void Octree::rebuild(const CellBounds& bounds) {
     std::sort(order.begin(), order.end());
     liveShapes_ = order.size();
     if (build_ == OctreeBuild::OneByOne) {
-        for (const auto& [code, id] : order) place(0, rootBounds_, id, extents[id]);
+        for (const auto& [code, id] : order) place(0, rootBounds_, id, shapes_[id]->bounds());
         freeze();
         return;
     }
-    // Read once, in that order, so that the cells' lists (positions in it, ascending) read them in sequence.
+    // Read once, in that order, so that the cells' lists (positions in it, ascending) read them in sequence. (The
+    // bounds are worked out again rather than kept from above: a second array of them would add 48 bytes a shape
+    // to the build's peak.)
     std::vector<Placing> placing(order.size());
     std::vector<std::uint32_t> positions(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) {
         const ShapeId id = order[k].second;
         Placing& shape = placing[k];
-        shape.extent = extents[id];
         shape.shape = shapes_[id].get();
+        shape.extent = shape.shape->bounds();
         shape.id = id;
         shape.sphere = shape.shape->kind() == ShapeKind::Sphere;
         if (shape.sphere) {
@@ -124,7 +130,6 @@ void Octree::rebuild(const CellBounds& bounds) {
         positions[k] = static_cast<std::uint32_t>(k);
     }
     order = {};
-    extents = {};
     placeTopDown(0, rootBounds_, positions, placing);
     freeze();
 }
@@ -141,7 +146,7 @@ void Octree::placeTopDown(std::uint32_t node, const CellBounds& bounds, std::vec
         static_cast<int>(level) >= settings_.maxDepth) {
         Node& leaf = building_[node];
         for (const std::uint32_t at : positions) {
-            (placing[at].sphere ? leaf.sphereIds : leaf.otherIds).push_back(placing[at].id);
+            leaf.add(placing[at].id, placing[at].sphere);
         }
         return;
     }
@@ -175,17 +180,12 @@ void Octree::placeTopDown(std::uint32_t node, const CellBounds& bounds, std::vec
         for (std::uint32_t child = 0; child < 8; ++child) {
             if (((child & meetsUpper) | (~child & 7U & meetsLower)) != 7U) continue;
             const CellBounds& cell = grown[child];
-            bool reaches = false;
-            if (shape.sphere) {
-                const Point closest = shape.center.cwiseMax(cell.min()).cwiseMin(cell.max());
-                reaches = (closest - shape.center).squaredNorm() < shape.radius * shape.radius;
-            } else {
-                reaches = shape.shape->overlaps(Box(cell.min(), cell.max()));
-            }
+            const bool reaches = shape.sphere ? sphereReaches(shape.center, shape.radius, cell)
+                                              : shape.shape->overlaps(Box(cell.min(), cell.max()));
             reached |= (reaches ? 1U : 0U) << child;
         }
         if (reached == 0xff) {
-            (shape.sphere ? inner.sphereIds : inner.otherIds).push_back(shape.id);
+            inner.add(shape.id, shape.sphere);
             continue;
         }
         for (int child = 0; child < 8; ++child) {
@@ -335,19 +335,12 @@ bool Octree::reaches(const Shape& shape, const CellBounds& extent, const CellBou
     if (!grown.intersects(extent)) return false;
     if (shape.kind() == ShapeKind::Sphere) {
         const auto& sphere = static_cast<const Sphere&>(shape);
-        const Point closest = sphere.center().cwiseMax(grown.min()).cwiseMin(grown.max());
-        return (closest - sphere.center()).squaredNorm() < sphere.radius() * sphere.radius();
+        return sphereReaches(sphere.center(), sphere.radius(), grown);
     }
     return shape.overlaps(Box(grown.min(), grown.max()));
 }
 
-void Octree::store(Node& node, ShapeId id) const {
-    if (shapes_[id]->kind() == ShapeKind::Sphere) {
-        node.sphereIds.push_back(id);
-    } else {
-        node.otherIds.push_back(id);
-    }
-}
+void Octree::store(Node& node, ShapeId id) const { node.add(id, shapes_[id]->kind() == ShapeKind::Sphere); }
 
 void Octree::place(std::uint32_t node, const CellBounds& bounds, ShapeId id, const CellBounds& extent) {
     if (building_[node].isLeaf()) {

@@ -118,6 +118,7 @@ private:
         std::vector<ShapeId> otherIds;  // boxes, ellipsoids, anything else
         bool isLeaf() const { return firstChild == kNoChild; }
         std::size_t size() const { return sphereIds.size() + otherIds.size(); }
+        void add(ShapeId id, bool sphere) { (sphere ? sphereIds : otherIds).push_back(id); }
     };
     // The same cell, frozen for queries: ranges into the flat arrays, so a visit touches 20 bytes of
     // cell and one contiguous run of sphere blocks (4 spheres a cache line).

@@ -17,9 +17,9 @@ struct OctreeSettings {
 
 using CellBounds = Eigen::AlignedBox3d;
 
-// How an octree over many shapes is built; both give the same tree, cell for cell and id for id
-// (docs/octree.md, "Building"). OneByOne places the shapes one at a time, splitting a leaf when it overflows,
-// as insert() does: the reference the tests and octree_bench hold TopDown to.
+// How an octree over many shapes is built; both give the same cells, each holding the same shapes in the same
+// order (only the cells' numbering differs; docs/octree.md, "Building"). OneByOne places the shapes one at a time,
+// splitting a leaf when it overflows, as insert() does: the reference the tests and octree_bench hold TopDown to.
 enum class OctreeBuild { TopDown, OneByOne };
 
 // One cell a ray passed through, in visiting order, for the debugger.

@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iterator>
 #include <numbers>
 #include <thread>
@@ -274,15 +275,16 @@ void expectTreeOfTheDocument(AppHarness& harness, const char* when) {
     }
 }
 
-// Frames until the ray tree's job is done and nothing is left asked of it.
-void waitForTheRayTreeJob(AppHarness& harness) {
+// Frames until the ray tree's job is done and nothing is left asked of it; whether it came to that.
+bool waitForTheRayTreeJob(AppHarness& harness) {
     const TraceState& traces = harness.state().traces;
-    for (int k = 0; k < 2000 && (traces.rayTreeJob.running() || traces.rayTreeAskedAutomatic); ++k) {
+    for (int k = 0; k < 2000 && (traces.rayTreeJob.running() || traces.rayTreeAsked != TraceState::RayTreeAsked::No);
+         ++k) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
         harness.frame();
     }
-    ASSERT_FALSE(traces.rayTreeJob.running());
     harness.frame();  // takes the last outcome
+    return !traces.rayTreeJob.running() && traces.rayTreeAsked == TraceState::RayTreeAsked::No;
 }
 
 // The live ray tree, traced again as the source moves, keeps the optical scene it was traced through until
@@ -321,51 +323,78 @@ TEST(AppUi, TheRayTreeKeepsItsOpticalSceneWhileOnlyTheSourceMoves) {
     expectTreeOfTheDocument("the water's index changed");
 }
 
-// A document above TraceState::rayTreeBackgroundShapes has its trees traced on the job: the frames go on, the
-// tree is the document's, a tree asked for while one is traced follows it with the document as it is then (the
-// source moved twice: its last place), the optical scene is kept as on the UI thread, and a tree still being
-// traced when the traces are forgotten is not shown.
+// A document above TraceState::rayTreeBackgroundShapes has its trees traced on the job (held here by a gate, so
+// that it is surely still busy): the frames go on and the app counts as busy; trees asked for meanwhile, by
+// "live" after a droplet and the source moved twice and by the user, wait and then make one tree, of the
+// document as it is then (the source's last place); the optical scene is kept as on the UI thread; a tree still
+// being traced is not shown once the traces are forgotten, nor over a newer tree traced on the UI thread.
 TEST(AppUi, TheRayTreeOfALargeDocumentIsTracedBesideTheFrames) {
     AppHarness harness(kAxisScene);
     TraceState& traces = harness.state().traces;
     SceneDocument& document = harness.state().scene.document();
     traces.rayTreeBackgroundShapes = 0;
     harness.press('R');
-    waitForTheRayTreeJob(harness);
+    ASSERT_TRUE(waitForTheRayTreeJob(harness));
     expectTreeOfTheDocument(harness, "fired");
-    EXPECT_EQ(harness.state().ui.status.text().rfind("ray tree: ", 0), 0U) << harness.state().ui.status.text();
+    EXPECT_NE(harness.state().ui.status.text().find(" events, "), std::string::npos)
+        << harness.state().ui.status.text();
     const RayTreeScene* first = traces.rayTreeScene.get();
     ASSERT_NE(first, nullptr);
 
+    std::promise<void> release;
+    traces.rayTreeJob.holdNext(release.get_future().share());
     ShapeSpec moved;
     moved.center = Point(0.1, 0.0, 0.0);
     moved.medium = 1;
     document.modifyShape(0, moved);
-    harness.frame();  // live: the tree again, its optical scene built on the job
+    harness.frame();  // live: the tree again, its optical scene to be built on the job
+    ASSERT_TRUE(traces.rayTreeJob.running());
+    EXPECT_TRUE(harness.app().busy());
     std::vector<Source> sources = document.sources();
-    sources[0].origin = Point(0.3, 0.2, -5.0);
-    document.setSources(sources);
-    harness.frame();
-    sources[0].origin = Point(-0.2, 0.1, -5.0);
-    document.setSources(sources);
-    harness.frame();
-    waitForTheRayTreeJob(harness);
+    for (const Point& origin : {Point(0.3, 0.2, -5.0), Point(-0.2, 0.1, -5.0)}) {
+        sources[0].origin = origin;
+        document.setSources(sources);
+        harness.frame();
+        EXPECT_EQ(traces.rayTreeAsked, TraceState::RayTreeAsked::ByLive);
+    }
+    fireRayTree(harness.state());
+    EXPECT_EQ(traces.rayTreeAsked, TraceState::RayTreeAsked::ByUser);
+    EXPECT_NE(harness.state().ui.status.text().find("waiting"), std::string::npos) << harness.state().ui.status.text();
+    release.set_value();
+    ASSERT_TRUE(waitForTheRayTreeJob(harness));
     expectTreeOfTheDocument(harness, "the droplet and the source moved");
     EXPECT_NE(traces.rayTreeScene.get(), first);
     const RayTreeScene* second = traces.rayTreeScene.get();
     sources[0].origin = Point(0.0, 0.3, -5.0);
     document.setSources(sources);
     harness.frame();
-    waitForTheRayTreeJob(harness);
+    ASSERT_TRUE(waitForTheRayTreeJob(harness));
     expectTreeOfTheDocument(harness, "the source moved again");
     EXPECT_EQ(traces.rayTreeScene.get(), second);
 
-    fireRayTree(harness.state());  // no frame between: its outcome is not yet taken when the traces are forgotten
-    // Busy while it runs, so that an idle window wakes to show the tree (FramePacing).
-    const bool running = traces.rayTreeJob.running();
-    EXPECT_TRUE(!running || harness.app().busy());
+    // A tree traced on the UI thread (the document below the threshold again) while the job holds an older one.
+    std::promise<void> releaseOlder;
+    traces.rayTreeJob.holdNext(releaseOlder.get_future().share());
+    fireRayTree(harness.state());
+    ASSERT_TRUE(traces.rayTreeJob.running());
+    traces.rayTreeBackgroundShapes = 1000;
+    sources[0].origin = Point(0.2, -0.2, -5.0);
+    document.setSources(sources);
+    fireRayTree(harness.state());
+    const std::uint64_t shown = traces.shownId;
+    releaseOlder.set_value();
+    ASSERT_TRUE(waitForTheRayTreeJob(harness));
+    EXPECT_EQ(traces.shownId, shown) << "the job's older tree was shown over the newer one";
+    expectTreeOfTheDocument(harness, "traced on the UI thread");
+
+    traces.rayTreeBackgroundShapes = 0;
+    std::promise<void> releaseForgotten;
+    traces.rayTreeJob.holdNext(releaseForgotten.get_future().share());
+    fireRayTree(harness.state());
+    ASSERT_TRUE(traces.rayTreeJob.running());
     forgetTraces(traces);
-    waitForTheRayTreeJob(harness);
+    releaseForgotten.set_value();
+    ASSERT_TRUE(waitForTheRayTreeJob(harness));
     EXPECT_FALSE(traces.rayTree);
     EXPECT_FALSE(traces.rayTreeScene);
 }

@@ -344,13 +344,23 @@ TreeContents contentsOf(const Octree& tree) {
 
 std::vector<std::unique_ptr<Shape>> copies(const std::vector<std::unique_ptr<Shape>>& shapes) {
     std::vector<std::unique_ptr<Shape>> copied;
-    for (const auto& shape : shapes) copied.push_back(shape->clone());
+    for (const auto& shape : shapes) copied.push_back(shape ? shape->clone() : nullptr);
     return copied;
+}
+
+void expectSameTree(const Octree& actual, const Octree& expected) {
+    const TreeContents expectedContents = contentsOf(expected);
+    const TreeContents actualContents = contentsOf(actual);
+    EXPECT_TRUE(actualContents.cells == expectedContents.cells);
+    EXPECT_TRUE(actualContents.leafPaths == expectedContents.leafPaths);
+    EXPECT_EQ(actual.margin(), expected.margin());
+    EXPECT_EQ(actual.gridLevel(), expected.gridLevel());
 }
 
 // The top-down build makes the tree that placing the shapes one by one makes: the same cells, each holding the
 // same shapes in the same order, whatever the leaf size and depth limit; with boxes, ellipsoids, a sphere and a
-// box reaching every cell (kept high up), coincident spheres, and spheres on the root's mid-planes.
+// box reaching every cell (kept high up), coincident spheres, spheres on the root's mid-planes, spheres and boxes
+// reaching across a mid-plane by less than the margin or just beyond it, and empty slots.
 TEST(Octree, TheTopDownBuildMakesTheTreeOfTheOneByOneBuild) {
     Rng rng(23);
     std::vector<std::unique_ptr<Shape>> shapes = randomScene(rng, 1500, 4.0);
@@ -360,20 +370,33 @@ TEST(Octree, TheTopDownBuildMakesTheTreeOfTheOneByOneBuild) {
     for (int k = 0; k < 40; ++k) {
         shapes.push_back(std::make_unique<Sphere>(Point(0.0, testing::uniform(rng, -4.0, 4.0), 0.0), 0.05));
     }
+    // These reach past the plane x = 0 (a mid-plane of the root, which the big sphere centres there, and of its
+    // children) by a tenth of the margin cells are grown by, or stop a tenth of it short, at many places: a build
+    // that tested the cells without their margin would store them elsewhere.
+    const double margin = Octree(copies(shapes)).margin();
+    for (int k = 0; k < 60; ++k) {
+        const double y = testing::uniform(rng, -4.0, 4.0);
+        const double z = testing::uniform(rng, -4.0, 4.0);
+        const double reach = (k % 2 == 0 ? 0.1 : -0.1) * margin;
+        shapes.push_back(std::make_unique<Sphere>(Point(0.05 - reach, y, z), 0.05));
+        shapes.push_back(std::make_unique<Box>(Point(-0.1, y, z), Point(-reach, y + 0.05, z + 0.05)));
+    }
+    for (std::size_t id = 3; id < shapes.size(); id += 97) shapes[id].reset();
     for (const OctreeSettings settings :
          {OctreeSettings{}, OctreeSettings{10, 4}, OctreeSettings{3, 2}, OctreeSettings{0, 8}, OctreeSettings{12, 1}}) {
         SCOPED_TRACE("max depth " + std::to_string(settings.maxDepth) + ", leaf " +
                      std::to_string(settings.maxShapesPerLeaf));
         const Octree topDown(copies(shapes), settings);
         const Octree oneByOne(copies(shapes), settings, OctreeBuild::OneByOne);
-        const TreeContents expected = contentsOf(oneByOne);
-        const TreeContents actual = contentsOf(topDown);
-        EXPECT_GT(expected.cells.size(), settings.maxDepth > 0 ? 8U : 0U);
-        EXPECT_TRUE(actual.cells == expected.cells);
-        EXPECT_TRUE(actual.leafPaths == expected.leafPaths);
-        EXPECT_EQ(topDown.margin(), oneByOne.margin());
-        EXPECT_EQ(topDown.gridLevel(), oneByOne.gridLevel());
+        EXPECT_GT(contentsOf(oneByOne).cells.size(), settings.maxDepth > 0 ? 8U : 0U);
+        expectSameTree(topDown, oneByOne);
     }
+    // Built again as the root grows: a shape inserted beyond it, into trees with empty slots.
+    Octree topDown(copies(shapes), OctreeSettings{10, 4});
+    Octree oneByOne(copies(shapes), OctreeSettings{10, 4}, OctreeBuild::OneByOne);
+    for (Octree* tree : {&topDown, &oneByOne}) tree->insert(std::make_unique<Sphere>(Point(30.0, 0.0, 0.0), 1.0));
+    EXPECT_GT(topDown.rootBounds().max().x(), 30.0);
+    expectSameTree(topDown, oneByOne);
 }
 
 TEST(Octree, OverlappingEqualsBruteForce) {
