@@ -141,20 +141,15 @@ void Octree::rebuild(const CellBounds& bounds) {
 // splits, which no query depends on.
 void Octree::placeTopDown(std::uint32_t node, const CellBounds& bounds, std::vector<std::uint32_t>& positions,
                           const std::vector<Placing>& placing) {
-    const std::uint32_t level = building_[node].level;
-    if (positions.size() <= static_cast<std::size_t>(settings_.maxShapesPerLeaf) ||
-        static_cast<int>(level) >= settings_.maxDepth) {
+    if (!overflows(positions.size(), building_[node].level)) {
         Node& leaf = building_[node];
         for (const std::uint32_t at : positions) {
             leaf.add(placing[at].id, placing[at].sphere);
         }
         return;
     }
-    const auto first = static_cast<std::uint32_t>(building_.size());
-    building_.resize(building_.size() + 8);
-    for (std::uint32_t k = 0; k < 8; ++k) building_[first + k].level = level + 1;
+    const std::uint32_t first = addChildren(node);
     Node& inner = building_[node];
-    inner.firstChild = first;
     std::array<CellBounds, 8> children;
     std::array<CellBounds, 8> grown;
     for (int child = 0; child < 8; ++child) {
@@ -345,10 +340,7 @@ void Octree::store(Node& node, ShapeId id) const { node.add(id, shapes_[id]->kin
 void Octree::place(std::uint32_t node, const CellBounds& bounds, ShapeId id, const CellBounds& extent) {
     if (building_[node].isLeaf()) {
         store(building_[node], id);
-        if (static_cast<int>(building_[node].size()) > settings_.maxShapesPerLeaf &&
-            static_cast<int>(building_[node].level) < settings_.maxDepth) {
-            split(node, bounds);
-        }
+        if (overflows(building_[node].size(), building_[node].level)) split(node, bounds);
         return;
     }
     const Shape& s = *shapes_[id];
@@ -369,17 +361,27 @@ void Octree::place(std::uint32_t node, const CellBounds& bounds, ShapeId id, con
 
 // Turns a full leaf into an inner cell and hands its shapes down (those reaching all 8 children stay).
 void Octree::split(std::uint32_t node, const CellBounds& bounds) {
+    Node& parent = building_[node];
+    std::vector<ShapeId> ids = std::move(parent.sphereIds);
+    ids.insert(ids.end(), parent.otherIds.begin(), parent.otherIds.end());
+    parent.sphereIds.clear();
+    parent.otherIds.clear();
+    addChildren(node);
+    for (ShapeId id : ids) place(node, bounds, id, shapes_[id]->bounds());
+}
+
+bool Octree::overflows(std::size_t shapes, std::uint32_t level) const {
+    return shapes > static_cast<std::size_t>(settings_.maxShapesPerLeaf) &&
+           static_cast<int>(level) < settings_.maxDepth;
+}
+
+std::uint32_t Octree::addChildren(std::uint32_t node) {
     const auto first = static_cast<std::uint32_t>(building_.size());
     const std::uint32_t level = building_[node].level + 1;
     building_.resize(building_.size() + 8);
     for (std::uint32_t k = 0; k < 8; ++k) building_[first + k].level = level;
-    Node& parent = building_[node];
-    std::vector<ShapeId> ids = parent.sphereIds;
-    ids.insert(ids.end(), parent.otherIds.begin(), parent.otherIds.end());
-    parent = Node{};
-    parent.firstChild = first;
-    parent.level = level - 1;
-    for (ShapeId id : ids) place(node, bounds, id, shapes_[id]->bounds());
+    building_[node].firstChild = first;
+    return first;
 }
 
 ShapeId Octree::insert(std::unique_ptr<Shape> shape) {

@@ -159,6 +159,10 @@ private:
     void place(std::uint32_t node, const CellBounds& bounds, ShapeId id, const CellBounds& extent);
     void store(Node& node, ShapeId id) const;
     void split(std::uint32_t node, const CellBounds& bounds);
+    // Whether a cell at `level` placed `shapes` shapes into is split (both builds ask this).
+    bool overflows(std::size_t shapes, std::uint32_t level) const;
+    // Appends the leaf `node`'s 8 children, one level below it, and makes them its children; the first's index.
+    std::uint32_t addChildren(std::uint32_t node);
     bool reaches(const Shape& shape, const CellBounds& extent, const CellBounds& cell) const;
     void unstore(std::uint32_t node, const CellBounds& bounds, ShapeId id);
     CellBounds childBounds(const CellBounds& bounds, int child) const;
