@@ -15,7 +15,9 @@
 // Then, in blocks, the 3D view with only the shapes and with only the lines, and the shapes alone with the
 // spheres' points drawn by the sphere programs and by the general ones (RenderOptions::sphereProgram), in
 // alternate blocks; and the app orbiting and the 3D view alone with the hidden chords left out (as the app
-// draws) and drawn (RenderOptions::skipHiddenChords), in alternate blocks.
+// draws) and drawn (RenderOptions::skipHiddenChords), in alternate blocks; and the app orbiting, the 3D view
+// alone and the shapes alone with the spheres apart drawn at their centre's depth (as the app draws) and not
+// (RenderOptions::apartSpheres), in alternate blocks.
 // docs/performance.md ("The app") has the figures.
 //
 // Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--point-pixels 6] [--png FILE]
@@ -187,13 +189,14 @@ int run(const Options& options) {
     }
     // What the 3D view's time is made of: each layer alone (a block of frames each, after a rebuild).
     const auto layerAlone = [&](bool shapes, bool lines, bool sphereProgram = true, int frames = 0,
-                                bool skipHiddenChords = true) {
+                                bool skipHiddenChords = true, bool apartSpheres = true) {
         gui::AppState& state = app.state();
         const render::RenderOptions kept = state.view.layers.render;
         state.view.layers.render.shapes = shapes;
         state.view.layers.render.lines = lines;
         state.view.layers.render.sphereProgram = sphereProgram;
         state.view.layers.render.skipHiddenChords = skipHiddenChords;
+        state.view.layers.render.apartSpheres = apartSpheres;
         reference.draw(state, kWidth, kHeight);
         Series series;
         for (int k = 0; k < (frames > 0 ? frames : options.frames); ++k) {
@@ -217,9 +220,10 @@ int run(const Options& options) {
     }
     // The peer of leaving the hidden chords out: drawing them, for the app orbiting and for the 3D view alone,
     // in alternate blocks (each after one untimed frame that rebuilds the layers).
-    const auto orbitBlock = [&](bool skipHiddenChords, int frames, Series& into) {
+    const auto orbitBlock = [&](bool skipHiddenChords, bool apartSpheres, int frames, Series& into) {
         gui::AppState& state = app.state();
         state.view.layers.render.skipHiddenChords = skipHiddenChords;
+        state.view.layers.render.apartSpheres = apartSpheres;
         app.frame(input);
         for (int k = 0; k < frames; ++k) {
             state.view.camera.orbit(kOrbitStep, 0.0);
@@ -229,14 +233,28 @@ int run(const Options& options) {
             into.ms.push_back(1e3 * watch.seconds());
         }
         state.view.layers.render.skipHiddenChords = true;
+        state.view.layers.render.apartSpheres = true;
     };
     Series orbitSkipping, orbitChords, viewSkipping, viewChords;
     for (const bool skip : {true, false, false, true}) {
         const int frames = std::max(1, options.frames / 4);
-        orbitBlock(skip, frames, skip ? orbitSkipping : orbitChords);
+        orbitBlock(skip, true, frames, skip ? orbitSkipping : orbitChords);
         const Series block = layerAlone(true, true, true, frames, skip);
         Series& into = skip ? viewSkipping : viewChords;
         into.ms.insert(into.ms.end(), block.ms.begin(), block.ms.end());
+    }
+    // The peer of drawing the spheres apart at their centre's depth: not (RenderOptions::apartSpheres false),
+    // for the app orbiting, the 3D view alone and the shapes alone, in alternate blocks.
+    Series orbitApart, orbitNotApart, viewApart, viewNotApart, shapesApart, shapesNotApart;
+    for (const bool apart : {true, false, false, true}) {
+        const int frames = std::max(1, options.frames / 4);
+        orbitBlock(true, apart, frames, apart ? orbitApart : orbitNotApart);
+        const Series view = layerAlone(true, true, true, frames, true, apart);
+        Series& viewInto = apart ? viewApart : viewNotApart;
+        viewInto.ms.insert(viewInto.ms.end(), view.ms.begin(), view.ms.end());
+        const Series shapes = layerAlone(true, false, true, frames, true, apart);
+        Series& shapesInto = apart ? shapesApart : shapesNotApart;
+        shapesInto.ms.insert(shapesInto.ms.end(), shapes.ms.begin(), shapes.ms.end());
     }
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
@@ -269,6 +287,16 @@ int run(const Options& options) {
                 viewSkipping.minimum(), viewSkipping.median() / reference3d);
     std::printf("%-44s %10.1f %10.1f %12.2f\n", "3D view alone, hidden chords drawn (alt.)", viewChords.median(),
                 viewChords.minimum(), viewChords.median() / reference3d);
+    const auto row = [&](const char* name, Series& series) {
+        std::printf("%-44s %10.1f %10.1f %12.2f\n", name, series.median(), series.minimum(),
+                    series.median() / reference3d);
+    };
+    row("app, orbiting, spheres apart at centre (alt.)", orbitApart);
+    row("app, orbiting, spheres apart not (alt.)", orbitNotApart);
+    row("3D view alone, spheres apart at centre (alt.)", viewApart);
+    row("3D view alone, spheres apart not (alt.)", viewNotApart);
+    row("shapes alone, spheres apart at centre (alt.)", shapesApart);
+    row("shapes alone, spheres apart not (alt.)", shapesNotApart);
     std::printf("steady (kept view copied): %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steadyCopied.median(),
                 1e3 / orbit.median());
     // The ray tree (R): first of the scene (its optical scene built from the document), then again from a source

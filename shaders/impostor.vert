@@ -14,6 +14,11 @@
 // can run before the fragment shader. The three variants size a shape with the same expression, so each
 // shape is drawn by exactly one of them.
 //
+// A sphere apart (nothing else drawn reaches into it: render/ApartSpheres.hpp) up to `apartPixels` is such a
+// point without EXACT_DEPTH too, at its centre's depth: along each eye ray through it everything else lies before
+// its entry or beyond its exit, and the centre's depth lies between the two but at the rim (docs/rendering.md,
+// "Spheres apart").
+//
 // SPHERE (with POINT_SPRITE) draws runs of shapes that are all spheres, whose matrices are r I and I / r: it
 // reads one column of each and hands impostor.frag 1/r instead of a matrix, 13 floats a shape read instead
 // of 25 and 8 passed on instead of 16, for the same numbers (docs/rendering.md, "Spheres' points").
@@ -27,6 +32,9 @@ layout(location = 3) in mat3 linear;         // locations 3, 4, 5
 layout(location = 6) in mat3 inverseLinear;  // locations 6, 7, 8
 #endif
 layout(location = 9) in vec4 colour;
+#ifdef POINT_SPRITE
+layout(location = 10) in float apart;  // 1 for a sphere apart, else 0
+#endif
 
 uniform mat4 viewProjection;
 uniform mat4 inverseViewProjection;
@@ -34,6 +42,7 @@ uniform vec3 eye;
 uniform vec3 cameraUp;
 uniform float pointPixels;       // points with the front's depth up to this width (0: none)
 uniform float exactPointPixels;  // points with exact depth above pointPixels, up to this width
+uniform float apartPixels;       // spheres apart up to this width: points at their centre's depth (0: none)
 uniform float pixelsPerUnit;   // framebuffer pixels a unit length spans at unit depth on the axis
 uniform float maxStretch;      // how much wider than on the axis a shape is drawn in the corners
 uniform vec2 viewportSize;
@@ -92,6 +101,8 @@ void main() {
     // 0: a quad; 1: a point with exact depth; 2: a point with the front's depth.
     int tier = !inside || pixels > exactPointPixels ? 0 : (pixels <= pointPixels ? 2 : 1);
 #ifdef POINT_SPRITE
+    bool centreDepth = apart > 0.5 && pixels <= apartPixels;
+    if (tier == 1 && centreDepth) tier = 2;
 #ifdef EXACT_DEPTH
     const int kTier = 1;
 #else
@@ -102,7 +113,8 @@ void main() {
         gl_PointSize = 1.0;
         return;
     }
-    gl_Position = nearestClip;
+    // The centre's depth, unless beyond the far plane (a point is clipped whole by its place).
+    gl_Position = centreDepth && clipCentre.z <= clipCentre.w ? clipCentre : nearestClip;
     gl_PointSize = pointSize;
 #else
     if (tier != 0) {

@@ -50,15 +50,6 @@ std::vector<float> quadStrip() {
 constexpr std::size_t kChunkShapes = 256;
 constexpr std::size_t kMostChunks = 1024;
 
-float boundingRadius(const ShapeInstance& shape) {
-    float largest = 0.0f;
-    for (int column = 0; column < 3; ++column) {
-        const float* c = &shape.linear[static_cast<std::size_t>(3 * column)];
-        largest = std::max(largest, std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
-    }
-    return largest;
-}
-
 // 10 bits of each coordinate, interleaved: neighbours along this curve are neighbours in space.
 std::uint32_t mortonCode(const std::array<float, 3>& p, const glm::dvec3& low, const glm::dvec3& scale) {
     std::uint32_t code = 0;
@@ -246,13 +237,20 @@ Renderer::Renderer(const GlFunctions& gl)
     exactPointPixels_ = std::min(kExactPointPixels, static_cast<float>(pointSizes[1] - 2) / 1.05f);
     rounded_->makeInstanced(quadStrip(), GL_TRIANGLE_STRIP);
     roundedPoints_->makePointsOf(*rounded_);
+    gl_.GenBuffers(1, &apartBuffer_);
+    gl_.BindVertexArray(roundedPoints_->vertexArray);
+    gl_.BindBuffer(GL_ARRAY_BUFFER, apartBuffer_);
+    gl_.EnableVertexAttribArray(10);
+    // 0 or 1 (impostor.vert's `apart`), a float each: llvmpipe read bytes there as 0.
+    gl_.VertexAttribPointer(10, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
+    gl_.BindVertexArray(0);
     boxes_->makeInstanced(cubeTriangles());
     markers_->makeInstanced(quadStrip(), GL_TRIANGLE_STRIP);
     lines_->makeLines();
     surfaces_->makeLines();
 }
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() { gl_.DeleteBuffers(1, &apartBuffer_); }
 
 void Renderer::setShapes(const ShapeInstances& instances) {
     const std::vector<std::uint32_t> order = spatialOrder(instances.rounded);
@@ -267,6 +265,29 @@ void Renderer::setShapes(const ShapeInstances& instances) {
         roundedAt_[id] = static_cast<std::uint32_t>(place);
     }
     boxIds_ = instances.boxIds;
+    std::vector<ApartSpheres::Ball> otherShapes;
+    for (const ShapeInstance& box : instances.boxes) {
+        // box.vert's cube [-1, 1]^3 through `linear`: no corner farther than the columns' lengths added.
+        float reach = 0.0f;
+        for (std::size_t column = 0; column < 3; ++column) {
+            const float* v = &box.linear[3 * column];
+            reach += std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        }
+        otherShapes.push_back({glm::vec3(box.center[0], box.center[1], box.center[2]), reach});
+    }
+    for (const MeshInstance& mesh : instances.meshes) {
+        float reach = 0.0f;  // the positions are relative to the instance's centre (DrawData.hpp)
+        for (const MeshVertex& vertex : mesh.geometry->vertices) {
+            reach = std::max(reach, glm::length(glm::vec3(vertex.position[0], vertex.position[1], vertex.position[2])));
+        }
+        const std::array<float, 3>& c = mesh.instance.center;
+        otherShapes.push_back({glm::vec3(c[0], c[1], c[2]), reach});
+    }
+    apart_.setShapes(rounded, otherShapes);
+    const std::vector<float> noneApart(rounded.size(), 0.0f);  // until a frame asks (refreshApart)
+    gl_.BindBuffer(GL_ARRAY_BUFFER, apartBuffer_);
+    gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(noneApart.size() * sizeof(float)), noneApart.data(),
+                   GL_STATIC_DRAW);
     chunks_.clear();
     const std::size_t perChunk = std::max(kChunkShapes, (rounded.size() + kMostChunks - 1) / kMostChunks);
     for (std::size_t first = 0; first < rounded.size(); first += perChunk) {
@@ -278,7 +299,7 @@ void Renderer::setShapes(const ShapeInstances& instances) {
         chunk.spheres = true;
         for (std::size_t i = first; i < end; ++i) {
             chunk.spheres = chunk.spheres && isSphereInstance(rounded[i]);
-            const double radius = boundingRadius(rounded[i]);
+            const double radius = ApartSpheres::boundingBall(rounded[i]).radius;
             const glm::dvec3 c(rounded[i].center[0], rounded[i].center[1], rounded[i].center[2]);
             low = glm::min(low, c - radius);
             high = glm::max(high, c + radius);
@@ -346,6 +367,7 @@ bool Renderer::recolourShape(ShapeId id, const Colour& colour) {
 void Renderer::setLines(const LineBatch& lines) {
     lines_->upload(lines.vertices());
     chordsFrom_ = lines_->count;
+    apart_.setSegments(lines.vertices());
 }
 
 void Renderer::setLines(const LineBatch& lines, const LineBatch& chords) {
@@ -359,14 +381,34 @@ void Renderer::setLines(const LineBatch& lines, const LineBatch& chords) {
     vertices.insert(vertices.end(), chords.vertices().begin(), chords.vertices().end());
     lines_->upload(vertices);
     chordsFrom_ = static_cast<GLsizei>(lines.vertices().size());
+    apart_.setSegments(lines.vertices());  // not the chords: a frame that draws them draws no sphere at its centre
 }
 
-void Renderer::setSurfaces(const TriangleBatch& surfaces) { surfaces_->upload(surfaces.vertices()); }
+void Renderer::setSurfaces(const TriangleBatch& surfaces) {
+    surfaces_->upload(surfaces.vertices());
+    apart_.setTriangles(surfaces.vertices());
+}
 
-void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) { markers_->upload(markers); }
+void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) {
+    markers_->upload(markers);
+    apart_.setMarkers(markers);
+}
+
+void Renderer::refreshApart() {
+    if (!apart_.takeChanged()) return;
+    const std::vector<std::uint8_t>& apart = apart_.apart();
+    gl_.BindBuffer(GL_ARRAY_BUFFER, apartBuffer_);
+    const std::vector<float> flags(apart.begin(), apart.end());
+    gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(flags.size() * sizeof(float)), flags.data(),
+                   GL_STATIC_DRAW);
+    for (RoundedChunk& chunk : chunks_) {
+        const auto first = apart.begin() + chunk.first;
+        chunk.apart = static_cast<GLsizei>(std::count(first, first + chunk.count, std::uint8_t{1}));
+    }
+}
 
 void Renderer::setShapeUniforms(const ShaderProgram& program, const FrameUniforms& frame, float opacity,
-                                float pointPixels, float exactPointPixels) const {
+                                float pointPixels, float exactPointPixels, float apartPixels) const {
     program.use();
     gl_.UniformMatrix4fv(program.uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(frame.viewProjection));
     // Only the impostor programs have these; a location of -1 is ignored.
@@ -375,6 +417,7 @@ void Renderer::setShapeUniforms(const ShaderProgram& program, const FrameUniform
     gl_.Uniform3fv(program.uniform("cameraUp"), 1, glm::value_ptr(frame.up));
     gl_.Uniform1f(program.uniform("pointPixels"), pointPixels);
     gl_.Uniform1f(program.uniform("exactPointPixels"), exactPointPixels);
+    gl_.Uniform1f(program.uniform("apartPixels"), apartPixels);
     gl_.Uniform1f(program.uniform("pixelsPerUnit"), frame.pixelsPerUnit);
     gl_.Uniform1f(program.uniform("maxStretch"), frame.maxStretch);
     gl_.Uniform2f(program.uniform("viewportSize"), frame.width, frame.height);
@@ -405,7 +448,8 @@ void Renderer::drawShapes(const Mesh& mesh, const ShaderProgram& program, const 
 // before shading (the last kind always, the others where it honours impostor.frag's depth_greater) drop most
 // hidden fragments unshaded; the last kind goes last, behind all the exact depth. The bounds on a chunk's
 // widths are loose by a percent, so float rounding in the shader cannot leave a shape undrawn.
-void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float pointPixels, bool sphereProgram) {
+void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float pointPixels, bool sphereProgram,
+                           float apartPixels) {
     if (rounded_->count == 0) return;
     const std::array<glm::dvec4, 6> planes = frustumPlanes(frame.viewProjection);
     const glm::dvec3 eye(frame.eye);
@@ -442,16 +486,22 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
                                         std::sqrt(nearest * nearest - chunk.largest * chunk.largest) * frame.maxStretch
                                   : std::numeric_limits<double>::infinity();
         const double narrowest = 0.99 * 2.0 * chunk.smallest * pixelsPerUnit / (distance + chunk.radius);
+        // Spheres apart take the front's-depth points' program up to apartPixels (impostor.vert).
+        const bool someApart = apartPixels > 0.0f && chunk.apart > 0;
+        const bool allApart = apartPixels > 0.0f && chunk.apart == chunk.count;
         if (straddles || widest > exactPoints) quadChunks.emplace_back(distance, &chunk);
-        if (widest > pointPixels && narrowest <= exactPoints) exactPointChunks.emplace_back(distance, &chunk);
-        if (narrowest <= pointPixels) pointChunks.emplace_back(distance, &chunk);
+        if (widest > pointPixels && narrowest <= exactPoints && !allApart)
+            exactPointChunks.emplace_back(distance, &chunk);
+        if (narrowest <= (someApart ? static_cast<double>(apartPixels) : pointPixels)) {
+            pointChunks.emplace_back(distance, &chunk);
+        }
     }
     for (Drawn* drawn : {&quadChunks, &exactPointChunks, &pointChunks}) {
         std::sort(drawn->begin(), drawn->end());
         if (opacity < 1.0f) std::reverse(drawn->begin(), drawn->end());  // blended: farthest first
     }
     if (!quadChunks.empty()) {
-        setShapeUniforms(*impostor_, frame, opacity, pointPixels, exactPointPixels_);
+        setShapeUniforms(*impostor_, frame, opacity, pointPixels, exactPointPixels_, apartPixels);
         gl_.BindVertexArray(rounded_->vertexArray);
         gl_.BindBuffer(GL_ARRAY_BUFFER, rounded_->dataBuffer);
         for (const auto& [distance, chunk] : quadChunks) {
@@ -469,7 +519,7 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
         for (const auto& [distance, chunk] : *drawn) {
             const ShaderProgram* program = sphereProgram && chunk->spheres ? programs.second : programs.first;
             if (program != current) {
-                setShapeUniforms(*program, frame, opacity, pointPixels, exactPointPixels_);
+                setShapeUniforms(*program, frame, opacity, pointPixels, exactPointPixels_, apartPixels);
                 current = program;
             }
             gl_.DrawArrays(GL_POINTS, chunk->first, chunk->count);
@@ -533,13 +583,19 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     drawShapes(*markers_, *impostor_, frame, 1.0f);
     const bool boxesBlended = options.translucent || options.translucentBoxes;
     const bool roundedOpaque = options.shapes && !options.translucent;
-    if (roundedOpaque) drawRounded(frame, 1.0f, options.pointPixels, options.sphereProgram);
-    if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, frame, 1.0f);
-    if (options.shapes && !options.translucent) drawMeshes(frame, 1.0f);
     // The near plane's corners are the farthest of its points from the eye: 1 / cos of the angle off the axis.
     const double nearReach = 1.01 * local.nearPlane * std::sqrt(1.0 + cornerTan2);
     const bool chordsHidden = options.skipHiddenChords && roundedOpaque && chordsFrom_ < lines_->count &&
                               !roundedWithin(local.eye, nearReach);
+    const bool chordsDrawn = options.lines && chordsFrom_ < lines_->count && !chordsHidden;
+    float apartPixels = 0.0f;
+    if (roundedOpaque && options.apartSpheres && options.pointPixels > 0.0f && !chordsDrawn) {
+        refreshApart();
+        apartPixels = exactPointPixels_;
+    }
+    if (roundedOpaque) drawRounded(frame, 1.0f, options.pointPixels, options.sphereProgram, apartPixels);
+    if (options.shapes && !boxesBlended) drawShapes(*boxes_, *box_, frame, 1.0f);
+    if (options.shapes && !options.translucent) drawMeshes(frame, 1.0f);
     if (const GLsizei lineVertices = chordsHidden ? chordsFrom_ : lines_->count; options.lines && lineVertices > 0) {
         line_->use();
         gl_.UniformMatrix4fv(line_->uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "render/ApartSpheres.hpp"
 #include "render/Camera.hpp"
 #include "render/DrawData.hpp"
 #include "render/GlFunctions.hpp"
@@ -37,6 +38,11 @@ struct RenderOptions {
     // picture, less vertex work: docs/rendering.md, "Spheres' points"); false draws them as ellipsoids are,
     // for comparison.
     bool sphereProgram = true;
+    // Spheres that nothing else drawn reaches into (render/ApartSpheres.hpp) are drawn, when pointPixels is
+    // above 0, as points at their centre's depth up to kExactPointPixels: the same picture but at their rims,
+    // and hidden pixels skipped before shading (docs/rendering.md, "Spheres apart"). Not while chords are drawn
+    // (they lie inside). false keeps them to pointPixels and the front's depth, for comparison.
+    bool apartSpheres = true;
     // The chords handed to setLines are left out while they cannot show: shapes drawn opaque, no sphere's
     // or ellipsoid's chunk reaching the eye or the near plane (the same picture, fewer segments for the
     // driver: docs/rendering.md, "Chords"). false draws them always, for comparison.
@@ -108,12 +114,17 @@ private:
         double smallest = 0.0;  // the shapes' bounding radii
         double largest = 0.0;
         bool spheres = false;  // every shape's matrices are r I and I / r
+        GLsizei apart = 0;     // how many of its spheres are apart (apart_), as last uploaded
     };
     // pointPixels and exactPointPixels 0: the quad program draws every instance.
     void setShapeUniforms(const ShaderProgram& program, const FrameUniforms& frame, float opacity, float pointPixels,
-                          float exactPointPixels) const;
+                          float exactPointPixels, float apartPixels = 0.0f) const;
     void drawShapes(const Mesh& mesh, const ShaderProgram& program, const FrameUniforms& frame, float opacity);
-    void drawRounded(const FrameUniforms& frame, float opacity, float pointPixels, bool sphereProgram);
+    // apartPixels > 0: spheres apart up to that width are points at their centre's depth.
+    void drawRounded(const FrameUniforms& frame, float opacity, float pointPixels, bool sphereProgram,
+                     float apartPixels = 0.0f);
+    // apart_'s flags uploaded, and the chunks' counts of them, when they have changed.
+    void refreshApart();
     void drawMeshes(const FrameUniforms& frame, float opacity);
     // Whether a run of spheres and ellipsoids comes within `reach` of the eye: the eye may be inside one of
     // them, or the near plane cut one open.
@@ -131,6 +142,8 @@ private:
     std::unique_ptr<ShaderProgram> line_;
     std::unique_ptr<Mesh> rounded_;
     std::unique_ptr<Mesh> roundedPoints_;  // rounded_'s instances, one vertex each
+    GLuint apartBuffer_ = 0;               // a float for each of them: apart_'s flags (location 10 of roundedPoints_)
+    ApartSpheres apart_;
     std::vector<RoundedChunk> chunks_;
     static constexpr std::uint32_t kNoInstance = 0xFFFFFFFFu;
     std::vector<std::uint32_t> roundedAt_;       // by shape id: its place in rounded_'s (ordered) instances

@@ -31,6 +31,7 @@ snapshot::Image DirectRenderer::draw(const render::Camera& camera, const render:
     render::RenderOptions options = blackBackground();
     options.pointPixels = pointPixels_;
     options.sphereProgram = sphereProgram_;
+    options.apartSpheres = apartSpheres_;
     renderer_.draw(camera, options, width(), height());
     return context_.read();
 }

@@ -28,6 +28,8 @@ public:
     void setPointPixels(float pixels) { pointPixels_ = pixels; }
     // RenderOptions::sphereProgram of the next draws (on unless set).
     void setSphereProgram(bool on) { sphereProgram_ = on; }
+    // RenderOptions::apartSpheres of the next draws (on unless set).
+    void setApartSpheres(bool on) { apartSpheres_ = on; }
     int width() const { return context_.width(); }
     int height() const { return context_.height(); }
 
@@ -36,6 +38,7 @@ private:
     render::Renderer renderer_;
     float pointPixels_ = 0.0f;
     bool sphereProgram_ = true;
+    bool apartSpheres_ = true;
 };
 
 // A camera from `eye` to `target`, up +y, with its near and far planes around `bounds`.
