@@ -55,7 +55,7 @@ void ApartSpheres::setShapes(const std::vector<ShapeInstance>& rounded, const st
         spheres_.push_back({centre, -1.0f});
         shapeBalls_.push_back(boundingBall(shape));
     }
-    buildGrid();
+    gridDirty_ = true;  // built when first asked for (compute)
     shapesDirty_ = true;
     dirty_ = true;
 }
@@ -270,7 +270,6 @@ void ApartSpheres::touchByBalls(const std::vector<Ball>& balls, std::vector<std:
     for (const Ball& ball : balls) {
         if (ball.radius < 0.0f) continue;  // an ellipsoid's place in spheres_
         forEachSphereInBox(ball.centre - ball.radius, ball.centre + ball.radius, [&](std::uint32_t i) {
-            if (&spheres_[i] == &ball) return;
             const glm::vec3 off = spheres_[i].centre - ball.centre;
             const float reach = (spheres_[i].radius + ball.radius) * (1.0f - kApartReach);
             if (glm::dot(off, off) < reach * reach) flags[i] = 0;
@@ -279,11 +278,29 @@ void ApartSpheres::touchByBalls(const std::vector<Ball>& balls, std::vector<std:
 }
 
 void ApartSpheres::compute() {
+    if (gridDirty_) {
+        buildGrid();
+        gridDirty_ = false;
+    }
     if (shapesDirty_) {
         shapesApart_.assign(spheres_.size(), 0);
         for (std::size_t i = 0; i < spheres_.size(); ++i) shapesApart_[i] = spheres_[i].radius >= 0.0f ? 1 : 0;
         touchByBalls(shapeBalls_, shapesApart_);
-        touchByBalls(spheres_, shapesApart_);  // the ellipsoids' radius -1 reaches nothing
+        // Two spheres that overlap share a cell (a point of both their boxes): each cell's pairs.
+        for (std::size_t k = 0; k + 1 < cellStart_.size(); ++k) {
+            for (std::uint32_t r = cellStart_[k]; r < cellStart_[k + 1]; ++r) {
+                const Ball& a = spheres_[cellSpheres_[r]];
+                for (std::uint32_t q = r + 1; q < cellStart_[k + 1]; ++q) {
+                    const Ball& b = spheres_[cellSpheres_[q]];
+                    const glm::vec3 off = b.centre - a.centre;
+                    const float reach = (a.radius + b.radius) * (1.0f - kApartReach);
+                    if (glm::dot(off, off) < reach * reach) {
+                        shapesApart_[cellSpheres_[r]] = 0;
+                        shapesApart_[cellSpheres_[q]] = 0;
+                    }
+                }
+            }
+        }
         shapesDirty_ = false;
     }
     apart_ = shapesApart_;

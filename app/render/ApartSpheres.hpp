@@ -12,7 +12,7 @@ namespace dropscope::render {
 
 // How deep another thing must reach into a sphere, as a fraction of its radius, to count: less than this is
 // float rounding (a path's end on the sphere's surface, stored anchor-relative in float) and, at the most a
-// point is wide (kExactPointPixels), a thirtieth of a pixel.
+// point is wide (kExactPointPixels), a sixtieth of a pixel.
 inline constexpr float kApartReach = 1e-3f;
 
 // The spheres that nothing else drawn reaches into: not another shape, an event marker, a line segment or a
@@ -21,7 +21,8 @@ inline constexpr float kApartReach = 1e-3f;
 // still hide and show the rest as its exact depth would, but at its rim (impostor.vert).
 //
 // The spheres are kept in a uniform grid, each in every cell its bounding box meets, so a contact is tested
-// against the spheres of the cells it passes through. The answer is worked out when asked for after a change.
+// against the spheres of the cells it passes through. The grid and the answer are worked out when asked for
+// after a change.
 class ApartSpheres {
 public:
     struct Ball {
@@ -70,6 +71,7 @@ private:
     std::vector<std::uint32_t> cellSpheres_;
     std::vector<std::uint8_t> shapesApart_;  // apart from the other shapes; worked out again only when they change
     std::vector<std::uint8_t> apart_;
+    bool gridDirty_ = true;
     bool shapesDirty_ = true;
     bool dirty_ = true;
     bool changed_ = true;

@@ -589,7 +589,8 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
                               !roundedWithin(local.eye, nearReach);
     const bool chordsDrawn = options.lines && chordsFrom_ < lines_->count && !chordsHidden;
     float apartPixels = 0.0f;
-    if (roundedOpaque && options.apartSpheres && options.pointPixels > 0.0f && !chordsDrawn) {
+    if (roundedOpaque && options.apartSpheres && options.pointPixels > 0.0f && !chordsDrawn &&
+        rounded_->count <= kApartMostSpheres) {
         refreshApart();
         apartPixels = exactPointPixels_;
     }

@@ -23,6 +23,11 @@ inline constexpr float kInteractivePointPixels = 6.0f;
 // not four), with exact depth: the picture is the same. Lowered to what the driver's points allow.
 inline constexpr float kExactPointPixels = 32.0f;
 
+// Above this many spheres and ellipsoids no frame draws spheres apart at their centre's depth
+// (RenderOptions::apartSpheres): working out which are apart takes 0.16 s at 1e6 droplets, and such clouds are
+// drawn mostly as points of a few pixels, whose depth is the front's either way (docs/rendering.md, "Spheres apart").
+inline constexpr int kApartMostSpheres = 300000;
+
 // What to draw; every layer can be switched off.
 struct RenderOptions {
     bool shapes = true;
