@@ -101,7 +101,11 @@ void main() {
     // 0: a quad; 1: a point with exact depth; 2: a point with the front's depth.
     int tier = !inside || pixels > exactPointPixels ? 0 : (pixels <= pointPixels ? 2 : 1);
 #ifdef POINT_SPRITE
-    bool centreDepth = apart > 0.5 && pixels <= apartPixels;
+    // Off the view's axis, at angle phi, the centre's depth leaves the sphere's span along the outer
+    // R (1 - cos phi) of the silhouette (docs/rendering.md, "Spheres apart"): at most a pixel there. depth /
+    // distance is cos phi at the centre. A centre beyond the far plane would clip the point whole.
+    bool centreDepth = apart > 0.5 && pixels <= apartPixels && pixels * (1.0 - depth / distance) < 2.0 &&
+                       clipCentre.z <= clipCentre.w;
     if (tier == 1 && centreDepth) tier = 2;
 #ifdef EXACT_DEPTH
     const int kTier = 1;
@@ -113,8 +117,7 @@ void main() {
         gl_PointSize = 1.0;
         return;
     }
-    // The centre's depth, unless beyond the far plane (a point is clipped whole by its place).
-    gl_Position = centreDepth && clipCentre.z <= clipCentre.w ? clipCentre : nearestClip;
+    gl_Position = centreDepth ? clipCentre : nearestClip;
     gl_PointSize = pointSize;
 #else
     if (tier != 0) {

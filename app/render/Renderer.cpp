@@ -237,12 +237,11 @@ Renderer::Renderer(const GlFunctions& gl)
     exactPointPixels_ = std::min(kExactPointPixels, static_cast<float>(pointSizes[1] - 2) / 1.05f);
     rounded_->makeInstanced(quadStrip(), GL_TRIANGLE_STRIP);
     roundedPoints_->makePointsOf(*rounded_);
-    gl_.GenBuffers(1, &apartBuffer_);
+    // The points' own buffer holds the spheres' apart flags (impostor.vert's `apart`), a float each: llvmpipe
+    // read a byte attribute there as 0.
     gl_.BindVertexArray(roundedPoints_->vertexArray);
-    gl_.BindBuffer(GL_ARRAY_BUFFER, apartBuffer_);
-    gl_.EnableVertexAttribArray(10);
-    // 0 or 1 (impostor.vert's `apart`), a float each: llvmpipe read bytes there as 0.
-    gl_.VertexAttribPointer(10, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
+    gl_.BindBuffer(GL_ARRAY_BUFFER, roundedPoints_->dataBuffer);
+    roundedPoints_->attribute(10, 1, sizeof(float), 0, 0);
     gl_.BindVertexArray(0);
     boxes_->makeInstanced(cubeTriangles());
     markers_->makeInstanced(quadStrip(), GL_TRIANGLE_STRIP);
@@ -250,7 +249,7 @@ Renderer::Renderer(const GlFunctions& gl)
     surfaces_->makeLines();
 }
 
-Renderer::~Renderer() { gl_.DeleteBuffers(1, &apartBuffer_); }
+Renderer::~Renderer() = default;
 
 void Renderer::setShapes(const ShapeInstances& instances) {
     const std::vector<std::uint32_t> order = spatialOrder(instances.rounded);
@@ -275,17 +274,23 @@ void Renderer::setShapes(const ShapeInstances& instances) {
         }
         otherShapes.push_back({glm::vec3(box.center[0], box.center[1], box.center[2]), reach});
     }
-    for (const MeshInstance& mesh : instances.meshes) {
-        float reach = 0.0f;  // the positions are relative to the instance's centre (DrawData.hpp)
-        for (const MeshVertex& vertex : mesh.geometry->vertices) {
-            reach = std::max(reach, glm::length(glm::vec3(vertex.position[0], vertex.position[1], vertex.position[2])));
+    std::vector<std::pair<const MeshGeometry*, float>> reaches;  // by geometry: its positions are relative to
+    for (const MeshInstance& mesh : instances.meshes) {          // the instance's centre (DrawData.hpp)
+        auto known =
+            std::find_if(reaches.begin(), reaches.end(), [&](const auto& r) { return r.first == mesh.geometry.get(); });
+        if (known == reaches.end()) {
+            float reach = 0.0f;
+            for (const MeshVertex& v : mesh.geometry->vertices) {
+                reach = std::max(reach, glm::length(glm::vec3(v.position[0], v.position[1], v.position[2])));
+            }
+            known = reaches.insert(reaches.end(), {mesh.geometry.get(), reach});
         }
         const std::array<float, 3>& c = mesh.instance.center;
-        otherShapes.push_back({glm::vec3(c[0], c[1], c[2]), reach});
+        otherShapes.push_back({glm::vec3(c[0], c[1], c[2]), known->second});
     }
     apart_.setShapes(rounded, otherShapes);
     const std::vector<float> noneApart(rounded.size(), 0.0f);  // until a frame asks (refreshApart)
-    gl_.BindBuffer(GL_ARRAY_BUFFER, apartBuffer_);
+    gl_.BindBuffer(GL_ARRAY_BUFFER, roundedPoints_->dataBuffer);
     gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(noneApart.size() * sizeof(float)), noneApart.data(),
                    GL_STATIC_DRAW);
     chunks_.clear();
@@ -395,9 +400,9 @@ void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) {
 }
 
 void Renderer::refreshApart() {
-    if (!apart_.takeChanged()) return;
+    if (!apart_.takeUpdated()) return;
     const std::vector<std::uint8_t>& apart = apart_.apart();
-    gl_.BindBuffer(GL_ARRAY_BUFFER, apartBuffer_);
+    gl_.BindBuffer(GL_ARRAY_BUFFER, roundedPoints_->dataBuffer);
     const std::vector<float> flags(apart.begin(), apart.end());
     gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(flags.size() * sizeof(float)), flags.data(),
                    GL_STATIC_DRAW);
@@ -486,14 +491,14 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
                                         std::sqrt(nearest * nearest - chunk.largest * chunk.largest) * frame.maxStretch
                                   : std::numeric_limits<double>::infinity();
         const double narrowest = 0.99 * 2.0 * chunk.smallest * pixelsPerUnit / (distance + chunk.radius);
-        // Spheres apart take the front's-depth points' program up to apartPixels (impostor.vert).
+        // Spheres apart may take the front's-depth points' program up to apartPixels: impostor.vert decides,
+        // shape by shape, which of the two point programs draws each.
         const bool someApart = apartPixels > 0.0f && chunk.apart > 0;
-        const bool allApart = apartPixels > 0.0f && chunk.apart == chunk.count;
         if (straddles || widest > exactPoints) quadChunks.emplace_back(distance, &chunk);
-        if (widest > pointPixels && narrowest <= exactPoints && !allApart)
-            exactPointChunks.emplace_back(distance, &chunk);
+        if (widest > pointPixels && narrowest <= exactPoints) exactPointChunks.emplace_back(distance, &chunk);
         if (narrowest <= (someApart ? static_cast<double>(apartPixels) : pointPixels)) {
             pointChunks.emplace_back(distance, &chunk);
+            if (someApart) apartInLastFrame_ += static_cast<std::size_t>(chunk.apart);
         }
     }
     for (Drawn* drawn : {&quadChunks, &exactPointChunks, &pointChunks}) {
@@ -588,6 +593,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     const bool chordsHidden = options.skipHiddenChords && roundedOpaque && chordsFrom_ < lines_->count &&
                               !roundedWithin(local.eye, nearReach);
     const bool chordsDrawn = options.lines && chordsFrom_ < lines_->count && !chordsHidden;
+    apartInLastFrame_ = 0;
     float apartPixels = 0.0f;
     if (roundedOpaque && options.apartSpheres && options.pointPixels > 0.0f && !chordsDrawn &&
         rounded_->count <= kApartMostSpheres) {

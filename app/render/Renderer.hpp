@@ -88,6 +88,9 @@ public:
     void setMarkers(const std::vector<ShapeInstance>& markers);
 
     void draw(const Camera& camera, const RenderOptions& options, int width, int height);
+    // How many spheres apart (RenderOptions::apartSpheres) the last frame offered to the points at their
+    // centre's depth: those of its chunks in view (each sphere's width and place then decide).
+    std::size_t apartInLastFrame() const { return apartInLastFrame_; }
 
 private:
     struct Mesh;
@@ -147,8 +150,8 @@ private:
     std::unique_ptr<ShaderProgram> line_;
     std::unique_ptr<Mesh> rounded_;
     std::unique_ptr<Mesh> roundedPoints_;  // rounded_'s instances, one vertex each
-    GLuint apartBuffer_ = 0;               // a float for each of them: apart_'s flags (location 10 of roundedPoints_)
-    ApartSpheres apart_;
+    ApartSpheres apart_;                   // their flags are roundedPoints_'s own data (location 10)
+    std::size_t apartInLastFrame_ = 0;
     std::vector<RoundedChunk> chunks_;
     static constexpr std::uint32_t kNoInstance = 0xFFFFFFFFu;
     std::vector<std::uint32_t> roundedAt_;       // by shape id: its place in rounded_'s (ordered) instances

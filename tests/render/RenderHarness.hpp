@@ -30,6 +30,8 @@ public:
     void setSphereProgram(bool on) { sphereProgram_ = on; }
     // RenderOptions::apartSpheres of the next draws (on unless set).
     void setApartSpheres(bool on) { apartSpheres_ = on; }
+    // Renderer::apartInLastFrame of the last draw.
+    std::size_t apartInLastFrame() const { return renderer_.apartInLastFrame(); }
     int width() const { return context_.width(); }
     int height() const { return context_.height(); }
 
