@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <numeric>
 
 namespace dropscope::render {
@@ -458,6 +459,7 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
     if (rounded_->count == 0) return;
     const std::array<glm::dvec4, 6> planes = frustumPlanes(frame.viewProjection);
     const glm::dvec3 eye(frame.eye);
+    const glm::dvec3 forward = glm::normalize(glm::dvec3(frame.clipW));  // a point's clip w grows along the view axis
     const double pixelsPerUnit = frame.pixelsPerUnit;
     pointPixels = std::min(pointPixels, exactPointPixels_);  // no point wider than the driver's points allow
     const double exactPoints = exactPointPixels_;
@@ -492,10 +494,22 @@ void Renderer::drawRounded(const FrameUniforms& frame, float opacity, float poin
                                   : std::numeric_limits<double>::infinity();
         const double narrowest = 0.99 * 2.0 * chunk.smallest * pixelsPerUnit / (distance + chunk.radius);
         // Spheres apart may take the front's-depth points' program up to apartPixels: impostor.vert decides,
-        // shape by shape, which of the two point programs draws each.
+        // shape by shape, which of the two point programs draws each. A chunk of spheres all apart, clear of
+        // the view's planes (the far one among them) and near enough the axis that even its widest has its band
+        // at the rim under a pixel (impostor.vert: w (1 - cos phi) < 2, here with a margin for float rounding)
+        // needs no exact points.
         const bool someApart = apartPixels > 0.0f && chunk.apart > 0;
+        bool noExactPoints = false;
+        if (someApart && chunk.apart == chunk.count && !straddles) {
+            const double cosCentre = glm::dot(forward, (chunk.centre - eye) / distance);
+            const double offAxis =
+                std::acos(std::clamp(cosCentre, -1.0, 1.0)) + std::asin(std::min(1.0, chunk.radius / distance));
+            noExactPoints = widest * (1.0 - std::cos(std::min(offAxis, 0.5 * std::numbers::pi))) < 1.9;
+        }
         if (straddles || widest > exactPoints) quadChunks.emplace_back(distance, &chunk);
-        if (widest > pointPixels && narrowest <= exactPoints) exactPointChunks.emplace_back(distance, &chunk);
+        if (widest > pointPixels && narrowest <= exactPoints && !noExactPoints) {
+            exactPointChunks.emplace_back(distance, &chunk);
+        }
         if (narrowest <= (someApart ? static_cast<double>(apartPixels) : pointPixels)) {
             pointChunks.emplace_back(distance, &chunk);
             if (someApart) apartInLastFrame_ += static_cast<std::size_t>(chunk.apart);
