@@ -258,39 +258,24 @@ int run(const Options& options) {
     }
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, steady, view drawn and kept", steady.median(), steady.minimum(),
-                steady.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, steady, kept view copied", steadyCopied.median(),
-                steadyCopied.minimum(), steadyCopied.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, orbiting (1 degree a frame)", orbit.median(), orbit.minimum(),
-                orbit.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, layers rebuilt every frame", rebuild.median(), rebuild.minimum(),
-                rebuild.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, selection changed every frame", select.median(), select.minimum(),
-                select.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "reference: 3D view alone (ViewportScene)", reference3d,
-                alone.minimum(), 1.0);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "  of which the shapes alone", shapesAlone.median(),
-                shapesAlone.minimum(), shapesAlone.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "  of which the lines alone", linesAlone.median(), linesAlone.minimum(),
-                linesAlone.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "  shapes alone, sphere programs (alternated)",
-                shapesSphereProgram.median(), shapesSphereProgram.minimum(),
-                shapesSphereProgram.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "  shapes alone, general programs (alternated)", shapesGeneral.median(),
-                shapesGeneral.minimum(), shapesGeneral.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, orbiting, hidden chords left out (alt.)", orbitSkipping.median(),
-                orbitSkipping.minimum(), orbitSkipping.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "app, orbiting, hidden chords drawn (alt.)", orbitChords.median(),
-                orbitChords.minimum(), orbitChords.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "3D view alone, hidden chords left out (alt.)", viewSkipping.median(),
-                viewSkipping.minimum(), viewSkipping.median() / reference3d);
-    std::printf("%-44s %10.1f %10.1f %12.2f\n", "3D view alone, hidden chords drawn (alt.)", viewChords.median(),
-                viewChords.minimum(), viewChords.median() / reference3d);
     const auto row = [&](const char* name, Series& series) {
         std::printf("%-44s %10.1f %10.1f %12.2f\n", name, series.median(), series.minimum(),
                     series.median() / reference3d);
     };
+    row("app, steady, view drawn and kept", steady);
+    row("app, steady, kept view copied", steadyCopied);
+    row("app, orbiting (1 degree a frame)", orbit);
+    row("app, layers rebuilt every frame", rebuild);
+    row("app, selection changed every frame", select);
+    row("reference: 3D view alone (ViewportScene)", alone);
+    row("  of which the shapes alone", shapesAlone);
+    row("  of which the lines alone", linesAlone);
+    row("  shapes alone, sphere programs (alternated)", shapesSphereProgram);
+    row("  shapes alone, general programs (alternated)", shapesGeneral);
+    row("app, orbiting, hidden chords left out (alt.)", orbitSkipping);
+    row("app, orbiting, hidden chords drawn (alt.)", orbitChords);
+    row("3D view alone, hidden chords left out (alt.)", viewSkipping);
+    row("3D view alone, hidden chords drawn (alt.)", viewChords);
     row("app, orbiting, spheres apart at centre (alt.)", orbitApart);
     row("app, orbiting, spheres apart not (alt.)", orbitNotApart);
     row("3D view alone, spheres apart at centre (alt.)", viewApart);

@@ -14,6 +14,8 @@ constexpr double kCellGrowth = 1e-4;
 
 bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+bool isFiniteBall(const ApartSpheres::Ball& ball) { return isFinite(ball.centre) && std::isfinite(ball.radius); }
+
 float squaredDistanceToSegment(const glm::vec3& c, const glm::vec3& a, const glm::vec3& b) {
     const glm::vec3 ab = b - a;
     const float length2 = glm::dot(ab, ab);
@@ -90,10 +92,8 @@ void ApartSpheres::setShapes(const std::vector<ShapeInstance>& rounded, const st
             shapeBalls_.push_back(ball);
         }
     }
-    finiteShapes_ = std::all_of(shapeBalls_.begin(), shapeBalls_.end(),
-                                [](const Ball& b) { return isFinite(b.centre) && std::isfinite(b.radius); }) &&
-                    std::all_of(spheres_.begin(), spheres_.end(),
-                                [](const Ball& b) { return isFinite(b.centre) && std::isfinite(b.radius); });
+    finiteShapes_ = std::all_of(shapeBalls_.begin(), shapeBalls_.end(), isFiniteBall) &&
+                    std::all_of(spheres_.begin(), spheres_.end(), isFiniteBall);
     gridDirty_ = true;  // built when first asked for (compute)
     shapesDirty_ = true;
     dirty_ = true;
@@ -112,8 +112,7 @@ void ApartSpheres::setSegments(const std::vector<LineVertex>& segments) {
 void ApartSpheres::setMarkers(const std::vector<ShapeInstance>& markers) {
     markers_.clear();
     for (const ShapeInstance& marker : markers) markers_.push_back(boundingBall(marker));
-    finiteMarkers_ = std::all_of(markers_.begin(), markers_.end(),
-                                 [](const Ball& b) { return isFinite(b.centre) && std::isfinite(b.radius); });
+    finiteMarkers_ = std::all_of(markers_.begin(), markers_.end(), isFiniteBall);
     dirty_ = true;
 }
 
