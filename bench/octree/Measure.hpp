@@ -1,5 +1,7 @@
 #pragma once
 
+#include "tree/LargePageAllocator.hpp"
+
 #include <malloc.h>
 
 #include <algorithm>
@@ -11,10 +13,11 @@
 
 namespace dropscope::bench {
 
-// Bytes the program holds from glibc's malloc right now (all arenas, mmapped blocks included).
+// Bytes the program holds from glibc's malloc right now (all arenas, mmapped blocks included), and those the
+// octree maps for itself (LargePageAllocator).
 inline std::size_t heapInUse() {
     const struct mallinfo2 info = mallinfo2();
-    return info.uordblks + info.hblkhd;
+    return info.uordblks + info.hblkhd + largePageBytesInUse();  // the octree's largest arrays are mapped apart
 }
 
 class Stopwatch {
