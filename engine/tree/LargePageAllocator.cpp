@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <limits>
 
 // AddressSanitizer checks only the memory its allocator hands out: under it these arrays come from operator new.
 #if defined(__SANITIZE_ADDRESS__)
@@ -14,14 +15,13 @@
 
 #if defined(__linux__) && !defined(DROPSCOPE_ADDRESS_SANITIZER)
 #include <sys/mman.h>
+#include <unistd.h>
 #define DROPSCOPE_LARGE_PAGES 1
 #endif
 
 namespace dropscope {
 
 namespace {
-
-constexpr std::size_t kSmallPage = 4096;
 
 std::size_t roundUp(std::size_t bytes, std::size_t unit) { return (bytes + unit - 1) / unit * unit; }
 
@@ -34,7 +34,8 @@ std::atomic<std::size_t> mappedBytes{0};
 // A mapping one huge page longer than needed, trimmed at both ends to the aligned part: the kernel can back
 // only whole aligned 2 MiB stretches of a mapping with a huge page.
 void* allocateLargePages(std::size_t bytes) {
-    const std::size_t length = roundUp(bytes, kSmallPage);
+    if (bytes > std::numeric_limits<std::size_t>::max() / 2) throw std::bad_alloc();
+    const std::size_t length = roundUp(bytes, systemPageBytes());
     void* raw = mmap(nullptr, length + kLargePageBytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (raw == MAP_FAILED) throw std::bad_alloc();
     const auto start = reinterpret_cast<std::uintptr_t>(raw);
@@ -48,16 +49,14 @@ void* allocateLargePages(std::size_t bytes) {
 }
 
 void releaseLargePages(void* memory, std::size_t bytes) noexcept {
-    const std::size_t length = roundUp(bytes, kSmallPage);
+    const std::size_t length = roundUp(bytes, systemPageBytes());
     munmap(memory, length);
     mappedBytes -= length;
 }
 
 #else
 
-void* allocateLargePages(std::size_t bytes) {
-    return ::operator new (roundUp(bytes, kSmallPage), std::align_val_t{kLargePageBytes});
-}
+void* allocateLargePages(std::size_t bytes) { return ::operator new (bytes, std::align_val_t{kLargePageBytes}); }
 
 void releaseLargePages(void* memory, std::size_t) noexcept {
     ::operator delete (memory, std::align_val_t{kLargePageBytes});
@@ -66,6 +65,15 @@ void releaseLargePages(void* memory, std::size_t) noexcept {
 #endif
 
 std::size_t largePageBytesInUse() { return mappedBytes.load(); }
+
+std::size_t systemPageBytes() {
+#ifdef DROPSCOPE_LARGE_PAGES
+    static const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+    return page;
+#else
+    return 4096;
+#endif
+}
 
 bool largePagesAdvised() {
 #ifdef DROPSCOPE_LARGE_PAGES

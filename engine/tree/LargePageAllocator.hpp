@@ -6,7 +6,8 @@
 namespace dropscope {
 
 // Arrays of this many bytes or more get memory of their own that the kernel may back with transparent huge
-// pages: 2 MiB, the size of one such page on x86-64, so at least one whole page fits.
+// pages: 2 MiB, the size of one such page on x86-64 (and arm64 with 4 KiB pages), so at least one whole page
+// fits. The mappings are aligned to it; elsewhere the advice is only a hint the kernel may ignore.
 inline constexpr std::size_t kLargePageBytes = std::size_t{2} << 20;
 
 // Memory for `bytes` (at least kLargePageBytes) aligned to kLargePageBytes, which Linux is asked to back
@@ -20,6 +21,8 @@ void releaseLargePages(void* memory, std::size_t bytes) noexcept;
 std::size_t largePageBytesInUse();
 // Whether this build maps and advises them (Linux without AddressSanitizer), rather than using operator new.
 bool largePagesAdvised();
+// The size of the system's pages, to which those mappings are rounded (sysconf; 4096 where none is made).
+std::size_t systemPageBytes();
 
 // The allocator of the octree's arrays that a ray's search reads (cells, sphere blocks, their ids, the exact
 // spheres): at 1e6 droplets they span tens of MB, read at random, so with 4 KiB pages nearly every access
@@ -47,7 +50,10 @@ struct LargePageAllocator {
             ::operator delete (memory, std::align_val_t{alignof(T)});
         }
     }
-    friend bool operator==(const LargePageAllocator&, const LargePageAllocator&) { return true; }
+    template <class U>
+    friend bool operator==(const LargePageAllocator&, const LargePageAllocator<U>&) {
+        return true;  // stateless: any one frees what another allocated
+    }
 };
 
 }  // namespace dropscope

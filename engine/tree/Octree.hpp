@@ -195,18 +195,19 @@ private:
     CellBounds rootBounds_;
     double margin_ = 0.0;
     std::vector<Node> building_;  // empty between edits
-    std::vector<Cell, LargePageAllocator<Cell>> cells_;
-    std::vector<SphereBlock, LargePageAllocator<SphereBlock>>
-        blocks_;  // each cell's spheres in prefilterFrame_, padded to 4
-    std::vector<ShapeId, LargePageAllocator<ShapeId>> sphereIds_;  // 4 per block, RayHit::kNone in padding
+    // What a ray's search reads, in memory the kernel may back with huge pages (tree/LargePageAllocator.hpp).
+    template <class T>
+    using SearchArray = std::vector<T, LargePageAllocator<T>>;
+    SearchArray<Cell> cells_;
+    SearchArray<SphereBlock> blocks_;  // each cell's spheres in prefilterFrame_, padded to 4
+    SearchArray<ShapeId> sphereIds_;   // 4 per block, RayHit::kNone in padding
     // A packed sphere's double centre and radius, for the exact test of the candidates the prefilter leaves
     // (SphereGeometry::make recomputes its band; freeze packs only the spheres whose band it recomputes).
     struct ExactSphere {
         Point center;
         double radius;
     };
-    std::vector<ExactSphere, LargePageAllocator<ExactSphere>>
-        exactSpheres_;  // at the packed spheres' ids; radius 0 in the other slots
+    SearchArray<ExactSphere> exactSpheres_;  // at the packed spheres' ids; radius 0 in the other slots
     std::vector<ShapeId> others_;
     double rootHalf_ = 0.0;          // half the root's side
     double coordinateScale_ = 0.0;   // largest |coordinate| of the inflated root, for the prefilter's slack

@@ -168,6 +168,7 @@ int runWindow(const WindowOptions& options, const ClientFactory& makeClient, std
     // The client waits for work still running when it is destroyed (a ray tree's optical scene, seconds at 1e6
     // droplets; a trace's threads, up to a second): the window leaves the screen first, not frozen meanwhile.
     glfwHideWindow(window.get());
+    glfwPollEvents();  // the request sent (a Wayland backend queues it until events are handled)
     if (lastSize && !options.settingsFile.empty()) rememberSize(options.settingsFile, *lastSize, err);
     return 0;
 }
