@@ -95,6 +95,8 @@ public:
     }
     // The 12 edges of an axis-aligned box.
     void addBox(const Eigen::AlignedBox3d& box, const Colour& colour);
+    // Room for exactly `segments` more segments: for one bulk add, not to be called segment by segment.
+    void reserveMore(std::size_t segments) { vertices_.reserve(vertices_.size() + 2 * segments); }
     const std::vector<LineVertex>& vertices() const { return vertices_; }
     bool empty() const { return vertices_.empty(); }
 

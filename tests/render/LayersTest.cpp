@@ -7,9 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace dropscope {
 namespace {
@@ -170,6 +173,66 @@ TEST(RayTreeLayer, BranchesAreColouredOnALogScaleHeaviestFirst) {
     expectColour(render::logWeightColour(1e-6), render::viridis(0.0));
     expectColour(render::logWeightColour(1e-9), render::viridis(0.0));
     expectColour(render::logWeightColour(0.0), render::viridis(0.0));
+}
+
+// A chain of reflections along x: the segment from node k (at x = k) to node k + 1 carries node k's weight, the
+// emission's 1 and then weights[k - 1]; the last node is a truncated leaf, so weights.back() is drawn by no segment.
+RayTree chainWithWeights(const std::vector<double>& weights) {
+    RayTree tree;
+    tree.nodes.push_back({Event{EventType::Emit, Point::Zero(), Direction(1, 0, 0)}, -1, 0});
+    for (std::size_t k = 0; k < weights.size(); ++k) {
+        Event event{EventType::Reflect, Point(static_cast<double>(k + 1), 0, 0), Direction(1, 0, 0)};
+        event.weight = weights[k];
+        tree.nodes.push_back({event, static_cast<std::int32_t>(k), static_cast<int>(k + 1)});
+    }
+    tree.nodes.back().event.type = EventType::Truncated;
+    return tree;
+}
+
+// Where each drawn segment starts (its x), in the order drawn.
+std::vector<double> drawnStarts(const RayTree& tree) {
+    LineBatch lines{render::Anchor{}};
+    render::addRayTree(lines, tree, 1.0);
+    std::vector<double> starts;
+    for (std::size_t k = 0; k < lines.vertices().size(); k += 2) starts.push_back(worldOf(lines.vertices()[k], {})[0]);
+    return starts;
+}
+
+// The order in full: every segment heaviest first, equal weights in the tree's order, a weight of 0 last; weights
+// that differ only in their lowest bit, or only in their exponent, still ordered.
+TEST(RayTreeLayer, SegmentsAreDrawnHeaviestFirstAndEqualWeightsInTheTreesOrder) {
+    const double justAboveHalf = std::nextafter(0.5, 1.0);  // differs from 0.5 in its lowest bit only
+    const RayTree tree = chainWithWeights({0.5, 1e-3, justAboveHalf, 0.5, 0.0, 0.25, 1e-300, 1e-3, 0.5});
+    const std::vector<double> expected{0, 3, 1, 4, 6, 2, 8, 7, 5};  // 1, 0.5 + ulp, 0.5 x 2, 0.25, 1e-3 x 2, 1e-300, 0
+    EXPECT_EQ(drawnStarts(tree), expected);
+}
+
+// Many ties, against std::stable_sort: 300 weights drawn from a few values (powers of two, whose keys share all
+// but one byte, and two others) and some of their own.
+TEST(RayTreeLayer, ManyEqualWeightsKeepTheTreesOrderAsAStableSortDoes) {
+    const std::vector<double> few{1.0, 0.5, 0.25, 0.125, 0.3, 1e-4};
+    std::vector<double> weights;
+    for (std::size_t k = 0; k < 300; ++k)
+        weights.push_back(k % 7 == 0 ? 1.0 / static_cast<double>(k + 3) : few[(k * 5) % few.size()]);
+    std::vector<double> segmentWeights{1.0};  // the emission's, then every weight but the leaf's
+    segmentWeights.insert(segmentWeights.end(), weights.begin(), weights.end() - 1);
+    std::vector<double> expected(segmentWeights.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) expected[k] = static_cast<double>(k);
+    std::stable_sort(expected.begin(), expected.end(), [&](double a, double b) {
+        return segmentWeights[static_cast<std::size_t>(a)] > segmentWeights[static_cast<std::size_t>(b)];
+    });
+    EXPECT_EQ(drawnStarts(chainWithWeights(weights)), expected);
+
+    // Powers of two alone: six of the key's eight bytes are the same in every key, and those passes are skipped.
+    std::vector<double> powers;
+    for (std::size_t k = 0; k < 40; ++k) powers.push_back(std::ldexp(1.0, -static_cast<int>((k * 3) % 5)));
+    std::vector<double> powerStarts{0};  // the emission's 1 first; then the 1s, the 0.5s, ..., each in the tree's order
+    for (int exponent = 0; exponent < 5; ++exponent) {
+        for (std::size_t k = 0; k + 1 < powers.size(); ++k) {
+            if (powers[k] == std::ldexp(1.0, -exponent)) powerStarts.push_back(static_cast<double>(k + 1));
+        }
+    }
+    EXPECT_EQ(drawnStarts(chainWithWeights(powers)), powerStarts);
 }
 
 TEST(SourceGlyphs, BeamIsAnArrowAndACircleOfItsRadius) {
