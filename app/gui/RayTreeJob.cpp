@@ -18,6 +18,7 @@ RayTreeOutcome traceRayTreeRequest(RayTreeRequest request) {
             scene = std::move(built);
         }
         outcome.tree = traceRayTree(*scene->optical, request.ray, 1.0, request.settings, request.polarisation);
+        outcome.drawOrder = render::rayTreeDrawOrder(*outcome.tree, &scene->optical->octree());
         outcome.scene = std::move(scene);
     } catch (const std::exception& error) {
         outcome.error = error.what();
@@ -53,7 +54,11 @@ bool RayTreeJob::running() const { return worker_.joinable() && !finished_.load(
 std::optional<RayTreeOutcome> RayTreeJob::takeResult() {
     if (!worker_.joinable() || !finished_.load(std::memory_order_acquire)) return std::nullopt;
     joinWorker();
-    if (!outcome_) return RayTreeOutcome{nullptr, std::nullopt, "out of memory"};
+    if (!outcome_) {
+        RayTreeOutcome failed;
+        failed.error = "out of memory";
+        return failed;
+    }
     return std::exchange(outcome_, std::nullopt);
 }
 

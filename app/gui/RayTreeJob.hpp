@@ -1,6 +1,7 @@
 #pragma once
 
 #include "optics/Polarisation.hpp"
+#include "render/RayTreeLayer.hpp"
 #include "scene/Scene.hpp"
 #include "transport/Emission.hpp"
 #include "transport/OpticalScene.hpp"
@@ -26,6 +27,11 @@ struct RayTreeScene {
     std::uint64_t revision = 0;    // SceneDocument::revisionBesidesSources
     std::shared_ptr<const OpticalScene> optical;
     std::vector<ShapeId> slotOfShape;
+
+    // Whether it holds the shapes of the document `generation` at `revision` (revisionBesidesSources).
+    bool isOf(std::uint64_t documentGeneration, std::uint64_t documentRevision) const {
+        return generation == documentGeneration && revision == documentRevision;
+    }
 };
 
 // One ray tree to trace: through a kept optical scene, or through one built from `scene` first.
@@ -40,14 +46,17 @@ struct RayTreeRequest {
     std::optional<Polarisation> polarisation;
 };
 
-// What a request gives: the tree and the scene it went through, or why it failed.
+// What a request gives: the tree, the scene it went through and the tree's draw order (its chords those of that
+// scene's shapes), or why it failed.
 struct RayTreeOutcome {
     std::shared_ptr<const RayTreeScene> scene;
     std::optional<RayTree> tree;
+    std::optional<render::RayTreeDrawOrder> drawOrder;
     std::optional<std::string> error;
 };
 
-// Works out a request, building the optical scene when the request has none kept.
+// Works out a request, building the optical scene when the request has none kept, and the tree's draw order
+// (on the job's thread for a large scene, so that the frame showing the tree does not).
 RayTreeOutcome traceRayTreeRequest(RayTreeRequest request);
 
 // A ray tree of a large scene traced on a worker thread, so that the app keeps drawing while the optical scene

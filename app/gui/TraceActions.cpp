@@ -52,6 +52,7 @@ void showRayTree(AppState& state, RayTreeOutcome outcome, bool automatic) {
     if (outcome.error) return state.ui.status.refuse("ray tree failed: " + *outcome.error);
     traces.rayTreeScene = std::move(outcome.scene);
     traces.rayTree = std::move(*outcome.tree);
+    traces.rayTreeDrawOrder = std::move(outcome.drawOrder);
     ++traces.shownId;
     state.view.layers.rayTree = true;
     if (!automatic) {
@@ -79,7 +80,7 @@ void traceRayTree(AppState& state, bool automatic) {
         request.generation = state.scene.generation();
         request.revision = document.revisionBesidesSources();
         const std::shared_ptr<const RayTreeScene>& kept = traces.rayTreeScene;
-        if (kept && kept->generation == request.generation && kept->revision == request.revision) {
+        if (kept && kept->isOf(request.generation, request.revision)) {
             request.kept = kept;
         } else {
             request.scene = document.toScene(&request.slotOfShape);
@@ -209,6 +210,7 @@ void forgetTraces(TraceState& traces) {
     traces.trace.reset();
     traces.rayTree.reset();
     traces.rayTreeScene.reset();
+    traces.rayTreeDrawOrder.reset();
     traces.rayTreeJobWanted = false;  // a tree still being traced was of what is forgotten
     traces.rayTreeAsked = TraceState::RayTreeAsked::No;
     traces.traversal.reset();

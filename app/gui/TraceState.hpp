@@ -5,6 +5,7 @@
 #include "gui/ResultViews.hpp"
 #include "gui/TraceJob.hpp"
 #include "render/OctreeLayer.hpp"
+#include "render/RayTreeLayer.hpp"
 #include "transport/OpticalScene.hpp"
 #include "transport/RayTree.hpp"
 #include "transport/SurfaceCrossing.hpp"
@@ -67,6 +68,9 @@ struct TraceState {
     TracedWith rayTreeTraced;        // what it was traced with
     // What it was traced through, and the next one may be.
     std::shared_ptr<const RayTreeScene> rayTreeScene;
+    // Its draw order, the chords those of rayTreeScene's shapes: the 3D view takes it while the document's shapes
+    // are those (ViewportScene).
+    std::optional<render::RayTreeDrawOrder> rayTreeDrawOrder;
     // Trees of documents with more shapes than this are traced on rayTreeJob, so that the app keeps drawing:
     // above it the first tree of a scene costs more than about 0.1 s (its optical scene built), 2.2 s at 1e6
     // droplets, and each tree again 0.08-0.4 s (docs/performance.md).

@@ -98,6 +98,11 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
     if (traces.rayTree) {
         inputs.rayTree = &*traces.rayTree;
         if (traces.rayTreeScene) inputs.rayTreeSlots = &traces.rayTreeScene->slotOfShape;
+        // Its chords were found among the shapes it was traced through: taken while the document's are those.
+        if (traces.rayTreeDrawOrder && traces.rayTreeScene &&
+            traces.rayTreeScene->isOf(state.scene.generation(), document.revisionBesidesSources())) {
+            inputs.rayTreeDrawOrder = &*traces.rayTreeDrawOrder;
+        }
     }
     inputs.traversal = traversal;
     inputs.currentEvent = currentEvent(traces);

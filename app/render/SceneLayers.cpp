@@ -51,8 +51,9 @@ SceneLayers buildSceneLayers(const LayerInputs& inputs, const LayerOptions& opti
         addSliced(lines, slice, anchor, [&](LineBatch& batch) { addTraversal(batch, *inputs.traversal); });
     }
     if (options.rayTree && inputs.rayTree) {
-        addSliced(lines, slice, anchor,
-                  [&](LineBatch& batch) { addRayTree(batch, *inputs.rayTree, kEscapeLength * size, rayTreeChords); });
+        addSliced(lines, slice, anchor, [&](LineBatch& batch) {
+            addRayTree(batch, *inputs.rayTree, kEscapeLength * size, rayTreeChords, inputs.rayTreeDrawOrder);
+        });
         if (options.markers) addEventMarkers(layers.markers, *inputs.rayTree, kMarkerRadius * size, anchor);
     }
     if (options.paths && inputs.paths) {

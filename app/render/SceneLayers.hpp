@@ -4,6 +4,7 @@
 #include "render/DrawData.hpp"
 #include "render/OctreeLayer.hpp"
 #include "render/PathLayer.hpp"
+#include "render/RayTreeLayer.hpp"
 #include "render/Renderer.hpp"
 #include "render/SlicePlane.hpp"
 #include "run/TraceRun.hpp"
@@ -47,6 +48,9 @@ struct LayerInputs {
     Eigen::Vector3d up = Eigen::Vector3d::UnitY();  // the camera's: the grid lies across it
     const std::vector<PhotonPath>* paths = nullptr;
     const RayTree* rayTree = nullptr;
+    // The ray tree's draw order, its chords found among shapes the same as `octree`'s (rayTreeDrawOrder); null: the
+    // layer works it out.
+    const RayTreeDrawOrder* rayTreeDrawOrder = nullptr;
     // The octree slot of each shape id the paths' and the ray tree's events name (a trace's compact scene:
     // SceneDocument::toScene); null: the octree's own ids.
     const std::vector<ShapeId>* pathSlots = nullptr;

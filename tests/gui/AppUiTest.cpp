@@ -4,6 +4,7 @@
 #include "geometry/Sphere.hpp"
 #include "gui/Actions.hpp"
 #include "gui/TraceActions.hpp"
+#include "render/RayTreeLayer.hpp"
 #include "run/TraceRun.hpp"
 #include "scene/ShapeSpec.hpp"
 #include "snapshot/Image.hpp"
@@ -323,6 +324,52 @@ TEST(AppUi, TheRayTreeKeepsItsOpticalSceneWhileOnlyTheSourceMoves) {
     expectTreeOfTheDocument("the water's index changed");
 }
 
+// The view takes the ray tree's draw order worked out where it was traced while the document's shapes are those it
+// went through: its chords are then those the layer finds itself. With "live" off the tree stays when the droplet
+// moves, and its chords are then looked for in the droplet as it is now, where there are none.
+TEST(AppUi, TheRayTreesChordsAreThoseOfTheDropletsAsTheyAreNow) {
+    AppHarness harness(kAxisScene);
+    harness.state().traces.fire.live = false;
+    harness.press('R');
+    harness.frame();
+    const TraceState& traces = harness.state().traces;
+    ASSERT_TRUE(traces.rayTree && traces.rayTreeDrawOrder);
+    const SceneDocument& document = harness.state().scene.document();
+    const auto chordsFoundNow = [&] {
+        render::LineBatch lines{render::Anchor{}};
+        render::LineBatch chords{render::Anchor{}};
+        const render::ChordSplit split{document.octree(), chords, &traces.rayTreeScene->slotOfShape};
+        render::addRayTree(lines, *traces.rayTree, 1.0, &split);
+        return chords.vertices().size();
+    };
+    const std::size_t chords = harness.app().viewport().layers().chords.vertices().size();
+    EXPECT_GT(chords, 4u);
+    EXPECT_EQ(chords, chordsFoundNow());
+
+    // The order the tree came with is the one taken: with its chords flipped, the view's lines are its chords.
+    harness.state().traces.rayTreeDrawOrder->chord.flip();
+    ++harness.state().traces.shownId;
+    harness.frame();
+    const std::size_t segments = traces.rayTreeDrawOrder->order.size();
+    EXPECT_EQ(harness.app().viewport().layers().chords.vertices().size(), 2 * segments - chords);
+    // Still while only the source moves.
+    std::vector<Source> sources = document.sources();
+    sources[0].origin.x() += 0.05;
+    harness.state().scene.document().setSources(sources);
+    harness.frame();
+    ASSERT_TRUE(traces.rayTree);
+    EXPECT_EQ(harness.app().viewport().layers().chords.vertices().size(), 2 * segments - chords);
+
+    ShapeSpec moved;
+    moved.center = Point(5.0, 0.0, 0.0);
+    moved.medium = 1;
+    harness.state().scene.document().modifyShape(0, moved);
+    harness.frame();
+    ASSERT_TRUE(traces.rayTree);
+    EXPECT_EQ(harness.app().viewport().layers().chords.vertices().size(), 0u);
+    EXPECT_EQ(chordsFoundNow(), 0u);
+}
+
 // A document above TraceState::rayTreeBackgroundShapes has its trees traced on the job (held here by a gate, so
 // that it is surely still busy): the frames go on and the app counts as busy; trees asked for meanwhile, by
 // "live" after a droplet and the source moved twice and by the user, wait and then make one tree, of the
@@ -397,6 +444,7 @@ TEST(AppUi, TheRayTreeOfALargeDocumentIsTracedBesideTheFrames) {
     ASSERT_TRUE(waitForTheRayTreeJob(harness));
     EXPECT_FALSE(traces.rayTree);
     EXPECT_FALSE(traces.rayTreeScene);
+    EXPECT_FALSE(traces.rayTreeDrawOrder);
 }
 
 TEST(AppUi, StepsThroughTheEventsOfASelectedPathWithItsOctreeTraversal) {

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -164,6 +165,59 @@ TEST(Chords, TheRayTreesChordsAreItsSegmentsInsideItsDroplets) {
     }
     EXPECT_EQ(chord, chordSegments.size());
     EXPECT_EQ(line, lineSegments.size());
+}
+
+// A ray tree's draw order worked out beforehand, against a copy of the shapes with ids of its own (a trace's
+// compact scene), gives the batches the layer works out itself against the document's octree through the slots;
+// one given is taken as it is; one of another tree (another count of segments) is not taken.
+TEST(Chords, ARayTreesDrawOrderWorkedOutBeforehandGivesTheSameLines) {
+    Scene scene = loadScene(kDefaultScene);
+    const OpticalScene optical(scene);
+    const RayTree tree = traceRayTree(optical, Ray{Point(0.3, 0.2, -8.0), Direction(0, 0, 1)}, 1.0, RayTreeSettings{});
+    // The document: the same shapes after another one in slot 0, so that slot k + 1 holds the tree's shape k.
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::make_unique<Sphere>(Point(100, 100, 100), 0.1));
+    std::vector<ShapeId> slots;
+    for (const auto& shape : optical.octree().shapes()) {
+        shapes.push_back(shape->clone());
+        slots.push_back(static_cast<ShapeId>(slots.size() + 1));
+    }
+    const Octree document(std::move(shapes));
+
+    const auto batches = [&](const render::RayTreeDrawOrder* prepared) {
+        std::pair<LineBatch, LineBatch> made{LineBatch{render::Anchor{}}, LineBatch{render::Anchor{}}};
+        const render::ChordSplit split{document, made.second, &slots};
+        render::addRayTree(made.first, tree, 1.0, &split, prepared);
+        return std::pair{segmentsOf(made.first), segmentsOf(made.second)};
+    };
+    const auto workedOut = batches(nullptr);
+    ASSERT_GT(workedOut.second.size(), 3u);
+    const render::RayTreeDrawOrder beforehand = render::rayTreeDrawOrder(tree, &optical.octree());
+    EXPECT_EQ(batches(&beforehand), workedOut);
+
+    render::RayTreeDrawOrder reversed = beforehand;
+    std::reverse(reversed.order.begin(), reversed.order.end());
+    reversed.chord.flip();
+    auto [lines, chords] = batches(&reversed);
+    std::reverse(lines.begin(), lines.end());
+    std::reverse(chords.begin(), chords.end());
+    EXPECT_EQ(lines, workedOut.second);
+    EXPECT_EQ(chords, workedOut.first);
+
+    // Without chords (a slice plane) the order is taken and its chords are not.
+    LineBatch unsplit{render::Anchor{}};
+    render::addRayTree(unsplit, tree, 1.0, nullptr, &reversed);
+    std::vector<std::pair<Point, Point>> drawn = segmentsOf(unsplit);
+    std::reverse(drawn.begin(), drawn.end());
+    LineBatch all{render::Anchor{}};
+    render::addRayTree(all, tree, 1.0);
+    EXPECT_EQ(drawn, segmentsOf(all));
+
+    const RayTree another =
+        traceRayTree(optical, Ray{Point(-0.2, 0.1, -8.0), Direction(0, 0, 1)}, 1.0, RayTreeSettings{});
+    const render::RayTreeDrawOrder ofAnotherTree = render::rayTreeDrawOrder(another, &optical.octree());
+    ASSERT_NE(ofAnotherTree.order.size(), beforehand.order.size());
+    EXPECT_EQ(batches(&ofAnotherTree), workedOut);
 }
 
 // The renderer, through a GL table whose DrawArrays records the vertex counts of the lines it draws.
