@@ -326,9 +326,10 @@ int run(const Options& options) {
         const double longest = *std::max_element(frames.ms.begin(), frames.ms.end());  // one frame at least
         std::printf(
             "ray tree on the job, %s: %.1f ms on the UI thread to ask, shown after %.1f ms and %zu "
-            "orbiting frames (median %.1f ms, longest %.1f ms, the last one taking the tree), %zu events\n",
+            "orbiting frames (median %.1f ms, longest %.1f ms, the last one taking the tree and building the "
+            "view's layers for it in %.1f ms), %zu events\n",
             kept ? "the source moved" : "optical scene built", asked, 1e3 * shown.seconds(), frames.ms.size(),
-            frames.median(), longest, traces.rayTree->nodes.size());
+            frames.median(), longest, 1e3 * app.viewport().lastRebuildSeconds(), traces.rayTree->nodes.size());
     }
     traces.rayTreeBackgroundShapes = background;
     if (!options.png.empty()) {

@@ -7,6 +7,8 @@
 #include "render/Colour.hpp"
 #include "tally/DetectorTallies.hpp"
 
+#include <chrono>
+
 namespace dropscope::gui {
 
 namespace {
@@ -68,6 +70,7 @@ ViewKey viewKey(const AppState& state) {
 }
 
 void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
+    const auto started = std::chrono::steady_clock::now();
     const SceneDocument& document = state.scene.document();
     const TraceState& traces = state.traces;
     const Octree& octree = document.octree();
@@ -138,6 +141,7 @@ void ViewportScene::rebuild(const AppState& state, const ViewKey& key) {
     render::uploadLayers(renderer_, layers_);
     ++rebuilds_;
     builtFrom_ = key;
+    lastRebuildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 bool ViewportScene::shapesStay(const ViewKey& key) const {

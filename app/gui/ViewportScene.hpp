@@ -62,6 +62,9 @@ public:
     std::uint64_t recolours() const { return recolours_; }
     // Of the rebuilds, those that built and uploaded the shapes' instances.
     std::uint64_t shapeUploads() const { return shapeUploads_; }
+    // How long the last rebuild took: the layers made and uploaded, the shapes' instances too when they changed
+    // (for the frame benchmark).
+    double lastRebuildSeconds() const { return lastRebuildSeconds_; }
     // Frames whose view the renderer drew, and frames that copied the kept picture instead.
     std::uint64_t drawnFrames() const { return drawnFrames_; }
     std::uint64_t copiedFrames() const { return copiedFrames_; }
@@ -102,6 +105,7 @@ private:
     std::uint64_t rebuilds_ = 0;
     std::uint64_t recolours_ = 0;
     std::uint64_t shapeUploads_ = 0;
+    double lastRebuildSeconds_ = 0.0;
 };
 
 // The box the camera keeps between its near and far planes: the shapes, the sources, the detectors when drawn,

@@ -344,6 +344,7 @@ TEST(AppUi, TheRayTreesChordsAreThoseOfTheDropletsAsTheyAreNow) {
     };
     const std::size_t chords = harness.app().viewport().layers().chords.vertices().size();
     EXPECT_GT(chords, 4u);
+    EXPECT_GT(harness.app().viewport().lastRebuildSeconds(), 0.0);
     EXPECT_EQ(chords, chordsFoundNow());
 
     // The order the tree came with is the one taken: with its chords flipped, the view's lines are its chords.
