@@ -256,6 +256,19 @@ int run(const Options& options) {
         Series& shapesInto = apart ? shapesApart : shapesNotApart;
         shapesInto.ms.insert(shapesInto.ms.end(), shapes.ms.begin(), shapes.ms.end());
     }
+    // The peer of drawing a frame of spheres and lines on the processor (RenderOptions::processorRaster): OpenGL, for
+    // the app orbiting and the 3D view alone, in alternate blocks.
+    Series orbitProcessor, orbitOpenGL, viewProcessor, viewOpenGL;
+    const bool processorAsIs = app.state().view.layers.render.processorRaster;
+    for (const bool processor : {true, false, false, true}) {
+        const int frames = std::max(1, options.frames / 4);
+        app.state().view.layers.render.processorRaster = processor;
+        orbitBlock(true, true, frames, processor ? orbitProcessor : orbitOpenGL);
+        const Series view = layerAlone(true, true, true, frames);
+        Series& viewInto = processor ? viewProcessor : viewOpenGL;
+        viewInto.ms.insert(viewInto.ms.end(), view.ms.begin(), view.ms.end());
+    }
+    app.state().view.layers.render.processorRaster = processorAsIs;
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
     const auto row = [&](const char* name, Series& series) {
@@ -282,6 +295,10 @@ int run(const Options& options) {
     row("3D view alone, spheres apart not (alt.)", viewNotApart);
     row("shapes alone, spheres apart at centre (alt.)", shapesApart);
     row("shapes alone, spheres apart not (alt.)", shapesNotApart);
+    row("app, orbiting, drawn on the processor (alt.)", orbitProcessor);
+    row("app, orbiting, drawn by OpenGL (alt.)", orbitOpenGL);
+    row("3D view alone, on the processor (alt.)", viewProcessor);
+    row("3D view alone, by OpenGL (alt.)", viewOpenGL);
     std::printf("steady (kept view copied): %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steadyCopied.median(),
                 1e3 / orbit.median());
     // The ray tree (R): first of the scene (its optical scene built from the document), then again from a source

@@ -71,6 +71,7 @@ namespace dropscope::render {
     X(PFNGLGENTEXTURESPROC, GenTextures)                         \
     X(PFNGLBINDTEXTUREPROC, BindTexture)                         \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D)                           \
+    X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                     \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                     \
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                   \
     X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                 \

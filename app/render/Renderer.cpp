@@ -1,5 +1,7 @@
 #include "render/Renderer.hpp"
 
+#include "render/OffscreenImage.hpp"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -10,6 +12,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <thread>
 
 namespace dropscope::render {
 
@@ -250,7 +253,10 @@ Renderer::Renderer(const GlFunctions& gl)
     surfaces_->makeLines();
 }
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+    if (rasterFramebuffer_ != 0) gl_.DeleteFramebuffers(1, &rasterFramebuffer_);
+    if (rasterTexture_ != 0) gl_.DeleteTextures(1, &rasterTexture_);
+}
 
 void Renderer::setShapes(const ShapeInstances& instances) {
     const std::vector<std::uint32_t> order = spatialOrder(instances.rounded);
@@ -258,6 +264,12 @@ void Renderer::setShapes(const ShapeInstances& instances) {
     rounded.reserve(order.size());
     for (const std::uint32_t k : order) rounded.push_back(instances.rounded[k]);
     rounded_->upload(rounded);
+    roundedAllSpheres_ = std::all_of(rounded.begin(), rounded.end(), isSphereInstance);
+    rasterRounded_.clear();
+    if (roundedAllSpheres_) {
+        rasterRounded_.reserve(rounded.size());
+        for (const ShapeInstance& sphere : rounded) rasterRounded_.push_back(rasterSphere(sphere));
+    }
     roundedAt_.clear();
     for (std::size_t place = 0; place < order.size(); ++place) {
         const ShapeId id = instances.roundedIds[order[place]];
@@ -359,7 +371,10 @@ bool Renderer::recolourShape(ShapeId id, const Colour& colour) {
                           sizeof(Colour), colour.data());
         return true;
     };
-    if (id < roundedAt_.size() && roundedAt_[id] != kNoInstance) return write(*rounded_, roundedAt_[id]);
+    if (id < roundedAt_.size() && roundedAt_[id] != kNoInstance) {
+        if (roundedAt_[id] < rasterRounded_.size()) rasterRounded_[roundedAt_[id]].colour = colour;
+        return write(*rounded_, roundedAt_[id]);
+    }
     if (const auto box = std::find(boxIds_.begin(), boxIds_.end(), id); box != boxIds_.end())
         return write(*boxes_, static_cast<std::size_t>(box - boxIds_.begin()));
     for (std::size_t group = 0; group < meshIds_.size(); ++group) {
@@ -372,6 +387,7 @@ bool Renderer::recolourShape(ShapeId id, const Colour& colour) {
 
 void Renderer::setLines(const LineBatch& lines) {
     lines_->upload(lines.vertices());
+    rasterLines_ = lines.vertices();
     chordsFrom_ = lines_->count;
     apart_.setSegments(lines.vertices());
 }
@@ -386,6 +402,7 @@ void Renderer::setLines(const LineBatch& lines, const LineBatch& chords) {
     vertices.insert(vertices.end(), lines.vertices().begin(), lines.vertices().end());
     vertices.insert(vertices.end(), chords.vertices().begin(), chords.vertices().end());
     lines_->upload(vertices);
+    rasterLines_ = std::move(vertices);
     chordsFrom_ = static_cast<GLsizei>(lines.vertices().size());
     apart_.setSegments(lines.vertices());  // not the chords: a frame that draws them draws no sphere at its centre
 }
@@ -397,6 +414,11 @@ void Renderer::setSurfaces(const TriangleBatch& surfaces) {
 
 void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) {
     markers_->upload(markers);
+    markersAllSpheres_ = std::all_of(markers.begin(), markers.end(), isSphereInstance);
+    rasterMarkers_.clear();
+    if (markersAllSpheres_) {
+        for (const ShapeInstance& marker : markers) rasterMarkers_.push_back(rasterSphere(marker));
+    }
     apart_.setMarkers(markers);
 }
 
@@ -553,6 +575,50 @@ bool Renderer::roundedWithin(const glm::dvec3& eye, double reach) const {
     });
 }
 
+bool Renderer::processorDraws(const RenderOptions& options) const {
+    const bool shapesDrawable =
+        !options.shapes || (!options.translucent && roundedAllSpheres_ && boxes_->count == 0 && meshes_.empty());
+    return markersAllSpheres_ && shapesDrawable && (!options.lines || surfaces_->count == 0);
+}
+
+void Renderer::drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices) {
+    const int width = view.width;
+    const int height = view.height;
+    RasterContent content;
+    if (options.shapes) content.spheres = rasterRounded_;
+    content.markers = rasterMarkers_;
+    content.lines = std::span<const LineVertex>(rasterLines_).first(static_cast<std::size_t>(lineVertices));
+    rasterise(content, view, options.background, rasterImage_, std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+    const FramebufferBindings caller(gl_);
+    if (rasterTexture_ == 0 || rasterTextureWidth_ != width || rasterTextureHeight_ != height) {
+        if (rasterTexture_ == 0) {
+            gl_.GenTextures(1, &rasterTexture_);
+            gl_.GenFramebuffers(1, &rasterFramebuffer_);
+        }
+        gl_.BindTexture(GL_TEXTURE_2D, rasterTexture_);
+        gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, rasterFramebuffer_);
+        gl_.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, rasterTexture_, 0);
+        rasterTextureWidth_ = width;
+        rasterTextureHeight_ = height;
+    }
+    gl_.BindTexture(GL_TEXTURE_2D, rasterTexture_);
+    gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, rasterImage_.stride());
+    gl_.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rasterImage_.colour().data());
+    gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    gl_.BindTexture(GL_TEXTURE_2D, 0);
+    // The caller's framebuffer gets the picture and a depth of 1: nothing drawn after the renderer tests depth (ImGui
+    // draws over the view without it). The clear and the blit obey a scissor box as the drawing would.
+    gl_.Clear(GL_DEPTH_BUFFER_BIT);
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, rasterFramebuffer_);
+    gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(caller.draw));
+    gl_.BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    caller.restore(gl_);
+}
+
 void Renderer::drawMeshes(const FrameUniforms& frame, float opacity) {
     for (const auto& mesh : meshes_) drawShapes(*mesh.second, *box_, frame, opacity);
 }
@@ -562,44 +628,33 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
     const glm::dvec3 origin(anchor_.origin.x(), anchor_.origin.y(), anchor_.origin.z());
     local.eye -= origin;
     local.target -= origin;
-    const double aspect = static_cast<double>(width) / static_cast<double>(height);
-    const glm::mat4 viewProjection = local.projectionMatrix(aspect) * local.viewMatrix();
-    const glm::mat4 projection = local.projectionMatrix(aspect);
+    const RasterView view = rasterView(local, width, height);
+    const glm::mat4 projection = local.projectionMatrix(static_cast<double>(width) / static_cast<double>(height));
     // The widening of a shape in the image's corners, 1 / cos^2 of the angle off the axis (impostor.vert).
     const double cornerTan2 = 1.0 / (projection[0][0] * projection[0][0]) + 1.0 / (projection[1][1] * projection[1][1]);
-    // A point (x, y, -1) of the near plane in normalised device coordinates is inverse(P V) (x, y, -1, 1), whose
-    // w does not depend on x and y under a perspective projection: the near plane's point, and the eye ray
-    // to it, are affine in the window coordinates.
-    const glm::dmat4 unproject = glm::inverse(glm::dmat4(viewProjection));
-    const glm::dvec4 nearAtOrigin = unproject * glm::dvec4(-1.0, -1.0, -1.0, 1.0);
-    const glm::dvec3 rayAtOrigin = glm::dvec3(nearAtOrigin) / nearAtOrigin.w - local.eye;
-    const glm::dvec3 rayPerPixelX = glm::dvec3(unproject[0]) * (2.0 / width) / nearAtOrigin.w;
-    const glm::dvec3 rayPerPixelY = glm::dvec3(unproject[1]) * (2.0 / height) / nearAtOrigin.w;
-    const glm::dvec4 eyeClip = glm::dmat4(viewProjection) * glm::dvec4(local.eye, 1.0);
+    const glm::mat4& viewProjection = view.viewProjection;
     const FrameUniforms frame{viewProjection,
                               glm::inverse(viewProjection),
-                              glm::vec3(local.eye),
+                              view.eye,
                               glm::vec3(local.up),
-                              static_cast<float>(projection[1][1] * static_cast<double>(height) / 2.0),
+                              view.pixelsPerUnit,
                               static_cast<float>(1.0 + cornerTan2),
                               static_cast<float>(width),
                               static_cast<float>(height),
-                              glm::vec3(rayAtOrigin),
-                              glm::vec3(rayPerPixelX),
-                              glm::vec3(rayPerPixelY),
-                              glm::vec2(glm::dvec2(eyeClip.z, eyeClip.w)),
-                              glm::vec3(viewProjection[0][2], viewProjection[1][2], viewProjection[2][2]),
-                              glm::vec3(viewProjection[0][3], viewProjection[1][3], viewProjection[2][3])};
+                              view.rayAtOrigin,
+                              view.rayPerPixelX,
+                              view.rayPerPixelY,
+                              view.eyeClip,
+                              view.clipZ,
+                              view.clipW};
 
     gl_.Viewport(0, 0, width, height);
     gl_.ClearColor(options.background[0], options.background[1], options.background[2], options.background[3]);
-    gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     gl_.Enable(GL_DEPTH_TEST);
     gl_.DepthFunc(GL_LESS);
     gl_.Disable(GL_BLEND);
     gl_.DepthMask(GL_TRUE);
 
-    drawShapes(*markers_, *impostor_, frame, 1.0f);
     const bool boxesBlended = options.translucent || options.translucentBoxes;
     const bool roundedOpaque = options.shapes && !options.translucent;
     // The near plane's corners are the farthest of its points from the eye: 1 / cos of the angle off the axis.
@@ -608,6 +663,13 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
                               !roundedWithin(local.eye, nearReach);
     const bool chordsDrawn = options.lines && chordsFrom_ < lines_->count && !chordsHidden;
     apartInLastFrame_ = 0;
+    lastFrameOnProcessor_ = options.processorRaster && processorDraws(options);
+    if (lastFrameOnProcessor_) {
+        drawOnProcessor(view, options, options.lines ? (chordsHidden ? chordsFrom_ : lines_->count) : 0);
+        return;
+    }
+    gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    drawShapes(*markers_, *impostor_, frame, 1.0f);
     float apartPixels = 0.0f;
     if (roundedOpaque && options.apartSpheres && options.pointPixels > 0.0f && !chordsDrawn &&
         rounded_->count <= kApartMostSpheres) {

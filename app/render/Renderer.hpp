@@ -2,6 +2,7 @@
 
 #include "render/ApartSpheres.hpp"
 #include "render/Camera.hpp"
+#include "render/CpuRasteriser.hpp"
 #include "render/DrawData.hpp"
 #include "render/GlFunctions.hpp"
 #include "render/MeshCache.hpp"
@@ -52,6 +53,12 @@ struct RenderOptions {
     // or ellipsoid's chunk reaching the eye or the near plane (the same picture, fewer segments for the
     // driver: docs/rendering.md, "Chords"). false draws them always, for comparison.
     bool skipHiddenChords = true;
+    // A frame holding only opaque spheres (markers among them) and lines is drawn on the processor
+    // (render/CpuRasteriser) and handed to the driver as one picture: for a software OpenGL (llvmpipe), whose
+    // cost per point and per segment is what limits such a frame. The same picture, but every sphere at its exact
+    // depth and a line's ends within a pixel of OpenGL's (docs/rendering.md, "Drawn on the processor"). A frame
+    // holding anything else is drawn by OpenGL whatever this says.
+    bool processorRaster = false;
     bool lines = true;  // the line layers handed to setLines (octree, paths, glyphs, axes, grid) and the surfaces
     Colour background{0.08f, 0.09f, 0.11f, 1.0f};
 
@@ -91,6 +98,8 @@ public:
     // How many spheres apart (RenderOptions::apartSpheres) the last frame offered to the points at their
     // centre's depth: those of its chunks in view (each sphere's width and place then decide).
     std::size_t apartInLastFrame() const { return apartInLastFrame_; }
+    // Whether the last frame was drawn on the processor (RenderOptions::processorRaster).
+    bool lastFrameOnProcessor() const { return lastFrameOnProcessor_; }
 
 private:
     struct Mesh;
@@ -137,6 +146,10 @@ private:
     // Whether a run of spheres and ellipsoids comes within `reach` of the eye: the eye may be inside one of
     // them, or the near plane cut one open.
     bool roundedWithin(const glm::dvec3& eye, double reach) const;
+    // Whether this frame's layers are all the processor draws: opaque spheres, markers that are spheres, lines.
+    bool processorDraws(const RenderOptions& options) const;
+    // The frame drawn by rasterise into rasterImage_, copied into the framebuffer bound for drawing.
+    void drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices);
 
     const GlFunctions& gl_;
     Anchor anchor_;
@@ -163,6 +176,19 @@ private:
     GLsizei chordsFrom_ = 0;  // lines_'s vertices from here on are chords
     std::unique_ptr<Mesh> surfaces_;
     std::unique_ptr<MeshCache> meshCache_;
+    // What the processor draws, kept beside the buffers: rounded_'s instances in its order when they are all spheres
+    // (else none, and roundedAllSpheres_ false), the markers, the lines and chords as lines_ holds them.
+    std::vector<RasterSphere> rasterRounded_;
+    bool roundedAllSpheres_ = true;
+    std::vector<RasterSphere> rasterMarkers_;
+    bool markersAllSpheres_ = true;
+    std::vector<LineVertex> rasterLines_;
+    RasterImage rasterImage_;
+    GLuint rasterTexture_ = 0;  // rasterImage_ uploaded, read through rasterFramebuffer_
+    GLuint rasterFramebuffer_ = 0;
+    int rasterTextureWidth_ = 0;
+    int rasterTextureHeight_ = 0;
+    bool lastFrameOnProcessor_ = false;
     // One per geometry, in the order the shapes list them (a fixed drawing order, for determinism).
     std::vector<std::pair<std::shared_ptr<const MeshGeometry>, std::unique_ptr<Mesh>>> meshes_;
 };

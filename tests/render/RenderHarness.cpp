@@ -32,6 +32,7 @@ snapshot::Image DirectRenderer::draw(const render::Camera& camera, const render:
     options.pointPixels = pointPixels_;
     options.sphereProgram = sphereProgram_;
     options.apartSpheres = apartSpheres_;
+    options.processorRaster = processorRaster_;
     renderer_.draw(camera, options, width(), height());
     return context_.read();
 }

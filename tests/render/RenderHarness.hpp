@@ -30,8 +30,11 @@ public:
     void setSphereProgram(bool on) { sphereProgram_ = on; }
     // RenderOptions::apartSpheres of the next draws (on unless set).
     void setApartSpheres(bool on) { apartSpheres_ = on; }
-    // Renderer::apartInLastFrame of the last draw.
+    // RenderOptions::processorRaster of the next draws (off unless set).
+    void setProcessorRaster(bool on) { processorRaster_ = on; }
+    // Renderer::apartInLastFrame and lastFrameOnProcessor of the last draw.
     std::size_t apartInLastFrame() const { return renderer_.apartInLastFrame(); }
+    bool lastFrameOnProcessor() const { return renderer_.lastFrameOnProcessor(); }
     int width() const { return context_.width(); }
     int height() const { return context_.height(); }
 
@@ -41,6 +44,7 @@ private:
     float pointPixels_ = 0.0f;
     bool sphereProgram_ = true;
     bool apartSpheres_ = true;
+    bool processorRaster_ = false;
 };
 
 // A camera from `eye` to `target`, up +y, with its near and far planes around `bounds`.

@@ -57,4 +57,8 @@ inline constexpr int kGoldenChannelTolerance = 8;
 // outline, hundreds of pixels), a missing or extra line, a changed colour.
 inline constexpr double kGoldenMaxDifferingShare = 0.0005;
 
+// A frame drawn on the processor (RenderOptions::processorRaster) against OpenGL's of the same scene, every sphere at
+// its exact depth in both: at most this share of the pixels differ by more than kGoldenChannelTolerance. PLACEHOLDER
+inline constexpr double kProcessorMaxDifferingShare = 0.01;
+
 }  // namespace dropscope::test

@@ -1,0 +1,356 @@
+#include "render/CpuRasteriser.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+namespace dropscope::render {
+
+RasterView rasterView(const Camera& camera, int width, int height) {
+    const double aspect = static_cast<double>(width) / static_cast<double>(height);
+    const glm::mat4 projection = camera.projectionMatrix(aspect);
+    const glm::mat4 viewProjection = projection * camera.viewMatrix();
+    // A point (x, y, -1) of the near plane in normalised device coordinates is inverse(P V) (x, y, -1, 1), whose
+    // w does not depend on x and y under a perspective projection: the near plane's point, and the eye ray
+    // to it, are affine in the window coordinates.
+    const glm::dmat4 unproject = glm::inverse(glm::dmat4(viewProjection));
+    const glm::dvec4 nearAtOrigin = unproject * glm::dvec4(-1.0, -1.0, -1.0, 1.0);
+    const glm::dvec3 rayAtOrigin = glm::dvec3(nearAtOrigin) / nearAtOrigin.w - camera.eye;
+    const glm::dvec3 rayPerPixelX = glm::dvec3(unproject[0]) * (2.0 / width) / nearAtOrigin.w;
+    const glm::dvec3 rayPerPixelY = glm::dvec3(unproject[1]) * (2.0 / height) / nearAtOrigin.w;
+    const glm::dvec4 eyeClip = glm::dmat4(viewProjection) * glm::dvec4(camera.eye, 1.0);
+    RasterView view;
+    view.viewProjection = viewProjection;
+    view.eye = glm::vec3(camera.eye);
+    view.rayAtOrigin = glm::vec3(rayAtOrigin);
+    view.rayPerPixelX = glm::vec3(rayPerPixelX);
+    view.rayPerPixelY = glm::vec3(rayPerPixelY);
+    view.eyeClip = glm::vec2(glm::dvec2(eyeClip.z, eyeClip.w));
+    view.clipZ = glm::vec3(viewProjection[0][2], viewProjection[1][2], viewProjection[2][2]);
+    view.clipW = glm::vec3(viewProjection[0][3], viewProjection[1][3], viewProjection[2][3]);
+    view.pixelsPerUnit = static_cast<float>(projection[1][1] * static_cast<double>(height) / 2.0);
+    view.width = width;
+    view.height = height;
+    return view;
+}
+
+RasterSphere rasterSphere(const ShapeInstance& sphere) {
+    return {glm::vec3(sphere.center[0], sphere.center[1], sphere.center[2]), sphere.linear[0], sphere.inverseLinear[0],
+            sphere.colour};
+}
+
+void RasterImage::resize(int width, int height) {
+    width_ = std::max(width, 0);
+    height_ = std::max(height, 0);
+    stride_ = (width_ + kRasterBlock - 1) / kRasterBlock * kRasterBlock;
+    const std::size_t pixels = static_cast<std::size_t>(stride_) * static_cast<std::size_t>(height_);
+    colour_.resize(pixels);
+    depth_.resize(pixels);
+}
+
+std::uint32_t packColour(const Colour& colour) {
+    std::uint32_t packed = 0;
+    for (std::size_t channel = 0; channel < 4; ++channel) {
+        const float unit = std::clamp(colour[channel], 0.0f, 1.0f);
+        packed |= static_cast<std::uint32_t>(static_cast<int>(unit * 255.0f + 0.5f)) << (8 * channel);
+    }
+    return packed;
+}
+
+namespace {
+
+// impostor.frag's values for one row of one sphere's pixels: pixel x's eye ray is rowRay + x perPixel.
+struct SphereRow {
+    float rowRay[3];
+    float perPixel[3];
+    float objectEye[3];  // the eye in the sphere's unit frame
+    float inverseRadius;
+    float c;  // |objectEye|^2 - 1
+    float eyeClipZ;
+    float eyeClipW;
+    float clipZ[3];
+    float clipW[3];
+    float colour255[4];  // the colour's channels clamped to [0, 1], times 255
+};
+
+// impostor.frag for pixels [from, to) of a row, with the depth test (GL_LESS): the ray in the sphere's unit frame,
+// the nearest root in front of the eye (the far one with the eye inside), its depth clamped to [0, 1] as OpenGL
+// clamps gl_FragDepth, and the headlight |normal . ray| / |ray|, which on the unit sphere is root / sqrt(a). In
+// whole blocks of kRasterBlock pixels from a multiple of it (the image's rows are padded to one), free of
+// branches, so the compiler makes each block one vector.
+[[gnu::always_inline]] inline void sphereRow(const SphereRow& in, int from, int to, std::uint32_t* __restrict colour,
+                                             float* __restrict depth) {
+    for (int base = from / kRasterBlock * kRasterBlock; base < to; base += kRasterBlock) {
+        for (int lane = 0; lane < kRasterBlock; ++lane) {
+            const int x = base + lane;
+            const auto fx = static_cast<float>(x);
+            const float rx = in.rowRay[0] + fx * in.perPixel[0];
+            const float ry = in.rowRay[1] + fx * in.perPixel[1];
+            const float rz = in.rowRay[2] + fx * in.perPixel[2];
+            const float dx = in.inverseRadius * rx;
+            const float dy = in.inverseRadius * ry;
+            const float dz = in.inverseRadius * rz;
+            const float a = dx * dx + dy * dy + dz * dz;
+            const float b = in.objectEye[0] * dx + in.objectEye[1] * dy + in.objectEye[2] * dz;
+            const float discriminant = b * b - a * in.c;
+            const float root = std::sqrt(std::max(discriminant, 0.0f));
+            const float inverseA = 1.0f / a;
+            const float nearRoot = (-b - root) * inverseA;
+            const float t = nearRoot >= 0.0f ? nearRoot : (-b + root) * inverseA;
+            const float clipZ = in.eyeClipZ + t * (in.clipZ[0] * rx + in.clipZ[1] * ry + in.clipZ[2] * rz);
+            const float clipW = in.eyeClipW + t * (in.clipW[0] * rx + in.clipW[1] * ry + in.clipW[2] * rz);
+            const float fragmentDepth = std::clamp(0.5f * clipZ / clipW + 0.5f, 0.0f, 1.0f);
+            const float shade = 0.3f + 0.7f * (root * std::sqrt(inverseA));
+            const std::uint32_t packed =
+                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[0] * shade + 0.5f, 255.0f))) |
+                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[1] * shade + 0.5f, 255.0f))) << 8 |
+                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[2] * shade + 0.5f, 255.0f))) << 16 |
+                static_cast<std::uint32_t>(static_cast<int>(in.colour255[3] + 0.5f)) << 24;
+            const float before = depth[x];
+            const bool drawn = (x >= from) & (x < to) & (discriminant >= 0.0f) & (t >= 0.0f) & (fragmentDepth < before);
+            depth[x] = drawn ? fragmentDepth : before;
+            colour[x] = drawn ? packed : colour[x];
+        }
+    }
+}
+
+// The spheres' pixels in rows [rowBegin, rowEnd): each sphere's rows over the columns that can hold its
+// silhouette.
+[[gnu::always_inline]] inline void spheresBody(std::span<const RasterSphere> spheres, const RasterView& view,
+                                               RasterImage& image, int rowBegin, int rowEnd) {
+    const int width = view.width;
+    for (const RasterSphere& sphere : spheres) {
+        const glm::vec3 toEye = view.eye - sphere.centre;
+        const float distance = glm::length(toEye);
+        const glm::vec4 clipCentre = view.viewProjection * glm::vec4(sphere.centre, 1.0f);
+        const float depth = clipCentre.w;       // the centre's distance along the view's axis
+        if (depth <= -sphere.radius) continue;  // wholly behind the eye
+        int columnBegin = 0;
+        int columnEnd = width;
+        int from = rowBegin;
+        int to = rowEnd;
+        if (distance > 1.01f * sphere.radius && depth > 1.01f * sphere.radius) {
+            // impostor.vert's bound: at angle theta off the axis the silhouette (angular radius alpha) reaches
+            // f tan(alpha) s / (1 - tan(theta) tan(alpha)) from the centre's image, s = 1 / cos^2(theta); here with
+            // the centre's own theta even outside the view, and half a pixel to spare.
+            const float stretch = distance * distance / (depth * depth);
+            const float tanAlpha = sphere.radius / std::sqrt(distance * distance - sphere.radius * sphere.radius);
+            const float spread = 1.0f - std::sqrt(std::max(stretch - 1.0f, 0.0f)) * tanAlpha;
+            if (spread > 0.1f) {
+                const float half = view.pixelsPerUnit * tanAlpha * stretch / spread + 0.5f;
+                const float x = (clipCentre.x / clipCentre.w * 0.5f + 0.5f) * static_cast<float>(width);
+                const float y = (clipCentre.y / clipCentre.w * 0.5f + 0.5f) * static_cast<float>(view.height);
+                const auto clampTo = [](float v, int low, int high) {
+                    return static_cast<int>(std::clamp(v, static_cast<float>(low), static_cast<float>(high)));
+                };
+                columnBegin = clampTo(std::floor(x - half), 0, width);
+                columnEnd = clampTo(std::ceil(x + half), 0, width);
+                from = clampTo(std::floor(y - half), rowBegin, rowEnd);
+                to = clampTo(std::ceil(y + half), rowBegin, rowEnd);
+            }
+        }
+        if (columnBegin >= columnEnd || from >= to) continue;
+        SphereRow row{};
+        const glm::vec3 objectEye = sphere.inverseRadius * toEye;
+        for (int k = 0; k < 3; ++k) {
+            row.perPixel[k] = view.rayPerPixelX[k];
+            row.objectEye[k] = objectEye[k];
+            row.clipZ[k] = view.clipZ[k];
+            row.clipW[k] = view.clipW[k];
+        }
+        row.inverseRadius = sphere.inverseRadius;
+        row.c = glm::dot(objectEye, objectEye) - 1.0f;
+        row.eyeClipZ = view.eyeClip.x;
+        row.eyeClipW = view.eyeClip.y;
+        for (std::size_t channel = 0; channel < 4; ++channel) {
+            row.colour255[channel] = std::clamp(sphere.colour[channel], 0.0f, 1.0f) * 255.0f;
+        }
+        for (int y = from; y < to; ++y) {
+            const glm::vec3 rowRay =
+                view.rayAtOrigin + (static_cast<float>(y) + 0.5f) * view.rayPerPixelY + 0.5f * view.rayPerPixelX;
+            for (int k = 0; k < 3; ++k) row.rowRay[k] = rowRay[k];
+            sphereRow(row, columnBegin, columnEnd, image.colourRow(y), image.depthRow(y));
+        }
+    }
+}
+
+// A line's end in window coordinates, with what is interpolated along it: the depth linearly on the screen,
+// the colour perspective-correctly (its value and 1 over the clip w, linearly).
+struct LineEnd {
+    float x;
+    float y;
+    float depth;
+    float inverseW;
+    float colourOverW[4];
+};
+
+LineEnd lineEnd(const glm::vec4& clip, const Colour& colour, const RasterView& view) {
+    LineEnd end{};
+    end.inverseW = 1.0f / clip.w;
+    end.x = (clip.x * end.inverseW * 0.5f + 0.5f) * static_cast<float>(view.width);
+    end.y = (clip.y * end.inverseW * 0.5f + 0.5f) * static_cast<float>(view.height);
+    end.depth = clip.z * end.inverseW * 0.5f + 0.5f;
+    for (std::size_t channel = 0; channel < 4; ++channel) end.colourOverW[channel] = colour[channel] * end.inverseW;
+    return end;
+}
+
+// The segment a-b clipped to the near and far planes (-w <= z <= w) in clip space, where every value is linear
+// along it. False when nothing is left.
+bool clipToDepthRange(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
+    for (const float side : {1.0f, -1.0f}) {  // near: z + w >= 0; far: w - z >= 0
+        const float da = a.w + side * a.z;
+        const float db = b.w + side * b.z;
+        if (da < 0.0f && db < 0.0f) return false;
+        if (da >= 0.0f && db >= 0.0f) continue;
+        const float t = da / (da - db);
+        const glm::vec4 cut = a + t * (b - a);
+        Colour colour;
+        for (std::size_t channel = 0; channel < 4; ++channel) {
+            colour[channel] = colourA[channel] + t * (colourB[channel] - colourA[channel]);
+        }
+        if (da < 0.0f) {
+            a = cut;
+            colourA = colour;
+        } else {
+            b = cut;
+            colourB = colour;
+        }
+    }
+    return true;
+}
+
+[[gnu::always_inline]] inline void linesBody(std::span<const LineVertex> lines, const RasterView& view,
+                                             RasterImage& image, int rowBegin, int rowEnd) {
+    const int width = view.width;
+    for (std::size_t k = 0; k + 1 < lines.size(); k += 2) {
+        const LineVertex& from = lines[k];
+        const LineVertex& to = lines[k + 1];
+        glm::vec4 a = view.viewProjection * glm::vec4(from.position[0], from.position[1], from.position[2], 1.0f);
+        glm::vec4 b = view.viewProjection * glm::vec4(to.position[0], to.position[1], to.position[2], 1.0f);
+        Colour colourA = from.colour;
+        Colour colourB = to.colour;
+        if (!clipToDepthRange(a, colourA, b, colourB)) continue;
+        const LineEnd start = lineEnd(a, colourA, view);
+        const LineEnd end = lineEnd(b, colourB, view);
+        const float dx = end.x - start.x;
+        const float dy = end.y - start.y;
+        const bool alongX = std::abs(dx) >= std::abs(dy);
+        const float major0 = alongX ? start.x : start.y;
+        const float major1 = alongX ? end.x : end.y;
+        const float majorLength = major1 - major0;
+        if (majorLength == 0.0f) continue;
+        const float minor0 = alongX ? start.y : start.x;
+        const float slope = (alongX ? dy : dx) / majorLength;
+        // The pixel centres c + 0.5 along the major axis from the start (taken) to the end (not): OpenGL's
+        // diamond-exit rule but within a pixel at the two ends.
+        const float low = std::min(major0, major1);
+        const float high = std::max(major0, major1);
+        int first = static_cast<int>(std::ceil(low - 0.5f));
+        int last = static_cast<int>(std::ceil(high - 0.5f)) - 1;  // centres below high
+        if (majorLength < 0.0f) {                                 // from high down to low: low's centre not taken
+            first = static_cast<int>(std::floor(low - 0.5f)) + 1;
+            last = static_cast<int>(std::floor(high - 0.5f));
+        }
+        // Only the centres whose pixel can lie in the band and the image: along the major axis directly, along the
+        // minor one through the slope (a pixel to spare each side; the pixel's own test below decides).
+        first = std::max(first, alongX ? 0 : rowBegin);
+        last = std::min(last, alongX ? width - 1 : rowEnd - 1);
+        const float minorLow = static_cast<float>(alongX ? rowBegin : 0);
+        const float minorHigh = static_cast<float>(alongX ? rowEnd : width);
+        if (slope != 0.0f) {
+            const float atLow = major0 + (minorLow - minor0) / slope - 0.5f;
+            const float atHigh = major0 + (minorHigh - minor0) / slope - 0.5f;
+            first = std::max(first, static_cast<int>(std::floor(std::min(atLow, atHigh))) - 1);
+            last = std::min(last, static_cast<int>(std::ceil(std::max(atLow, atHigh))) + 1);
+        } else if (minor0 < minorLow || minor0 >= minorHigh) {
+            continue;
+        }
+        const float inverseLength = 1.0f / majorLength;
+        const bool flat = colourA == colourB;  // most paths: no colour to interpolate
+        const std::uint32_t flatColour = packColour(colourA);
+        // At centre c + 0.5: the minor coordinate minorAtZero + c slope, the depth depthAtZero + c depthPerPixel.
+        const float offsetAtZero = 0.5f - major0;
+        const float minorAtZero = minor0 + offsetAtZero * slope;
+        const float depthPerPixel = (end.depth - start.depth) * inverseLength;
+        const float depthAtZero = start.depth + offsetAtZero * depthPerPixel;
+        for (int c = first; c <= last; ++c) {
+            const auto fc = static_cast<float>(c);
+            // floor for anything above -8, and below it some negative number: a pixel outside either way.
+            const int minor = static_cast<int>(minorAtZero + fc * slope + 8.0f) - 8;
+            const int x = alongX ? c : minor;
+            const int y = alongX ? minor : c;
+            if (x < 0 || x >= width || y < rowBegin || y >= rowEnd) continue;
+            const float fragmentDepth = depthAtZero + fc * depthPerPixel;
+            float& depth = image.depthRow(y)[x];
+            if (!(fragmentDepth < depth)) continue;
+            depth = fragmentDepth;
+            if (flat) {
+                image.colourRow(y)[x] = flatColour;
+                continue;
+            }
+            const float along = (fc + offsetAtZero) * inverseLength;  // 0 at the start, 1 at the end
+            const float inverseW = start.inverseW + along * (end.inverseW - start.inverseW);
+            Colour colour;
+            for (std::size_t channel = 0; channel < 4; ++channel) {
+                colour[channel] =
+                    (start.colourOverW[channel] + along * (end.colourOverW[channel] - start.colourOverW[channel])) /
+                    inverseW;
+            }
+            image.colourRow(y)[x] = packColour(colour);
+        }
+    }
+}
+
+[[gnu::always_inline]] inline void bandBody(const RasterContent& content, const RasterView& view, RasterImage& image,
+                                            int rowBegin, int rowEnd) {
+    spheresBody(content.markers, view, image, rowBegin, rowEnd);
+    spheresBody(content.spheres, view, image, rowBegin, rowEnd);
+    linesBody(content.lines, view, image, rowBegin, rowEnd);
+}
+
+// The rows [rowBegin, rowEnd) of the picture, by code for the processor's own vector width where it has AVX2.
+void drawBandPortable(const RasterContent& content, const RasterView& view, RasterImage& image, int rowBegin,
+                      int rowEnd) {
+    bandBody(content, view, image, rowBegin, rowEnd);
+}
+
+__attribute__((target("avx2,fma"))) void drawBandAvx2(const RasterContent& content, const RasterView& view,
+                                                      RasterImage& image, int rowBegin, int rowEnd) {
+    bandBody(content, view, image, rowBegin, rowEnd);
+}
+
+using DrawBand = void (*)(const RasterContent&, const RasterView&, RasterImage&, int, int);
+
+DrawBand chooseDrawBand() {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? drawBandAvx2 : drawBandPortable;
+}
+
+const DrawBand drawBand = chooseDrawBand();
+
+}  // namespace
+
+void rasterise(const RasterContent& content, const RasterView& view, const Colour& background, RasterImage& image,
+               unsigned threads) {
+    image.resize(view.width, view.height);
+    const int height = view.height;
+    const int bands = static_cast<int>(std::clamp(threads, 1u, static_cast<unsigned>(std::max(height, 1))));
+    const std::uint32_t backgroundColour = packColour(background);
+    const auto band = [&](int index) {
+        const int rowBegin = height * index / bands;
+        const int rowEnd = height * (index + 1) / bands;
+        const auto rowPixels = static_cast<std::ptrdiff_t>(image.stride()) * (rowEnd - rowBegin);
+        if (rowPixels > 0) {
+            std::fill_n(image.colourRow(rowBegin), rowPixels, backgroundColour);
+            std::fill_n(image.depthRow(rowBegin), rowPixels, 1.0f);
+        }
+        drawBand(content, view, image, rowBegin, rowEnd);
+    };
+    std::vector<std::thread> helpers;
+    helpers.reserve(static_cast<std::size_t>(bands - 1));
+    for (int k = 1; k < bands; ++k) helpers.emplace_back(band, k);
+    band(0);
+    for (std::thread& helper : helpers) helper.join();
+}
+
+}  // namespace dropscope::render

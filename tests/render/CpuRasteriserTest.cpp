@@ -1,0 +1,269 @@
+// Frames drawn on the processor (render/CpuRasteriser, RenderOptions::processorRaster): the pixels the engine's
+// own geometry says, the depth and shading of the camera's closed forms, the picture OpenGL draws, and OpenGL
+// whenever the frame holds what the processor does not draw.
+#include "geometry/Box.hpp"
+#include "geometry/Sphere.hpp"
+#include "render/CpuRasteriser.hpp"
+#include "render/ImageComparison.hpp"
+#include "render/RenderHarness.hpp"
+#include "render/RenderTolerances.hpp"
+#include "render/SilhouetteCoverage.hpp"
+#include "snapshot/OsmesaContext.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace dropscope {
+namespace {
+
+using test::DirectRenderer;
+
+constexpr int kWidth = 160;  // not square: a wrong aspect ratio shows as an ellipse
+constexpr int kHeight = 120;
+
+render::Camera lookingAt(const Point& target, const Eigen::Vector3d& fromDirection, double distance, double fovDeg,
+                         const Eigen::AlignedBox3d& bounds) {
+    return test::cameraLookingAt(target + distance * fromDirection.normalized(), target, fovDeg, bounds);
+}
+
+std::vector<std::unique_ptr<Shape>> sphereCrowd(int count, double spread, double smallest, double largest,
+                                                unsigned seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> size(smallest, largest);
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int k = 0; k < count; ++k) {
+        const double x = unit(rng);
+        const double y = unit(rng);
+        const double z = unit(rng);
+        shapes.push_back(std::make_unique<Sphere>(Point(1.5 * spread * x, spread * y, 0.5 * spread * z), size(rng)));
+    }
+    return shapes;
+}
+
+Eigen::AlignedBox3d boundsOf(const std::vector<std::unique_ptr<Shape>>& shapes) {
+    Eigen::AlignedBox3d bounds;
+    for (const auto& shape : shapes) bounds.extend(shape->bounds());
+    return bounds;
+}
+
+// A crowd of spheres 1 to 11 pixels across, some across the image's edges and some outside it, under a 40 and a
+// 90 degree field of view (where spheres off the axis are widened most): the processor's frame covers exactly the
+// pixels whose eye rays meet some sphere (the engine's distanceToSurface), as OpenGL's does
+// (SmallShapeSilhouettes).
+TEST(ProcessorRaster, SpheresCoverExactlyThePixelsWhoseRaysHitThem) {
+    DirectRenderer renderer(kWidth, kHeight);
+    renderer.setProcessorRaster(true);
+    const auto shapes = sphereCrowd(700, 8.0, 0.06, 0.7, 11);
+    const Eigen::AlignedBox3d bounds = boundsOf(shapes);
+    const render::Anchor anchor{Point(0.5, -0.3, 0.0)};
+    for (const auto& [fovDeg, distance] : {std::pair{40.0, 22.0}, std::pair{90.0, 9.0}}) {
+        SCOPED_TRACE("field of view " + std::to_string(fovDeg));
+        const render::Camera camera =
+            lookingAt(Point(0.5, -0.3, 0.0), Eigen::Vector3d(0.2, 0.3, 1.0), distance, fovDeg, bounds);
+        const snapshot::Image image =
+            renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
+        ASSERT_TRUE(renderer.lastFrameOnProcessor());
+        const test::ExactCoverage engine(shapes, camera, kWidth, kHeight);
+        EXPECT_GT(engine.hits(), 2000) << "the spheres should cover a good part of the image";
+        test::expectCoversExactly(image, engine);
+    }
+}
+
+// Markers (Renderer::setMarkers) of 1 to 15 pixels, and a sphere around the eye (seen from inside: every pixel).
+TEST(ProcessorRaster, MarkersAndASphereAroundTheEyeCoverTheirPixels) {
+    DirectRenderer renderer(kWidth, kHeight);
+    renderer.setProcessorRaster(true);
+    std::vector<std::unique_ptr<Shape>> spheres;
+    for (int k = 0; k < 12; ++k) {
+        spheres.push_back(std::make_unique<Sphere>(Point(-5.5 + 1.0 * k, 1.5 * std::sin(k), 0.0), 0.05 + 0.06 * k));
+    }
+    const render::Camera camera =
+        lookingAt(Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.2, 1.0), 16.0, 40.0, boundsOf(spheres));
+    const render::Anchor anchor{Point(0.0, 0.0, 0.0)};
+    std::vector<render::ShapeInstance> markers;
+    for (const auto& sphere : spheres) {
+        const auto& s = static_cast<const Sphere&>(*sphere);
+        markers.push_back(render::sphereInstance(s.center(), s.radius(), anchor, render::kHighlight));
+    }
+    const snapshot::Image image = renderer.draw(camera, anchor, {}, render::LineBatch(anchor), markers);
+    ASSERT_TRUE(renderer.lastFrameOnProcessor());
+    const test::ExactCoverage engine(spheres, camera, kWidth, kHeight);
+    test::expectCoversExactly(image, engine);
+    EXPECT_GT(engine.hits(), 500);
+
+    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+    const std::vector<render::ShapeInstance> around{render::sphereInstance(eye, 0.5, anchor, render::kHighlight)};
+    const snapshot::Image inside = renderer.draw(camera, anchor, {}, render::LineBatch(anchor), around);
+    EXPECT_EQ(test::coveredPixels(inside), kWidth * kHeight);
+}
+
+// One sphere seen from the front, drawn by rasterise alone: at the pixels about its centre's image the depth is
+// that of the point the eye ray meets (Camera::project of the exact hit, in double) and the colour the headlight's
+// 0.3 + 0.7 cos(angle between the normal and the ray) times the sphere's.
+TEST(ProcessorRaster, ASpheresDepthAndShadeAreThoseOfTheHitThePixelsRayMeets) {
+    const Point centre(0.4, -0.2, 0.3);
+    const double radius = 0.8;
+    const Sphere sphere(centre, radius);
+    const render::Camera camera =
+        lookingAt(Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.3, 0.4, 1.0), 6.0, 40.0, sphere.bounds());
+    const render::RasterView view = render::rasterView(camera, kWidth, kHeight);
+    const render::Colour colour{0.2f, 0.6f, 0.9f, 1.0f};
+    const std::vector<render::RasterSphere> spheres{{glm::vec3(centre.x(), centre.y(), centre.z()),
+                                                     static_cast<float>(radius), static_cast<float>(1.0 / radius),
+                                                     colour}};
+    render::RasterImage image;
+    render::rasterise({spheres, {}, {}}, view, {0.0f, 0.0f, 0.0f, 1.0f}, image, 2);
+
+    int checked = 0;
+    for (int j = 0; j < kHeight; ++j) {
+        for (int i = 0; i < kWidth; ++i) {
+            const Direction ray = test::pixelRay(camera, i, j, kWidth, kHeight);
+            const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+            const double t = sphere.distanceToSurface(eye, ray);
+            const int row = kHeight - 1 - j;  // the image's rows go up, the pixels' down
+            if (!std::isfinite(t)) continue;
+            const Point hit = eye + t * ray.vector();
+            const Eigen::Vector3d normal = (hit - centre).normalized();
+            // Within a pixel of the rim the shade changes fastest and a pixel's centre may fall either side.
+            const double cosine = std::abs(normal.dot(ray.vector()));
+            if (cosine < 0.2) continue;
+            const glm::dvec3 projected = camera.project({hit.x(), hit.y(), hit.z()}, kWidth, kHeight);
+            EXPECT_NEAR(image.depthAt(i, row), projected.z, 1e-5) << "pixel " << i << ", " << j;
+            const std::uint32_t pixel = image.colourAt(i, row);
+            for (int channel = 0; channel < 3; ++channel) {
+                const double expected = 255.0 * colour[static_cast<std::size_t>(channel)] * (0.3 + 0.7 * cosine);
+                EXPECT_NEAR(static_cast<double>((pixel >> (8 * channel)) & 0xFFu), expected, 1.0)
+                    << "pixel " << i << ", " << j << ", channel " << channel;
+            }
+            EXPECT_EQ(pixel >> 24, 255u);
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 1000);
+}
+
+// Two overlapping spheres and a segment passing behind one and in front of the other: the nearest wins at every
+// pixel, in either order of the spheres and whatever number of bands the rows are cut into (bit for bit).
+TEST(ProcessorRaster, TheNearestWinsInAnyOrderAndAnyNumberOfBandsDrawsTheSamePicture) {
+    const render::Colour red{1.0f, 0.0f, 0.0f, 1.0f};
+    const render::Colour blue{0.0f, 0.0f, 1.0f, 1.0f};
+    const render::Colour green{0.0f, 1.0f, 0.0f, 1.0f};
+    std::vector<render::RasterSphere> spheres{{glm::vec3(-0.3f, 0.0f, 0.0f), 0.6f, 1.0f / 0.6f, red},
+                                              {glm::vec3(0.3f, 0.1f, 1.0f), 0.5f, 1.0f / 0.5f, blue}};
+    // Along x at z = 0.75: in front of the red sphere's surface (z <= 0.6), behind the blue one's front (z = 1.5).
+    const std::vector<render::LineVertex> lines{{{-1.5f, 0.05f, 0.75f}, green}, {{1.5f, 0.05f, 0.75f}, green}};
+    render::Camera camera;
+    camera.eye = {0.0, 0.0, 6.0};
+    camera.target = {0.0, 0.0, 0.0};
+    camera.nearPlane = 1.0;
+    camera.farPlane = 20.0;
+    const render::RasterView view = render::rasterView(camera, kWidth, kHeight);
+    const auto draw = [&](const std::vector<render::RasterSphere>& given, unsigned threads) {
+        render::RasterImage image;
+        image.resize(3, 5);  // another picture's size: made the view's
+        render::rasterise({given, {}, lines}, view, {0.0f, 0.0f, 0.0f, 1.0f}, image, threads);
+        return image;
+    };
+    const render::RasterImage first = draw(spheres, 1);
+    const auto at = [&](const glm::dvec3& world) {
+        const glm::dvec3 p = camera.project(world, kWidth, kHeight);
+        return first.colourAt(static_cast<int>(p.x), kHeight - 1 - static_cast<int>(p.y));
+    };
+    const std::uint32_t hidden = at({0.0, 0.05, 1.1});  // shaded: only its blue channel lit
+    EXPECT_TRUE((hidden & 0xFFFFu) == 0 && (hidden >> 16 & 0xFFu) > 200) << "the blue sphere hides the segment and "
+                                                                            "the red one: "
+                                                                         << std::hex << hidden;
+    EXPECT_EQ(at({-0.7, 0.05, 0.75}), render::packColour(green)) << "the segment lies in front of the red sphere";
+    EXPECT_EQ(at({1.3, 0.05, 0.75}), render::packColour(green)) << "the segment beyond the spheres";
+    std::swap(spheres[0], spheres[1]);
+    for (const unsigned threads : {1u, 2u, 3u, 8u}) {
+        const render::RasterImage other = draw(spheres, threads);
+        EXPECT_EQ(other.colour(), first.colour()) << threads << " bands, the spheres swapped";
+        EXPECT_EQ(other.depth(), first.depth()) << threads << " bands, the spheres swapped";
+    }
+}
+
+// A cloud of spheres with paths through and past it, some segments across the near plane and some beyond the far
+// one: the processor's frame and OpenGL's (every sphere at its exact depth) are the same picture but for
+// kProcessorMaxDifferingShare of the pixels (line ends and silhouettes within rounding).
+TEST(ProcessorRaster, DrawsThePictureOpenGLDraws) {
+    const auto shapes = sphereCrowd(400, 3.0, 0.05, 0.4, 21);
+    const Eigen::AlignedBox3d bounds = boundsOf(shapes);
+    const render::Anchor anchor{bounds.center()};
+    const render::Camera camera = lookingAt(bounds.center(), Eigen::Vector3d(0.3, 0.5, 1.0), 12.0, 40.0, bounds);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    render::LineBatch lines(anchor);
+    for (int k = 0; k < 300; ++k) {
+        const Point a(4.5 * unit(rng), 3.0 * unit(rng), 1.5 * unit(rng));
+        const Point b = a + Point(2.0 * unit(rng), 2.0 * unit(rng), 2.0 * unit(rng));
+        const float shade = 0.5f + 0.5f * static_cast<float>(unit(rng));
+        lines.add(a, b, {1.0f, shade, 0.0f, 1.0f}, {0.0f, shade, 1.0f, 1.0f});
+    }
+    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+    lines.add(eye + Point(0.3, 0.1, -0.5), eye + Point(-0.5, -0.2, -8.0), test::kLineColour);  // from before the near
+    lines.add(bounds.center(), bounds.center() - 200.0 * (eye - bounds.center()), test::kLineColour);  // past the far
+    const render::ShapeInstances instances = render::buildShapeInstances(shapes, anchor);
+
+    DirectRenderer renderer(kWidth, kHeight);
+    const snapshot::Image drawnByOpenGL = renderer.draw(camera, anchor, instances, lines);
+    ASSERT_FALSE(renderer.lastFrameOnProcessor());
+    renderer.setProcessorRaster(true);
+    const snapshot::Image drawnOnProcessor = renderer.draw(camera, anchor, instances, lines);
+    ASSERT_TRUE(renderer.lastFrameOnProcessor());
+    EXPECT_GT(test::coveredPixels(drawnByOpenGL), kWidth * kHeight / 3);
+    const test::ImageDifference difference =
+        test::compareImages(drawnByOpenGL, drawnOnProcessor, test::kGoldenChannelTolerance);
+    EXPECT_TRUE(difference.within(test::kProcessorMaxDifferingShare))
+        << difference.differingPixels << " of " << difference.pixels << " pixels differ";
+}
+
+// A frame with a box in it is OpenGL's, pixel for pixel; the spheres' colours, rewritten in place for a new
+// selection (Renderer::recolourShape), reach the processor's frames too.
+TEST(ProcessorRaster, AFrameWithOtherShapesIsOpenGLsAndANewSelectionIsDrawn) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::make_unique<Sphere>(Point(0.0, 0.0, 0.0), 1.0));
+    shapes.push_back(std::make_unique<Box>(Point(1.5, -0.5, -0.5), Point(2.5, 0.5, 0.5)));
+    const render::Anchor anchor{Point(0.0, 0.0, 0.0)};
+    const render::Camera camera = lookingAt(Point(0.5, 0.0, 0.0), Eigen::Vector3d(0.1, 0.2, 1.0), 8.0, 40.0,
+                                            Eigen::AlignedBox3d(Point(-1.0, -1.0, -1.0), Point(2.5, 1.0, 1.0)));
+    const render::ShapeInstances instances = render::buildShapeInstances(shapes, anchor);
+    DirectRenderer renderer(kWidth, kHeight);
+    const snapshot::Image drawnByOpenGL = renderer.draw(camera, anchor, instances, render::LineBatch(anchor));
+    renderer.setProcessorRaster(true);
+    const snapshot::Image asked = renderer.draw(camera, anchor, instances, render::LineBatch(anchor));
+    EXPECT_FALSE(renderer.lastFrameOnProcessor());
+    EXPECT_EQ(test::compareImages(drawnByOpenGL, asked, 0).differingPixels, 0U);
+
+    snapshot::OsmesaContext context(kWidth, kHeight);
+    render::Renderer direct(context.gl());
+    render::ShapeInstances sphereOnly = instances;
+    sphereOnly.boxes.clear();
+    sphereOnly.boxIds.clear();
+    direct.setShapes(sphereOnly);
+    render::RenderOptions options;
+    options.processorRaster = true;
+    options.background = {0.0f, 0.0f, 0.0f, 1.0f};
+    const Eigen::Vector2d middle = test::projectToPixels(camera, Point(0.0, 0.0, 0.0), kWidth, kHeight);
+    const auto centrePixel = [&] {
+        direct.draw(camera, options, kWidth, kHeight);
+        EXPECT_TRUE(direct.lastFrameOnProcessor());
+        const snapshot::Image image = context.read();
+        const std::uint8_t* rgba = image.pixel(static_cast<int>(middle.x()), static_cast<int>(middle.y()));
+        return std::array<int, 3>{rgba[0], rgba[1], rgba[2]};
+    };
+    const std::array<int, 3> before = centrePixel();
+    ASSERT_TRUE(direct.recolourShape(instances.roundedIds[0], render::kHighlight));
+    const std::array<int, 3> after = centrePixel();
+    EXPECT_NE(before, after);
+    for (std::size_t channel = 0; channel < 3; ++channel) {  // the centre faces the eye: the full colour
+        EXPECT_NEAR(after[channel], 255.0 * render::kHighlight[channel], 1.0) << "channel " << channel;
+    }
+}
+
+}  // namespace
+}  // namespace dropscope
