@@ -46,6 +46,12 @@ void drawMainMenu(AppState& state) {
         ImGui::MenuItem("Axes", nullptr, &view.layers.axes);
         ImGui::MenuItem("Grid", nullptr, &view.layers.grid);
         ImGui::MenuItem("Translucent shapes", nullptr, &view.layers.render.translucent);
+        ImGui::MenuItem("Draw spheres and lines on the processor", nullptr, &view.layers.render.processorRaster);
+        if (ImGui::IsItemHovered()) {
+            ImGui::SetTooltip(
+                "Faster than a software OpenGL (llvmpipe, on by default there); a view holding\n"
+                "other shapes, translucent ones or detector screens is drawn by OpenGL.");
+        }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {

@@ -65,6 +65,8 @@ public:
     // How long the last rebuild took: the layers made and uploaded, the shapes' instances too when they changed
     // (for the frame benchmark).
     double lastRebuildSeconds() const { return lastRebuildSeconds_; }
+    // Whether the last 3D view drawn was drawn on the processor (render::RenderOptions::processorRaster).
+    bool lastViewOnProcessor() const { return renderer_.lastFrameOnProcessor(); }
     // Frames whose view the renderer drew, and frames that copied the kept picture instead.
     std::uint64_t drawnFrames() const { return drawnFrames_; }
     std::uint64_t copiedFrames() const { return copiedFrames_; }

@@ -3,6 +3,7 @@
 #include <GL/glcorearb.h>
 
 #include <string>
+#include <string_view>
 
 namespace dropscope::render {
 
@@ -98,6 +99,13 @@ struct GlFunctions {
     static GlFunctions load(GlProcLoader loader);
     // "OpenGL <version>, <renderer>" of the current context, for messages and docs.
     std::string describe() const;
+    // Whether the current context's renderer runs on the processor (isSoftwareRenderer of its GL_RENDERER).
+    bool softwareRenderer() const;
 };
+
+// Whether a GL_RENDERER string names one of Mesa's rasterisers that run on the processor (llvmpipe, softpipe,
+// swrast, OpenSWR), where drawing a frame of spheres and lines on the processor is faster
+// (RenderOptions::processorRaster).
+bool isSoftwareRenderer(std::string_view renderer);
 
 }  // namespace dropscope::render

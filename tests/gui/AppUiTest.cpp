@@ -69,6 +69,45 @@ const Sphere& sphereAt(AppHarness& harness, ShapeId id) {
     return static_cast<const Sphere&>(*shape);
 }
 
+// Over OSMesa's llvmpipe (a software OpenGL) the app draws a view of droplets and paths on the processor, the same
+// window as OpenGL draws but for a few pixels at line ends; switched off (View menu) or with a box in the scene,
+// OpenGL draws it.
+TEST(AppUi, OverASoftwareOpenGLAViewOfDropletsIsDrawnOnTheProcessor) {
+    {
+        AppHarness harness(kCloudScene);
+        ASSERT_TRUE(harness.state().view.layers.render.processorRaster);
+        harness.state().view.layers.octree = true;  // lines too
+        harness.frames(2);
+        EXPECT_TRUE(harness.app().viewport().lastViewOnProcessor());
+        const snapshot::Image onProcessor = harness.image();
+        harness.state().view.layers.render.processorRaster = false;
+        harness.frames(2);
+        EXPECT_FALSE(harness.app().viewport().lastViewOnProcessor());
+        const snapshot::Image byOpenGL = harness.image();
+        int differing = 0;
+        int drawn = 0;  // in the middle, between the panels
+        for (int y = 0; y < byOpenGL.height; ++y) {
+            for (int x = 0; x < byOpenGL.width; ++x) {
+                const std::uint8_t* a = onProcessor.pixel(x, y);
+                const std::uint8_t* b = byOpenGL.pixel(x, y);
+                const bool middle = x >= 400 && x < 880 && y >= 40 && y < 760;
+                drawn +=
+                    middle && differsFromBackground(byOpenGL, static_cast<float>(x), static_cast<float>(y)) ? 1 : 0;
+                differing += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 24 ? 1 : 0;
+            }
+        }
+        EXPECT_GT(drawn, 2000) << "droplets and octree cells drawn between the panels";
+        EXPECT_LT(differing, byOpenGL.width * byOpenGL.height / 1000) << "pixels differing between the two";
+    }  // one app at a time: ImGui's context is global
+
+    AppHarness boxed(R"({"dropscope": 1, "ambient": "air", "media": {"air": {"n": 1}, "glass": {"n": 1.5}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": "glass"},
+                 {"type": "box", "min": [2, -1, -1], "max": [3, 1, 1], "medium": "glass"}]})");
+    ASSERT_TRUE(boxed.state().view.layers.render.processorRaster);
+    boxed.frames(2);
+    EXPECT_FALSE(boxed.app().viewport().lastViewOnProcessor());
+}
+
 TEST(AppUi, AClickInPlacementModeDropsADropletOnThePlacementPlaneUnderTheCursor) {
     AppHarness harness(kTopDownScene);
     harness.state().placement.radius = 0.3;

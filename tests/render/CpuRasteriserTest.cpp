@@ -265,5 +265,17 @@ TEST(ProcessorRaster, AFrameWithOtherShapesIsOpenGLsAndANewSelectionIsDrawn) {
     }
 }
 
+// The renderers the app draws on the processor for: Mesa's on the processor, not a GPU's, even one named after LLVM.
+TEST(ProcessorRaster, SoftwareOpenGLsAreKnownByTheirRenderersName) {
+    EXPECT_TRUE(render::isSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_TRUE(render::isSoftwareRenderer("softpipe"));
+    EXPECT_TRUE(render::isSoftwareRenderer("Software Rasterizer"));
+    EXPECT_FALSE(render::isSoftwareRenderer("AMD Radeon RX 6800 (navi21, LLVM 15.0.6, DRM 3.49, 6.1.0-13-amd64)"));
+    EXPECT_FALSE(render::isSoftwareRenderer("NVIDIA GeForce RTX 3080/PCIe/SSE2"));
+    EXPECT_FALSE(render::isSoftwareRenderer("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
+    snapshot::OsmesaContext context(8, 8);
+    EXPECT_TRUE(context.gl().softwareRenderer()) << context.gl().describe();
+}
+
 }  // namespace
 }  // namespace dropscope
