@@ -204,9 +204,16 @@ TEST(ProcessorRaster, DrawsThePictureOpenGLDraws) {
         const float shade = 0.5f + 0.5f * static_cast<float>(unit(rng));
         lines.add(a, b, {1.0f, shade, 0.0f, 1.0f}, {0.0f, shade, 1.0f, 1.0f});
     }
+    // Across the near plane in view, from behind the eye, and out past the far plane.
     const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
-    lines.add(eye + Point(0.3, 0.1, -0.5), eye + Point(-0.5, -0.2, -8.0), test::kLineColour);  // from before the near
-    lines.add(bounds.center(), bounds.center() - 200.0 * (eye - bounds.center()), test::kLineColour);  // past the far
+    const Eigen::Vector3d forward = (bounds.center() - eye).normalized();
+    const Eigen::Vector3d right = forward.cross(Eigen::Vector3d(0.0, 1.0, 0.0)).normalized();
+    const Eigen::Vector3d up = right.cross(forward);
+    lines.add(eye + camera.nearPlane * (0.3 * forward + 0.05 * right + 0.03 * up),
+              bounds.center() + 0.7 * right + 0.3 * up, test::kLineColour);
+    lines.add(eye - 2.0 * forward + 0.2 * right - 0.15 * up, bounds.center() - 0.4 * right + 0.5 * up,
+              test::kLineColour);
+    lines.add(bounds.center(), bounds.center() + 200.0 * (bounds.center() - eye), test::kLineColour);
     const render::ShapeInstances instances = render::buildShapeInstances(shapes, anchor);
 
     DirectRenderer renderer(kWidth, kHeight);

@@ -58,7 +58,12 @@ inline constexpr int kGoldenChannelTolerance = 8;
 inline constexpr double kGoldenMaxDifferingShare = 0.0005;
 
 // A frame drawn on the processor (RenderOptions::processorRaster) against OpenGL's of the same scene, every sphere at
-// its exact depth in both: at most this share of the pixels differ by more than kGoldenChannelTolerance. PLACEHOLDER
-inline constexpr double kProcessorMaxDifferingShare = 0.01;
+// its exact depth in both: at most this share of the pixels differ by more than kGoldenChannelTolerance. The
+// processor takes a line's pixels by OpenGL's rule but decides the first and last pixel by the centres' columns,
+// not the diamonds: in ProcessorRaster.DrawsThePictureOpenGLDraws 76 of its 19,200 pixels differ, all single pixels
+// at some of the 603 segments' ends (0.40 %). 0.5 % leaves 20 pixels for another build's rounding and catches a
+// segment drawn a row off along its length, or one across the near plane left unclipped (173 pixels), let alone a
+// sphere moved or shaded otherwise (its whole outline or area).
+inline constexpr double kProcessorMaxDifferingShare = 0.005;
 
 }  // namespace dropscope::test
