@@ -575,10 +575,11 @@ bool Renderer::roundedWithin(const glm::dvec3& eye, double reach) const {
     });
 }
 
-bool Renderer::processorDraws(const RenderOptions& options) const {
+bool Renderer::processorDraws(const RenderOptions& options, int width, int height) const {
     const bool shapesDrawable =
         !options.shapes || (!options.translucent && roundedAllSpheres_ && boxes_->count == 0 && meshes_.empty());
-    return markersAllSpheres_ && shapesDrawable && (!options.lines || surfaces_->count == 0);
+    return markersAllSpheres_ && shapesDrawable && (!options.lines || surfaces_->count == 0) &&
+           static_cast<long>(width) * static_cast<long>(height) <= kProcessorMostPixels;
 }
 
 void Renderer::drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices) {
@@ -663,7 +664,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
                               !roundedWithin(local.eye, nearReach);
     const bool chordsDrawn = options.lines && chordsFrom_ < lines_->count && !chordsHidden;
     apartInLastFrame_ = 0;
-    lastFrameOnProcessor_ = options.processorRaster && processorDraws(options);
+    lastFrameOnProcessor_ = options.processorRaster && processorDraws(options, width, height);
     if (lastFrameOnProcessor_) {
         drawOnProcessor(view, options, options.lines ? (chordsHidden ? chordsFrom_ : lines_->count) : 0);
         return;

@@ -29,6 +29,11 @@ inline constexpr float kExactPointPixels = 32.0f;
 // drawn mostly as points of a few pixels, whose depth is the front's either way (docs/rendering.md, "Spheres apart").
 inline constexpr int kApartMostSpheres = 300000;
 
+// Frames of more pixels than this (a 3840 x 2160 screen) are drawn by OpenGL even with
+// RenderOptions::processorRaster: the processor's picture costs 8 bytes a pixel, kept between frames, and a
+// screenshot of up to 8192 x 8192 pixels would keep half a gigabyte.
+inline constexpr long kProcessorMostPixels = 3840L * 2160L;
+
 // What to draw; every layer can be switched off.
 struct RenderOptions {
     bool shapes = true;
@@ -147,7 +152,7 @@ private:
     // them, or the near plane cut one open.
     bool roundedWithin(const glm::dvec3& eye, double reach) const;
     // Whether this frame's layers are all the processor draws: opaque spheres, markers that are spheres, lines.
-    bool processorDraws(const RenderOptions& options) const;
+    bool processorDraws(const RenderOptions& options, int width, int height) const;
     // The frame drawn by rasterise into rasterImage_, copied into the framebuffer bound for drawing.
     void drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices);
 

@@ -263,6 +263,8 @@ TEST(ProcessorRaster, AFrameWithOtherShapesIsOpenGLsAndANewSelectionIsDrawn) {
         const std::uint8_t* rgba = image.pixel(static_cast<int>(middle.x()), static_cast<int>(middle.y()));
         return std::array<int, 3>{rgba[0], rgba[1], rgba[2]};
     };
+    direct.draw(camera, options, 3841, 2160);  // more pixels than kProcessorMostPixels: OpenGL's
+    EXPECT_FALSE(direct.lastFrameOnProcessor());
     const std::array<int, 3> before = centrePixel();
     ASSERT_TRUE(direct.recolourShape(instances.roundedIds[0], render::kHighlight));
     const std::array<int, 3> after = centrePixel();
