@@ -1,6 +1,7 @@
 #include "render/CpuRasteriser.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <thread>
 
@@ -194,12 +195,22 @@ LineEnd lineEnd(const glm::vec4& clip, const Colour& colour, const RasterView& v
     return end;
 }
 
-// The segment a-b clipped to the near and far planes (-w <= z <= w) in clip space, where every value is linear
-// along it. False when nothing is left.
-bool clipToDepthRange(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
-    for (const float side : {1.0f, -1.0f}) {  // near: z + w >= 0; far: w - z >= 0
-        const float da = a.w + side * a.z;
-        const float db = b.w + side * b.z;
+// How far beyond the image's edges a segment is kept: clipped to |x|, |y| <= kGuardBand w in clip space, so its
+// window coordinates stay within a few image widths, where float keeps them to a small fraction of a pixel.
+constexpr float kGuardBand = 2.0f;
+
+// The segment a-b clipped in clip space, where every value is linear along it, to the near and far planes
+// (-w <= z <= w) and to the guard band about the image. False when nothing is left.
+bool clipSegment(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
+    // Each plane as p . (x, y, z, w) >= 0.
+    constexpr std::array<glm::vec4, 6> kPlanes{
+        glm::vec4(0.0f, 0.0f, 1.0f, 1.0f),       glm::vec4(0.0f, 0.0f, -1.0f, 1.0f),
+        glm::vec4(1.0f, 0.0f, 0.0f, kGuardBand), glm::vec4(-1.0f, 0.0f, 0.0f, kGuardBand),
+        glm::vec4(0.0f, 1.0f, 0.0f, kGuardBand), glm::vec4(0.0f, -1.0f, 0.0f, kGuardBand)};
+    for (const glm::vec4& plane : kPlanes) {
+        const float da = glm::dot(plane, a);
+        const float db = glm::dot(plane, b);
+        if (!std::isfinite(da) || !std::isfinite(db)) return false;
         if (da < 0.0f && db < 0.0f) return false;
         if (da >= 0.0f && db >= 0.0f) continue;
         const float t = da / (da - db);
@@ -216,7 +227,7 @@ bool clipToDepthRange(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colou
             colourB = colour;
         }
     }
-    return true;
+    return a.w > 0.0f && b.w > 0.0f;  // in front of the eye, as the near plane leaves them
 }
 
 [[gnu::always_inline]] inline void linesBody(std::span<const LineVertex> lines, const RasterView& view,
@@ -229,7 +240,7 @@ bool clipToDepthRange(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colou
         glm::vec4 b = view.viewProjection * glm::vec4(to.position[0], to.position[1], to.position[2], 1.0f);
         Colour colourA = from.colour;
         Colour colourB = to.colour;
-        if (!clipToDepthRange(a, colourA, b, colourB)) continue;
+        if (!clipSegment(a, colourA, b, colourB)) continue;
         const LineEnd start = lineEnd(a, colourA, view);
         const LineEnd end = lineEnd(b, colourB, view);
         const float dx = end.x - start.x;
@@ -260,8 +271,11 @@ bool clipToDepthRange(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colou
         if (slope != 0.0f) {
             const float atLow = major0 + (minorLow - minor0) / slope - 0.5f;
             const float atHigh = major0 + (minorHigh - minor0) / slope - 0.5f;
-            first = std::max(first, static_cast<int>(std::floor(std::min(atLow, atHigh))) - 1);
-            last = std::min(last, static_cast<int>(std::ceil(std::max(atLow, atHigh))) + 1);
+            // Clamped before the casts: a slope near 0 puts these far beyond any pixel.
+            const float limit = static_cast<float>(alongX ? width : view.height) + 2.0f;
+            first =
+                std::max(first, static_cast<int>(std::clamp(std::floor(std::min(atLow, atHigh)), -2.0f, limit)) - 1);
+            last = std::min(last, static_cast<int>(std::clamp(std::ceil(std::max(atLow, atHigh)), -2.0f, limit)) + 1);
         } else if (minor0 < minorLow || minor0 >= minorHigh) {
             continue;
         }
