@@ -30,7 +30,7 @@ App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
     state_.view.layers.sources = true;
     state_.view.layers.traversal = true;
     // On a software OpenGL a frame of droplets and paths is drawn faster on the processor (docs/gui.md).
-    state_.view.layers.render.processorRaster = gl.softwareRenderer();
+    state_.view.layers.render.processorRaster = gl.isSoftware();
     state_.view.layers.detectors = !document.detectors().empty();  // the layer and the Detectors panel
     state_.ui.screenshotDirectory = options.screenshotDirectory;
     state_.ui.itemProbe = options.itemProbe;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <system_error>
 #include <thread>
 
 namespace dropscope::render {
@@ -49,11 +50,18 @@ void RasterImage::resize(int width, int height) {
     depth_.resize(pixels);
 }
 
+namespace {
+
+// v within [0, 255], NaN taken as 0 (a NaN would make the cast to int undefined).
+inline float within255(float v) { return std::min(std::max(0.0f, v), 255.0f); }  // std::max(0, NaN) is 0
+
+}  // namespace
+
 std::uint32_t packColour(const Colour& colour) {
     std::uint32_t packed = 0;
     for (std::size_t channel = 0; channel < 4; ++channel) {
-        const float unit = std::clamp(colour[channel], 0.0f, 1.0f);
-        packed |= static_cast<std::uint32_t>(static_cast<int>(unit * 255.0f + 0.5f)) << (8 * channel);
+        packed |= static_cast<std::uint32_t>(static_cast<int>(within255(colour[channel] * 255.0f + 0.5f)))
+                  << (8 * channel);
     }
     return packed;
 }
@@ -71,7 +79,8 @@ struct SphereRow {
     float eyeClipW;
     float clipZ[3];
     float clipW[3];
-    float colour255[4];  // the colour's channels clamped to [0, 1], times 255
+    float colour255[3];   // red, green and blue times 255 (clamped after the shading, as a framebuffer does)
+    std::uint32_t alpha;  // the colour's alpha, packed (opaque: no opacity applies)
 };
 
 // impostor.frag for pixels [from, to) of a row, with the depth test (GL_LESS): the ray in the sphere's unit frame,
@@ -94,7 +103,7 @@ struct SphereRow {
             const float a = dx * dx + dy * dy + dz * dz;
             const float b = in.objectEye[0] * dx + in.objectEye[1] * dy + in.objectEye[2] * dz;
             const float discriminant = b * b - a * in.c;
-            const float root = std::sqrt(std::max(discriminant, 0.0f));
+            const float root = std::sqrt(std::max(0.0f, discriminant));  // 0 for a NaN too
             const float inverseA = 1.0f / a;
             const float nearRoot = (-b - root) * inverseA;
             const float t = nearRoot >= 0.0f ? nearRoot : (-b + root) * inverseA;
@@ -103,10 +112,10 @@ struct SphereRow {
             const float fragmentDepth = std::clamp(0.5f * clipZ / clipW + 0.5f, 0.0f, 1.0f);
             const float shade = 0.3f + 0.7f * (root * std::sqrt(inverseA));
             const std::uint32_t packed =
-                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[0] * shade + 0.5f, 255.0f))) |
-                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[1] * shade + 0.5f, 255.0f))) << 8 |
-                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[2] * shade + 0.5f, 255.0f))) << 16 |
-                static_cast<std::uint32_t>(static_cast<int>(in.colour255[3] + 0.5f)) << 24;
+                static_cast<std::uint32_t>(static_cast<int>(within255(in.colour255[0] * shade + 0.5f))) |
+                static_cast<std::uint32_t>(static_cast<int>(within255(in.colour255[1] * shade + 0.5f))) << 8 |
+                static_cast<std::uint32_t>(static_cast<int>(within255(in.colour255[2] * shade + 0.5f))) << 16 |
+                in.alpha;
             const float before = depth[x];
             const bool drawn = (x >= from) & (x < to) & (discriminant >= 0.0f) & (t >= 0.0f) & (fragmentDepth < before);
             depth[x] = drawn ? fragmentDepth : before;
@@ -121,6 +130,7 @@ struct SphereRow {
                                                RasterImage& image, int rowBegin, int rowEnd) {
     const int width = view.width;
     for (const RasterSphere& sphere : spheres) {
+        if (!(sphere.radius > 0.0f) || !std::isfinite(sphere.inverseRadius)) continue;  // nothing to draw
         const glm::vec3 toEye = view.eye - sphere.centre;
         const float distance = glm::length(toEye);
         const glm::vec4 clipCentre = view.viewProjection * glm::vec4(sphere.centre, 1.0f);
@@ -128,8 +138,8 @@ struct SphereRow {
         if (depth <= -sphere.radius) continue;  // wholly behind the eye
         int columnBegin = 0;
         int columnEnd = width;
-        int from = rowBegin;
-        int to = rowEnd;
+        int rowFrom = rowBegin;
+        int rowTo = rowEnd;
         if (distance > 1.01f * sphere.radius && depth > 1.01f * sphere.radius) {
             // impostor.vert's bound: at angle theta off the axis the silhouette (angular radius alpha) reaches
             // f tan(alpha) s / (1 - tan(theta) tan(alpha)) from the centre's image, s = 1 / cos^2(theta); here with
@@ -141,16 +151,18 @@ struct SphereRow {
                 const float half = view.pixelsPerUnit * tanAlpha * stretch / spread + 0.5f;
                 const float x = (clipCentre.x / clipCentre.w * 0.5f + 0.5f) * static_cast<float>(width);
                 const float y = (clipCentre.y / clipCentre.w * 0.5f + 0.5f) * static_cast<float>(view.height);
-                const auto clampTo = [](float v, int low, int high) {
-                    return static_cast<int>(std::clamp(v, static_cast<float>(low), static_cast<float>(high)));
+                const auto clampTo = [](float v, int low, int high) {  // a NaN to low
+                    const auto lowest = static_cast<float>(low);
+                    const auto highest = static_cast<float>(high);
+                    return static_cast<int>(v > lowest ? (v < highest ? v : highest) : lowest);
                 };
                 columnBegin = clampTo(std::floor(x - half), 0, width);
                 columnEnd = clampTo(std::ceil(x + half), 0, width);
-                from = clampTo(std::floor(y - half), rowBegin, rowEnd);
-                to = clampTo(std::ceil(y + half), rowBegin, rowEnd);
+                rowFrom = clampTo(std::floor(y - half), rowBegin, rowEnd);
+                rowTo = clampTo(std::ceil(y + half), rowBegin, rowEnd);
             }
         }
-        if (columnBegin >= columnEnd || from >= to) continue;
+        if (columnBegin >= columnEnd || rowFrom >= rowTo) continue;
         SphereRow row{};
         const glm::vec3 objectEye = sphere.inverseRadius * toEye;
         for (int k = 0; k < 3; ++k) {
@@ -163,10 +175,9 @@ struct SphereRow {
         row.c = glm::dot(objectEye, objectEye) - 1.0f;
         row.eyeClipZ = view.eyeClip.x;
         row.eyeClipW = view.eyeClip.y;
-        for (std::size_t channel = 0; channel < 4; ++channel) {
-            row.colour255[channel] = std::clamp(sphere.colour[channel], 0.0f, 1.0f) * 255.0f;
-        }
-        for (int y = from; y < to; ++y) {
+        for (std::size_t channel = 0; channel < 3; ++channel) row.colour255[channel] = sphere.colour[channel] * 255.0f;
+        row.alpha = packColour({0.0f, 0.0f, 0.0f, sphere.colour[3]});
+        for (int y = rowFrom; y < rowTo; ++y) {
             const glm::vec3 rowRay =
                 view.rayAtOrigin + (static_cast<float>(y) + 0.5f) * view.rayPerPixelY + 0.5f * view.rayPerPixelX;
             for (int k = 0; k < 3; ++k) row.rowRay[k] = rowRay[k];
@@ -315,54 +326,64 @@ bool clipSegment(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
     }
 }
 
-[[gnu::always_inline]] inline void bandBody(const RasterContent& content, const RasterView& view, RasterImage& image,
-                                            int rowBegin, int rowEnd) {
+// The rows [rowBegin, rowEnd) of the picture: the background, then the markers, the spheres and the lines.
+[[gnu::always_inline]] inline void bandBody(const RasterContent& content, const RasterView& view,
+                                            std::uint32_t background, RasterImage& image, int rowBegin, int rowEnd) {
+    const auto rowPixels = static_cast<std::ptrdiff_t>(image.stride()) * (rowEnd - rowBegin);
+    if (rowPixels > 0) {
+        std::fill_n(image.colourRow(rowBegin), rowPixels, background);
+        std::fill_n(image.depthRow(rowBegin), rowPixels, 1.0f);
+    }
     spheresBody(content.markers, view, image, rowBegin, rowEnd);
     spheresBody(content.spheres, view, image, rowBegin, rowEnd);
     linesBody(content.lines, view, image, rowBegin, rowEnd);
 }
 
-// The rows [rowBegin, rowEnd) of the picture, by code for the processor's own vector width where it has AVX2.
-void drawBandPortable(const RasterContent& content, const RasterView& view, RasterImage& image, int rowBegin,
-                      int rowEnd) {
-    bandBody(content, view, image, rowBegin, rowEnd);
+// bandBody twice: for the x86-64 baseline (SSE2) and for processors with AVX2 and FMA, whose vectors hold a whole
+// block of pixels and which fuse multiply-adds: the two round a little differently.
+void drawBandBaseline(const RasterContent& content, const RasterView& view, std::uint32_t background,
+                      RasterImage& image, int rowBegin, int rowEnd) {
+    bandBody(content, view, background, image, rowBegin, rowEnd);
 }
 
 __attribute__((target("avx2,fma"))) void drawBandAvx2(const RasterContent& content, const RasterView& view,
-                                                      RasterImage& image, int rowBegin, int rowEnd) {
-    bandBody(content, view, image, rowBegin, rowEnd);
+                                                      std::uint32_t background, RasterImage& image, int rowBegin,
+                                                      int rowEnd) {
+    bandBody(content, view, background, image, rowBegin, rowEnd);
 }
 
-using DrawBand = void (*)(const RasterContent&, const RasterView&, RasterImage&, int, int);
+using DrawBand = void (*)(const RasterContent&, const RasterView&, std::uint32_t, RasterImage&, int, int);
 
-DrawBand chooseDrawBand() {
+DrawBand fastestDrawBand() {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? drawBandAvx2 : drawBandPortable;
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? drawBandAvx2 : drawBandBaseline;
 }
 
-const DrawBand drawBand = chooseDrawBand();
+const DrawBand kFastestDrawBand = fastestDrawBand();
 
 }  // namespace
 
+bool rasterCodeHasAvx2() { return kFastestDrawBand == drawBandAvx2; }
+
 void rasterise(const RasterContent& content, const RasterView& view, const Colour& background, RasterImage& image,
-               unsigned threads) {
+               unsigned threads, RasterCode code) {
     image.resize(view.width, view.height);
     const int height = view.height;
     const int bands = static_cast<int>(std::clamp(threads, 1u, static_cast<unsigned>(std::max(height, 1))));
     const std::uint32_t backgroundColour = packColour(background);
+    const DrawBand drawBand = code == RasterCode::baseline ? drawBandBaseline : kFastestDrawBand;
     const auto band = [&](int index) {
-        const int rowBegin = height * index / bands;
-        const int rowEnd = height * (index + 1) / bands;
-        const auto rowPixels = static_cast<std::ptrdiff_t>(image.stride()) * (rowEnd - rowBegin);
-        if (rowPixels > 0) {
-            std::fill_n(image.colourRow(rowBegin), rowPixels, backgroundColour);
-            std::fill_n(image.depthRow(rowBegin), rowPixels, 1.0f);
-        }
-        drawBand(content, view, image, rowBegin, rowEnd);
+        drawBand(content, view, backgroundColour, image, height * index / bands, height * (index + 1) / bands);
     };
     std::vector<std::thread> helpers;
     helpers.reserve(static_cast<std::size_t>(bands - 1));
-    for (int k = 1; k < bands; ++k) helpers.emplace_back(band, k);
+    for (int k = 1; k < bands; ++k) {
+        try {
+            helpers.emplace_back(band, k);
+        } catch (const std::system_error&) {  // no thread to be had (a login node's process limit): this one draws it
+            band(k);
+        }
+    }
     band(0);
     for (std::thread& helper : helpers) helper.join();
 }

@@ -88,7 +88,12 @@ struct RasterContent {
     std::span<const RasterSphere> markers;
     std::span<const LineVertex> lines;
 };
+// Which copy of the drawing code runs: the fastest the processor has (AVX2 where it has it), or the x86-64
+// baseline's (for tests: the two draw the same picture but for rounding).
+enum class RasterCode { fastest, baseline };
 void rasterise(const RasterContent& content, const RasterView& view, const Colour& background, RasterImage& image,
-               unsigned threads);
+               unsigned threads, RasterCode code = RasterCode::fastest);
+// Whether RasterCode::fastest is the AVX2 copy on this processor.
+bool rasterCodeHasAvx2();
 
 }  // namespace dropscope::render

@@ -11,8 +11,8 @@ namespace dropscope::render {
 namespace {
 
 // Mesa's names for its rasterisers on the processor, as GL_RENDERER gives them (lower case): "llvmpipe (LLVM 15.0.6,
-// 256 bits)", "softpipe", "Software Rasterizer" (swrast), "SWR (...)" (OpenSWR).
-constexpr std::string_view kSoftwareRenderers[] = {"llvmpipe", "softpipe", "software rasterizer", "swr"};
+// 256 bits)", "softpipe", "Software Rasterizer" (swrast).
+constexpr std::string_view kSoftwareRenderers[] = {"llvmpipe", "softpipe", "software rasterizer"};
 
 }  // namespace
 
@@ -34,7 +34,7 @@ std::string GlFunctions::describe() const {
     return "OpenGL " + text(GL_VERSION) + ", " + text(GL_RENDERER);
 }
 
-bool GlFunctions::softwareRenderer() const {
+bool GlFunctions::isSoftware() const {
     const auto* renderer = reinterpret_cast<const char*>(GetString(GL_RENDERER));
     return renderer != nullptr && isSoftwareRenderer(renderer);
 }

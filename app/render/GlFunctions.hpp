@@ -100,11 +100,11 @@ struct GlFunctions {
     // "OpenGL <version>, <renderer>" of the current context, for messages and docs.
     std::string describe() const;
     // Whether the current context's renderer runs on the processor (isSoftwareRenderer of its GL_RENDERER).
-    bool softwareRenderer() const;
+    bool isSoftware() const;
 };
 
 // Whether a GL_RENDERER string names one of Mesa's rasterisers that run on the processor (llvmpipe, softpipe,
-// swrast, OpenSWR), where drawing a frame of spheres and lines on the processor is faster
+// swrast), where drawing a frame of spheres and lines on the processor is faster
 // (RenderOptions::processorRaster).
 bool isSoftwareRenderer(std::string_view renderer);
 

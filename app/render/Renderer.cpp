@@ -105,6 +105,16 @@ std::array<glm::dvec4, 6> frustumPlanes(const glm::mat4& viewProjection) {
     return planes;
 }
 
+// `instances` as the processor draws them, into `spheres`, when every one is a sphere (else `spheres` is left empty
+// and the answer is false).
+bool rasterSpheres(const std::vector<ShapeInstance>& instances, std::vector<RasterSphere>& spheres) {
+    spheres.clear();
+    if (!std::all_of(instances.begin(), instances.end(), isSphereInstance)) return false;
+    spheres.reserve(instances.size());
+    for (const ShapeInstance& sphere : instances) spheres.push_back(rasterSphere(sphere));
+    return true;
+}
+
 }  // namespace
 
 // A vertex array with a static mesh (optional) and a per-instance or per-vertex buffer.
@@ -264,12 +274,7 @@ void Renderer::setShapes(const ShapeInstances& instances) {
     rounded.reserve(order.size());
     for (const std::uint32_t k : order) rounded.push_back(instances.rounded[k]);
     rounded_->upload(rounded);
-    roundedAllSpheres_ = std::all_of(rounded.begin(), rounded.end(), isSphereInstance);
-    rasterRounded_.clear();
-    if (roundedAllSpheres_) {
-        rasterRounded_.reserve(rounded.size());
-        for (const ShapeInstance& sphere : rounded) rasterRounded_.push_back(rasterSphere(sphere));
-    }
+    roundedAllSpheres_ = rasterSpheres(rounded, rasterSpheres_);
     roundedAt_.clear();
     for (std::size_t place = 0; place < order.size(); ++place) {
         const ShapeId id = instances.roundedIds[order[place]];
@@ -372,7 +377,7 @@ bool Renderer::recolourShape(ShapeId id, const Colour& colour) {
         return true;
     };
     if (id < roundedAt_.size() && roundedAt_[id] != kNoInstance) {
-        if (roundedAt_[id] < rasterRounded_.size()) rasterRounded_[roundedAt_[id]].colour = colour;
+        if (roundedAt_[id] < rasterSpheres_.size()) rasterSpheres_[roundedAt_[id]].colour = colour;
         return write(*rounded_, roundedAt_[id]);
     }
     if (const auto box = std::find(boxIds_.begin(), boxIds_.end(), id); box != boxIds_.end())
@@ -414,11 +419,7 @@ void Renderer::setSurfaces(const TriangleBatch& surfaces) {
 
 void Renderer::setMarkers(const std::vector<ShapeInstance>& markers) {
     markers_->upload(markers);
-    markersAllSpheres_ = std::all_of(markers.begin(), markers.end(), isSphereInstance);
-    rasterMarkers_.clear();
-    if (markersAllSpheres_) {
-        for (const ShapeInstance& marker : markers) rasterMarkers_.push_back(rasterSphere(marker));
-    }
+    markersAllSpheres_ = rasterSpheres(markers, rasterMarkers_);
     apart_.setMarkers(markers);
 }
 
@@ -582,38 +583,63 @@ bool Renderer::processorDraws(const RenderOptions& options, int width, int heigh
            static_cast<long>(width) * static_cast<long>(height) <= kProcessorMostPixels;
 }
 
+bool Renderer::readyToHandOver(int width, int height) {
+    GLint samples = 0;  // a blit into a multisampled framebuffer from a single-sampled one is an error
+    gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &samples);
+    if (samples > 0 || width < 1 || height < 1) return false;
+    if (rasterTexture_ != 0 && rasterTextureWidth_ == width && rasterTextureHeight_ == height) return true;
+    const FramebufferBindings caller(gl_);
+    GLint texture = 0;
+    gl_.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+    if (rasterTexture_ == 0) {
+        gl_.GenTextures(1, &rasterTexture_);
+        gl_.GenFramebuffers(1, &rasterFramebuffer_);
+    }
+    gl_.BindTexture(GL_TEXTURE_2D, rasterTexture_);
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture));
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, rasterFramebuffer_);
+    gl_.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, rasterTexture_, 0);
+    const bool complete = gl_.CheckFramebufferStatus(GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    caller.restore(gl_);
+    rasterTextureWidth_ = complete ? width : 0;
+    rasterTextureHeight_ = complete ? height : 0;
+    return complete;
+}
+
 void Renderer::drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices) {
     const int width = view.width;
     const int height = view.height;
     RasterContent content;
-    if (options.shapes) content.spheres = rasterRounded_;
+    if (options.shapes) content.spheres = rasterSpheres_;
     content.markers = rasterMarkers_;
     content.lines = std::span<const LineVertex>(rasterLines_).first(static_cast<std::size_t>(lineVertices));
     rasterise(content, view, options.background, rasterImage_, std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
-    const FramebufferBindings caller(gl_);
-    if (rasterTexture_ == 0 || rasterTextureWidth_ != width || rasterTextureHeight_ != height) {
-        if (rasterTexture_ == 0) {
-            gl_.GenTextures(1, &rasterTexture_);
-            gl_.GenFramebuffers(1, &rasterFramebuffer_);
-        }
-        gl_.BindTexture(GL_TEXTURE_2D, rasterTexture_);
-        gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, rasterFramebuffer_);
-        gl_.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, rasterTexture_, 0);
-        rasterTextureWidth_ = width;
-        rasterTextureHeight_ = height;
-    }
-    gl_.BindTexture(GL_TEXTURE_2D, rasterTexture_);
+
+    // The upload with the pixel store and bindings it needs, the caller's put back after.
+    GLint texture = 0;
+    GLint unpackBuffer = 0;
+    GLint alignment = 4;
+    GLint rowLength = 0;
+    gl_.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+    gl_.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
+    gl_.GetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    gl_.GetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+    gl_.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
     gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, rasterImage_.stride());
+    gl_.BindTexture(GL_TEXTURE_2D, rasterTexture_);
     gl_.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rasterImage_.colour().data());
-    gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    gl_.BindTexture(GL_TEXTURE_2D, 0);
+    gl_.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture));
+    gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
+    gl_.PixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+    gl_.BindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
     // The caller's framebuffer gets the picture and a depth of 1: nothing drawn after the renderer tests depth (ImGui
     // draws over the view without it). The clear and the blit obey a scissor box as the drawing would.
     gl_.Clear(GL_DEPTH_BUFFER_BIT);
+    const FramebufferBindings caller(gl_);
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, rasterFramebuffer_);
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(caller.draw));
     gl_.BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -664,7 +690,8 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
                               !roundedWithin(local.eye, nearReach);
     const bool chordsDrawn = options.lines && chordsFrom_ < lines_->count && !chordsHidden;
     apartInLastFrame_ = 0;
-    lastFrameOnProcessor_ = options.processorRaster && processorDraws(options, width, height);
+    lastFrameOnProcessor_ =
+        options.processorRaster && processorDraws(options, width, height) && readyToHandOver(width, height);
     if (lastFrameOnProcessor_) {
         drawOnProcessor(view, options, options.lines ? (chordsHidden ? chordsFrom_ : lines_->count) : 0);
         return;

@@ -153,6 +153,9 @@ private:
     bool roundedWithin(const glm::dvec3& eye, double reach) const;
     // Whether this frame's layers are all the processor draws: opaque spheres, markers that are spheres, lines.
     bool processorDraws(const RenderOptions& options, int width, int height) const;
+    // Whether the processor's picture can be blitted into the framebuffer bound for drawing (not multisampled) and
+    // its texture made for width x height.
+    bool readyToHandOver(int width, int height);
     // The frame drawn by rasterise into rasterImage_, copied into the framebuffer bound for drawing.
     void drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices);
 
@@ -181,9 +184,10 @@ private:
     GLsizei chordsFrom_ = 0;  // lines_'s vertices from here on are chords
     std::unique_ptr<Mesh> surfaces_;
     std::unique_ptr<MeshCache> meshCache_;
-    // What the processor draws, kept beside the buffers: rounded_'s instances in its order when they are all spheres
-    // (else none, and roundedAllSpheres_ false), the markers, the lines and chords as lines_ holds them.
-    std::vector<RasterSphere> rasterRounded_;
+    // What the processor draws, kept beside the buffers (32 bytes a sphere, whether or not a frame asks for it):
+    // rounded_'s instances in its order when they are all spheres (else none, and roundedAllSpheres_ false), the
+    // markers alike, the lines and chords as lines_ holds them.
+    std::vector<RasterSphere> rasterSpheres_;
     bool roundedAllSpheres_ = true;
     std::vector<RasterSphere> rasterMarkers_;
     bool markersAllSpheres_ = true;

@@ -61,7 +61,7 @@ inline constexpr double kGoldenMaxDifferingShare = 0.0005;
 // its exact depth in both: at most this share of the pixels differ by more than kGoldenChannelTolerance. The
 // processor takes a line's pixels by OpenGL's rule but decides the first and last pixel by the centres' columns,
 // not the diamonds: in ProcessorRaster.DrawsThePictureOpenGLDraws 76 of its 19,200 pixels differ, all single pixels
-// at some of the 603 segments' ends (0.40 %). 0.5 % leaves 20 pixels for another build's rounding and catches a
+// at some of the 303 segments' 606 ends (0.40 %). 0.5 % leaves 20 pixels for another build's rounding and catches a
 // segment drawn a row off along its length, or one across the near plane left unclipped (173 pixels), let alone a
 // sphere moved or shaded otherwise (its whole outline or area).
 inline constexpr double kProcessorMaxDifferingShare = 0.005;
