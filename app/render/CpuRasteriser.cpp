@@ -79,7 +79,9 @@ struct SphereRow {
     float eyeClipW;
     float clipZ[3];
     float clipW[3];
-    float colour255[3];   // red, green and blue times 255 (clamped after the shading, as a framebuffer does)
+    // Red, green and blue times 255, at least 0 (NaN taken as 0), clamped to 255 after the shading as a framebuffer
+    // clamps. With the sphere's sums finite (spheresBody) the shade is a number, so the cast to int is defined.
+    float colour255[3];
     std::uint32_t alpha;  // the colour's alpha, packed (opaque: no opacity applies)
 };
 
@@ -112,9 +114,9 @@ struct SphereRow {
             const float fragmentDepth = std::clamp(0.5f * clipZ / clipW + 0.5f, 0.0f, 1.0f);
             const float shade = 0.3f + 0.7f * (root * std::sqrt(inverseA));
             const std::uint32_t packed =
-                static_cast<std::uint32_t>(static_cast<int>(within255(in.colour255[0] * shade + 0.5f))) |
-                static_cast<std::uint32_t>(static_cast<int>(within255(in.colour255[1] * shade + 0.5f))) << 8 |
-                static_cast<std::uint32_t>(static_cast<int>(within255(in.colour255[2] * shade + 0.5f))) << 16 |
+                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[0] * shade + 0.5f, 255.0f))) |
+                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[1] * shade + 0.5f, 255.0f))) << 8 |
+                static_cast<std::uint32_t>(static_cast<int>(std::min(in.colour255[2] * shade + 0.5f, 255.0f))) << 16 |
                 in.alpha;
             const float before = depth[x];
             const bool drawn = (x >= from) & (x < to) & (discriminant >= 0.0f) & (t >= 0.0f) & (fragmentDepth < before);
@@ -130,8 +132,12 @@ struct SphereRow {
                                                RasterImage& image, int rowBegin, int rowEnd) {
     const int width = view.width;
     for (const RasterSphere& sphere : spheres) {
-        if (!(sphere.radius > 0.0f) || !std::isfinite(sphere.inverseRadius)) continue;  // nothing to draw
         const glm::vec3 toEye = view.eye - sphere.centre;
+        const glm::vec3 objectEye = sphere.inverseRadius * toEye;
+        const float c = glm::dot(objectEye, objectEye) - 1.0f;
+        // Nothing to draw, or a sphere so small beside its distance or the pixels' rays that float's squares of
+        // them would overflow (a radius of 1e-18 of the scene's units): left out.
+        if (!(sphere.radius > 0.0f) || !(sphere.inverseRadius < 1e18f) || !std::isfinite(c)) continue;
         const float distance = glm::length(toEye);
         const glm::vec4 clipCentre = view.viewProjection * glm::vec4(sphere.centre, 1.0f);
         const float depth = clipCentre.w;       // the centre's distance along the view's axis
@@ -164,7 +170,6 @@ struct SphereRow {
         }
         if (columnBegin >= columnEnd || rowFrom >= rowTo) continue;
         SphereRow row{};
-        const glm::vec3 objectEye = sphere.inverseRadius * toEye;
         for (int k = 0; k < 3; ++k) {
             row.perPixel[k] = view.rayPerPixelX[k];
             row.objectEye[k] = objectEye[k];
@@ -172,11 +177,13 @@ struct SphereRow {
             row.clipW[k] = view.clipW[k];
         }
         row.inverseRadius = sphere.inverseRadius;
-        row.c = glm::dot(objectEye, objectEye) - 1.0f;
+        row.c = c;
         row.eyeClipZ = view.eyeClip.x;
         row.eyeClipW = view.eyeClip.y;
-        for (std::size_t channel = 0; channel < 3; ++channel) row.colour255[channel] = sphere.colour[channel] * 255.0f;
-        row.alpha = packColour({0.0f, 0.0f, 0.0f, sphere.colour[3]});
+        for (std::size_t channel = 0; channel < 3; ++channel) {
+            row.colour255[channel] = std::max(0.0f, sphere.colour[channel]) * 255.0f;
+        }
+        row.alpha = static_cast<std::uint32_t>(static_cast<int>(within255(sphere.colour[3] * 255.0f + 0.5f))) << 24;
         for (int y = rowFrom; y < rowTo; ++y) {
             const glm::vec3 rowRay =
                 view.rayAtOrigin + (static_cast<float>(y) + 0.5f) * view.rayPerPixelY + 0.5f * view.rayPerPixelX;
