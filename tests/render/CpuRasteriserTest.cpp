@@ -30,6 +30,16 @@ render::Camera lookingAt(const Point& target, const Eigen::Vector3d& fromDirecti
     return test::cameraLookingAt(target + distance * fromDirection.normalized(), target, fovDeg, bounds);
 }
 
+// Looking at the origin from `eye`, up +y, with the given near and far planes.
+render::Camera towardOrigin(const glm::dvec3& eye, double nearPlane, double farPlane) {
+    render::Camera camera;
+    camera.eye = eye;
+    camera.target = {0.0, 0.0, 0.0};
+    camera.nearPlane = nearPlane;
+    camera.farPlane = farPlane;
+    return camera;
+}
+
 std::vector<std::unique_ptr<Shape>> sphereCrowd(int count, double spread, double smallest, double largest,
                                                 unsigned seed) {
     std::mt19937_64 rng(seed);
@@ -74,29 +84,14 @@ TEST(ProcessorRaster, SpheresCoverExactlyThePixelsWhoseRaysHitThem) {
     }
 }
 
-// Markers (Renderer::setMarkers) of 1 to 15 pixels, and a sphere around the eye (seen from inside: every pixel).
-TEST(ProcessorRaster, MarkersAndASphereAroundTheEyeCoverTheirPixels) {
+// A sphere around the eye (a marker there): seen from inside, every pixel is its far side.
+TEST(ProcessorRaster, ASphereAroundTheEyeCoversEveryPixel) {
     DirectRenderer renderer(kWidth, kHeight);
     renderer.setProcessorRaster(true);
-    std::vector<std::unique_ptr<Shape>> spheres;
-    for (int k = 0; k < 12; ++k) {
-        spheres.push_back(std::make_unique<Sphere>(Point(-5.5 + 1.0 * k, 1.5 * std::sin(k), 0.0), 0.05 + 0.06 * k));
-    }
-    const render::Camera camera =
-        lookingAt(Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.2, 1.0), 16.0, 40.0, boundsOf(spheres));
     const render::Anchor anchor{Point(0.0, 0.0, 0.0)};
-    std::vector<render::ShapeInstance> markers;
-    for (const auto& sphere : spheres) {
-        const auto& s = static_cast<const Sphere&>(*sphere);
-        markers.push_back(render::sphereInstance(s.center(), s.radius(), anchor, render::kHighlight));
-    }
-    const snapshot::Image image = renderer.draw(camera, anchor, {}, render::LineBatch(anchor), markers);
-    ASSERT_TRUE(renderer.lastFrameOnProcessor());
-    const test::ExactCoverage engine(spheres, camera, kWidth, kHeight);
-    test::expectCoversExactly(image, engine);
-    EXPECT_GT(engine.hits(), 500);
-
-    const Point eye(camera.eye.x, camera.eye.y, camera.eye.z);
+    const Point eye(3.0, 2.0, 16.0);
+    const render::Camera camera = test::cameraLookingAt(
+        eye, Point(0.0, 0.0, 0.0), 40.0, Eigen::AlignedBox3d(Point(-1.0, -1.0, -1.0), Point(1.0, 1.0, 1.0)));
     const std::vector<render::ShapeInstance> around{render::sphereInstance(eye, 0.5, anchor, render::kHighlight)};
     const snapshot::Image inside = renderer.draw(camera, anchor, {}, render::LineBatch(anchor), around);
     EXPECT_TRUE(renderer.lastFrameOnProcessor());
@@ -158,11 +153,7 @@ TEST(ProcessorRaster, TheNearestWinsInAnyOrder) {
                                               {glm::vec3(0.3f, 0.1f, 1.0f), 0.5f, 1.0f / 0.5f, blue}};
     // Along x at z = 0.75: in front of the red sphere's surface (z <= 0.6), behind the blue one's front (z = 1.5).
     const std::vector<render::LineVertex> lines{{{-1.5f, 0.05f, 0.75f}, green}, {{1.5f, 0.05f, 0.75f}, green}};
-    render::Camera camera;
-    camera.eye = {0.0, 0.0, 6.0};
-    camera.target = {0.0, 0.0, 0.0};
-    camera.nearPlane = 1.0;
-    camera.farPlane = 20.0;
+    const render::Camera camera = towardOrigin({0.0, 0.0, 6.0}, 1.0, 20.0);
     const render::RasterView view = render::rasterView(camera, kWidth, kHeight);
     const auto draw = [&](const std::vector<render::RasterSphere>& given, unsigned threads) {
         render::RasterImage image;
@@ -208,11 +199,7 @@ TEST(ProcessorRaster, AnyNumberOfBandsAndEitherCopyOfTheCodeDrawTheSamePicture) 
         lines.push_back({{5.0f * unit(rng), 4.0f * unit(rng), 3.0f * unit(rng)}, a});
         lines.push_back({{5.0f * unit(rng), 4.0f * unit(rng), 3.0f * unit(rng)}, b});
     }
-    render::Camera camera;
-    camera.eye = {1.0, 2.0, 9.0};
-    camera.target = {0.0, 0.0, 0.0};
-    camera.nearPlane = 0.5;
-    camera.farPlane = 30.0;
+    const render::Camera camera = towardOrigin({1.0, 2.0, 9.0}, 0.5, 30.0);
     const render::RasterView view = render::rasterView(camera, kWidth, kHeight);
     const auto draw = [&](unsigned threads, render::RasterCode code) {
         render::RasterImage image;
@@ -268,11 +255,7 @@ TEST(ProcessorRaster, DegenerateSpheresAndSegmentsAreDrawnOrLeftOutSafely) {
     const std::vector<render::LineVertex> lines{{{0.0f, 0.0f, 0.0f}, red},     {{nan, 0.0f, 0.0f}, red},
                                                 {{infinity, 1.0f, 0.0f}, red}, {{0.0f, -1.0f, 0.0f}, red},
                                                 {{0.2f, 0.2f, 1.0f}, red},     {{0.2f, 0.2f, 1.0f}, red}};
-    render::Camera camera;
-    camera.eye = {0.0, 0.0, 5.0};
-    camera.target = {0.0, 0.0, 0.0};
-    camera.nearPlane = 1.0;
-    camera.farPlane = 20.0;
+    const render::Camera camera = towardOrigin({0.0, 0.0, 5.0}, 1.0, 20.0);
     render::RasterImage image;
     render::rasterise({spheres, {}, lines}, render::rasterView(camera, kWidth, kHeight), {0.0f, 0.0f, 0.0f, 1.0f},
                       image, 2);

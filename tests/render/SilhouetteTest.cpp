@@ -261,7 +261,7 @@ TEST(SmallShapeSilhouettes, SpheresAndOnlySpheresAreSphereInstances) {
 }
 
 // Event markers and handles (Renderer::setMarkers) go through the quad program alone, whatever their size:
-// small ones too cover exactly the pixels of their spheres.
+// small ones too cover exactly the pixels of their spheres; so they do drawn on the processor.
 TEST(MarkerSilhouettes, SmallAndLargeMarkersCoverExactlyThePixelsOfTheirSpheres) {
     DirectRenderer renderer(kWidth, kHeight);
     renderer.setPointPixels(6.0f);
@@ -279,10 +279,15 @@ TEST(MarkerSilhouettes, SmallAndLargeMarkersCoverExactlyThePixelsOfTheirSpheres)
         const auto& s = static_cast<const Sphere&>(*sphere);
         markers.push_back(render::sphereInstance(s.center(), s.radius(), anchor, render::kHighlight));
     }
-    const snapshot::Image image = renderer.draw(camera, anchor, {}, render::LineBatch(anchor), markers);
     const test::ExactCoverage engine(spheres, camera, kWidth, kHeight);
-    test::expectCoversExactly(image, engine);
     EXPECT_GT(engine.hits(), 500);
+    for (const bool processor : {false, true}) {  // by OpenGL, and on the processor (render/CpuRasteriser)
+        SCOPED_TRACE(processor ? "on the processor" : "by OpenGL");
+        renderer.setProcessorRaster(processor);
+        const snapshot::Image image = renderer.draw(camera, anchor, {}, render::LineBatch(anchor), markers);
+        EXPECT_EQ(renderer.lastFrameOnProcessor(), processor);
+        test::expectCoversExactly(image, engine);
+    }
 }
 
 }  // namespace
