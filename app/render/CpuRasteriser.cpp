@@ -52,17 +52,19 @@ void RasterImage::resize(int width, int height) {
 
 namespace {
 
-// v within [0, 255], NaN taken as 0 (a NaN would make the cast to int undefined).
-inline float within255(float v) { return std::min(std::max(0.0f, v), 255.0f); }  // std::max(0, NaN) is 0
+// A channel's value in [0, 1] as its byte of an RGBA8 pixel, at byte `channel`: clamped, times 255, rounded; a NaN
+// as 0 (it would make the cast to int undefined; std::max(0, NaN) is 0).
+inline std::uint32_t packedChannel(float unit, int channel) {
+    const float scaled = std::min(std::max(0.0f, unit * 255.0f + 0.5f), 255.0f);
+    return static_cast<std::uint32_t>(static_cast<int>(scaled)) << (8 * channel);
+}
 
 }  // namespace
 
 std::uint32_t packColour(const Colour& colour) {
     std::uint32_t packed = 0;
-    for (std::size_t channel = 0; channel < 4; ++channel) {
-        packed |= static_cast<std::uint32_t>(static_cast<int>(within255(colour[channel] * 255.0f + 0.5f)))
-                  << (8 * channel);
-    }
+    for (int channel = 0; channel < 4; ++channel)
+        packed |= packedChannel(colour[static_cast<std::size_t>(channel)], channel);
     return packed;
 }
 
@@ -183,7 +185,7 @@ struct SphereRow {
         for (std::size_t channel = 0; channel < 3; ++channel) {
             row.colour255[channel] = std::max(0.0f, sphere.colour[channel]) * 255.0f;
         }
-        row.alpha = static_cast<std::uint32_t>(static_cast<int>(within255(sphere.colour[3] * 255.0f + 0.5f))) << 24;
+        row.alpha = packedChannel(sphere.colour[3], 3);
         for (int y = rowFrom; y < rowTo; ++y) {
             const glm::vec3 rowRay =
                 view.rayAtOrigin + (static_cast<float>(y) + 0.5f) * view.rayPerPixelY + 0.5f * view.rayPerPixelX;
