@@ -244,6 +244,10 @@ void Octree::freeze() {
     const CellBounds root = inflated(rootBounds_, margin_);
     coordinateScale_ = largestCoordinate(root);
     prefetch_ = blocks_.size() * sizeof(SphereBlock) > kPrefetchBytes;
+    constexpr std::size_t kReadAheadBlocks = kPrefilterFixedLanes / SphereBlock::kWidth;
+    readAheadBefore_ = prefetch_ || blocks_.size() < kReadAheadBlocks
+                           ? 0
+                           : static_cast<std::uint32_t>(blocks_.size() - kReadAheadBlocks + 1);
     buildGrid();
 }
 

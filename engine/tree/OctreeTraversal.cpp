@@ -2,7 +2,9 @@
 #include "tree/Octree.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace dropscope {
@@ -29,7 +31,10 @@ struct Octree::Traversal {
 
     // The exact distance of one shape, offered to the best hit.
     void testExactly(ShapeId id, double distance) {
+        const double before = hit.distance;
         hit.offer(id, distance);
+        // The prefilter's limit follows the best distance; set here, where it changes, not in every cell.
+        if (hit.distance != before) prefilterRay.setBest(hit.distance);
         if (record) {
             record->shapesTested.push_back(id);
             ++record->distanceEvaluations;
@@ -40,13 +45,13 @@ struct Octree::Traversal {
     // then every other shape exactly.
     void testShapes(const Cell& cell) {
         if (cell.sphereCount > 0) {
-            PrefilterRay& ray = prefilterRay;
+            const PrefilterRay& ray = prefilterRay;
             for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
-                ray.setBest(hit.distance);
                 const std::uint32_t block = cell.firstBlock + first / SphereBlock::kWidth;
                 const ShapeId* ids = tree.sphereIds_.data() + std::size_t{block} * SphereBlock::kWidth;
-                for (std::uint64_t candidates = sphereCandidates(
-                         tree.blocks_.data() + block, std::min<std::uint32_t>(cell.sphereCount - first, 64), ray);
+                const unsigned count = std::min<std::uint32_t>(cell.sphereCount - first, 64);
+                for (std::uint64_t candidates =
+                         sphereCandidates(tree.blocks_.data() + block, count, block < tree.readAheadBefore_, ray);
                      candidates != 0; candidates &= candidates - 1) {
                     const ShapeId id = ids[__builtin_ctzll(candidates)];
                     testExactly(id, tree.packedSphere(id).distanceToSurface(p, d));
@@ -165,16 +170,24 @@ struct Octree::Traversal {
             const double offset = low[axis] + tree.gridCell_ * (index[axis] + upper[axis]) - p[axis];
             // offset 0 crosses at 0 also when d[axis] is subnormal (an infinite inverse; 0 x inf is NaN).
             const double at = offset == 0.0 ? 0.0 : offset * inverse[axis];
-            return index[axis] == lastIndex[axis] ? kInfinity : at;
+            // +inf in the last cell, chosen by masking bits: as a ?: GCC 12 compiles it to a jump, whose way
+            // depends on where each ray runs out of cells on each axis.
+            const std::uint64_t last = 0 - static_cast<std::uint64_t>(index[axis] == lastIndex[axis]);
+            return std::bit_cast<double>((std::bit_cast<std::uint64_t>(at) & ~last) |
+                                         (std::bit_cast<std::uint64_t>(kInfinity) & last));
         };
         for (int axis = 0; axis < 3; ++axis) {
             const double at = d[axis] == 0.0 ? p[axis] : p[axis] + tEnter * d[axis];
             // Truncation is the floor here: a negative value is clamped to the first cell either way.
             const double cell = (at - low[axis]) * tree.gridCellInverse_;
             index[axis] = cell < 0.0 ? 0 : cell >= side ? side - 1 : static_cast<int>(cell);
-            step[axis] = d[axis] > 0.0 ? 1 : -1;
-            upper[axis] = d[axis] > 0.0 ? 1 : 0;
-            lastIndex[axis] = d[axis] > 0.0 ? side - 1 : d[axis] < 0.0 ? 0 : index[axis];
+            // From the signs of d as 0s and 1s rather than ?:, which GCC 12 compiles to jumps a random ray
+            // takes either way.
+            const int forward = static_cast<int>(d[axis] > 0.0);
+            const int still = static_cast<int>(d[axis] == 0.0);
+            step[axis] = 2 * forward - 1;
+            upper[axis] = forward;
+            lastIndex[axis] = forward * (side - 1) + still * index[axis];
             next[axis] = planeAhead(axis);
         }
         double t = tEnter;
@@ -222,8 +235,8 @@ struct Octree::Traversal {
         if (!span) return;
         // The prefilter's ray starts where this one enters the root, so its single-precision coordinates are
         // those of points within the frame's unit cube around the root's centre.
-        prefilterRay = PrefilterRay::make(p, d, span->first, tree.prefilterFrame_, tree.packedReach_,
-                                          kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_));
+        prefilterRay.aim(p, d, span->first, tree.prefilterFrame_, tree.packedReach_,
+                         kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_));
         // The debugger's record lists every level's cells, so it takes the walk from the root.
         if (tree.gridLevel_ > 0 && !record) {
             walkGrid(span->first, span->second);

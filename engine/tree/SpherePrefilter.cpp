@@ -42,21 +42,24 @@ void SphereBlock::clear(unsigned lane) {
     radius[lane] = 0.0f;
 }
 
-PrefilterRay PrefilterRay::make(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame,
-                                double packedReach, double doubleSlack) {
-    const Eigen::Vector3d origin = (p + shift * d.vector() - frame.anchor) * frame.scale;
-    const double extent = origin.cwiseAbs().maxCoeff() + packedReach * frame.scale;  // X
-    PrefilterRay ray{
-        {0.0f, 0.0f, 0.0f}, {static_cast<float>(d.x()), static_cast<float>(d.y()), static_cast<float>(d.z())},
-        kFloatInfinity,     floatAtMost(-shift * frame.scale),
-        kFloatInfinity,     doubleSlack - shift,
-        frame.scale};
+void PrefilterRay::aim(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame,
+                       double packedReach, double doubleSlack) {
+    const Eigen::Vector3d shifted = (p + shift * d.vector() - frame.anchor) * frame.scale;
+    const double extent = shifted.cwiseAbs().maxCoeff() + packedReach * frame.scale;  // X
+    for (int axis = 0; axis < 3; ++axis) direction[axis] = static_cast<float>(d[axis]);
+    behind = floatAtMost(-shift * frame.scale);
+    limit = kFloatInfinity;
+    limitOffset = doubleSlack - shift;
+    scale = frame.scale;
     // Outside the range every sphere passes: from the anchor with an infinite slack, every packed lane passes
     // each comparison.
-    if (!(extent <= kPrefilterLargestExtent && extent >= kPrefilterSmallestExtent)) return ray;
-    for (int axis = 0; axis < 3; ++axis) ray.origin[axis] = static_cast<float>(origin[axis]);
-    ray.slack = floatAtLeast(doubleSlack * frame.scale + kPrefilterFloatSlackUnits * kFloatRoundoff * extent);
-    return ray;
+    if (!(extent <= kPrefilterLargestExtent && extent >= kPrefilterSmallestExtent)) {
+        for (float& coordinate : origin) coordinate = 0.0f;
+        slack = kFloatInfinity;
+        return;
+    }
+    for (int axis = 0; axis < 3; ++axis) origin[axis] = static_cast<float>(shifted[axis]);
+    slack = floatAtLeast(doubleSlack * frame.scale + kPrefilterFloatSlackUnits * kFloatRoundoff * extent);
 }
 
 namespace {
@@ -107,8 +110,9 @@ __attribute__((target("avx2,fma"))) inline __m256 both(const float* low, const f
 
 }  // namespace
 
-// Two blocks a step, one in each half of the registers; with an odd number of blocks the last step tests
-// the last block twice (its upper half's bits lie beyond count).
+// Two blocks a step, one in each half of the registers. The pairs' loads do not wait on a test of which
+// block is the last; with an odd number of blocks the last step tests the last block twice (its upper half's
+// bits lie beyond count).
 __attribute__((target("avx2,fma"))) std::uint64_t sphereCandidatesAvx2(const SphereBlock* blocks, unsigned count,
                                                                        const PrefilterRay& ray) {
     const __m256 ox = _mm256_set1_ps(ray.origin[0]);
@@ -120,10 +124,7 @@ __attribute__((target("avx2,fma"))) std::uint64_t sphereCandidatesAvx2(const Sph
     const __m256 slack = _mm256_set1_ps(ray.slack);
     const __m256 behind = _mm256_set1_ps(ray.behind);
     const __m256 limit = _mm256_set1_ps(ray.limit);
-    std::uint64_t mask = 0;
-    for (unsigned first = 0; first < count; first += 2 * SphereBlock::kWidth) {
-        const SphereBlock& low = blocks[first / SphereBlock::kWidth];
-        const SphereBlock& high = first + SphereBlock::kWidth < count ? (&low)[1] : low;
+    const auto accept = [&](const SphereBlock& low, const SphereBlock& high) __attribute__((target("avx2,fma"))) {
         const __m256 x = _mm256_sub_ps(both(low.x, high.x), ox);
         const __m256 y = _mm256_sub_ps(both(low.y, high.y), oy);
         const __m256 z = _mm256_sub_ps(both(low.z, high.z), oz);
@@ -136,7 +137,18 @@ __attribute__((target("avx2,fma"))) std::uint64_t sphereCandidatesAvx2(const Sph
         __m256 ok = _mm256_cmp_ps(perpendicular2, _mm256_mul_ps(reach, reach), _CMP_LE_OQ);
         ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_add_ps(b, reach), behind, _CMP_GE_OQ));
         ok = _mm256_and_ps(ok, _mm256_cmp_ps(_mm256_sub_ps(b, reach), limit, _CMP_LE_OQ));
-        mask |= static_cast<std::uint64_t>(_mm256_movemask_ps(ok)) << first;
+        return static_cast<std::uint64_t>(_mm256_movemask_ps(ok));
+    };
+    constexpr unsigned kPair = 2 * SphereBlock::kWidth;
+    std::uint64_t mask = 0;
+    unsigned first = 0;
+    for (; first + SphereBlock::kWidth < count; first += kPair) {
+        const SphereBlock* pair = blocks + first / SphereBlock::kWidth;
+        mask |= accept(pair[0], pair[1]) << first;
+    }
+    if (first < count) {
+        const SphereBlock& last = blocks[first / SphereBlock::kWidth];
+        mask |= accept(last, last) << first;
     }
     return mask;
 }
@@ -154,8 +166,9 @@ const Candidates kCandidates = cpuHasAvx2() ? sphereCandidatesAvx2 : sphereCandi
 
 }  // namespace
 
-std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray) {
-    const std::uint64_t mask = kCandidates(blocks, count, ray);
+std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, bool readAhead, const PrefilterRay& ray) {
+    const bool fixed = readAhead && count <= kPrefilterFixedLanes;
+    const std::uint64_t mask = kCandidates(blocks, fixed ? kPrefilterFixedLanes : count, ray);
     return count >= 64 ? mask : mask & ((std::uint64_t{1} << count) - 1);
 }
 

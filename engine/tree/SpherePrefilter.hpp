@@ -89,7 +89,15 @@ struct PrefilterRay {
     // The ray p + t d shifted to t = shift, for spheres packed in `frame` whose |centre - anchor|_inf + R is at
     // most `packedReach` (scene units, like `doubleSlack`, above). The limit starts at +inf.
     static PrefilterRay make(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame,
-                             double packedReach, double doubleSlack);
+                             double packedReach, double doubleSlack) {
+        PrefilterRay ray;
+        ray.aim(p, d, shift, frame, packedReach, doubleSlack);
+        return ray;
+    }
+    // make() in place: the traversal's ray is read field by field right after, which a copy of the whole
+    // struct would make wait on the stores of its parts (a store-forwarding stall).
+    void aim(const Point& p, const Direction& d, double shift, const PrefilterFrame& frame, double packedReach,
+             double doubleSlack);
     // Sets the limit for a best distance `best` (from p) so far.
     void setBest(double best) { limit = floatAtLeast((best + limitOffset) * scale); }
 };
@@ -99,7 +107,17 @@ struct PrefilterRay {
 // wholly behind the origin and not wholly beyond the best. Every sphere the exact test would let win is among
 // them (docs/octree.md). Runs 8 lanes at once with AVX2 when the CPU has it (runtime dispatch), 4 with SSE2
 // otherwise; the results may differ only in rounding far inside the slack.
-std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
+//
+//
+// With `readAhead`, kPrefilterFixedLanes spheres may be read from `blocks`, past the first count (the octree's
+// next cells' blocks, in cache in a small tree): then with count at most that the test runs over exactly
+// kPrefilterFixedLanes lanes and drops the bits beyond count. Cells hold varying numbers of spheres, and a loop
+// that ran as many steps as each cell needs would end where the processor mispredicts it (docs/performance.md).
+inline constexpr unsigned kPrefilterFixedLanes = 32;
+std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, bool readAhead, const PrefilterRay& ray);
+inline std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray) {
+    return sphereCandidates(blocks, count, false, ray);
+}
 
 // The two implementations behind sphereCandidates, for tests (their bits beyond `count` are unspecified).
 // The AVX2 one may run only when cpuHasAvx2().

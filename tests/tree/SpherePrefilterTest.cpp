@@ -118,7 +118,8 @@ TEST(SpherePrefilter, Avx2NeverRejectsAWinningSphere) {
 }
 
 // Unused lanes and lanes beyond `count` are never candidates; a block run of 64 spheres maps lane k to bit k,
-// for every count (odd numbers of blocks included, which the AVX2 version pairs with themselves).
+// for every count (odd numbers of blocks included, which the AVX2 version pairs with themselves), also when
+// the test may read ahead over kPrefilterFixedLanes lanes (the candidates beyond count there are dropped).
 TEST(SpherePrefilter, LanesMapToBits) {
     SphereBlock blocks[16];
     const PrefilterFrame frame = PrefilterFrame::around(Point(30.0, 1.0, -2.0), 40.0);
@@ -134,6 +135,7 @@ TEST(SpherePrefilter, LanesMapToBits) {
     for (unsigned count = 1; count <= 64; ++count) {
         const std::uint64_t within = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
         EXPECT_EQ(sphereCandidates(blocks, count, ray), expected & within) << count;
+        EXPECT_EQ(sphereCandidates(blocks, count, true, ray), expected & within) << count;
         EXPECT_EQ(sphereCandidatesSse2(blocks, count, ray) & within, expected & within) << count;
         if (cpuHasAvx2()) {
             EXPECT_EQ(sphereCandidatesAvx2(blocks, count, ray) & within, expected & within) << count;
