@@ -99,51 +99,42 @@ Options parseOptions(int argc, char** argv) {
 }
 
 struct Timed {
-    double seconds = std::numeric_limits<double>::infinity();  // best of the repeats
+    double seconds = 0.0;  // the sum over the chunks of the best of the repeats (trace)
     std::vector<RayHit> hits;
     double mraysPerSecond() const { return static_cast<double>(hits.size()) / seconds * 1e-6; }
 };
 
-template <class FirstHit>
-Timed trace(const std::vector<Ray>& rays, std::size_t count, int repeat, FirstHit&& firstHit) {
-    Timed timed;
-    timed.hits.resize(std::min(count, rays.size()));
-    for (int r = 0; r < repeat; ++r) {
-        const Stopwatch watch;
-        for (std::size_t i = 0; i < timed.hits.size(); ++i) timed.hits[i] = firstHit(rays[i]);
-        timed.seconds = std::min(timed.seconds, watch.seconds());
-    }
-    return timed;
-}
-
-// Rays a peer traces in one go before the next peer takes its turn (traceInterleaved).
+// Rays a peer traces in one go before the next peer takes its turn (trace).
 constexpr std::size_t kChunkRays = 100000;
 
-// The same rays' first hits by several peers, in turns so that the machine's slow spells (other guests on the
-// host) fall on them alike: each chunk of kChunkRays rays is traced `repeat` times by every peer in turn, and
-// a peer's time is the sum over the chunks of its best time for each. A spell then spoils one attempt at one
-// chunk rather than one peer's whole figure. The peers' calls stay inline in the timed loops.
+// The first hits of the first `count` rays by one or more peers, in turns so that the machine's slow spells
+// (other guests on the host) fall on them alike: each chunk of kChunkRays rays is traced `repeat` times by every
+// peer in turn, the first of them changing from chunk to chunk, and a peer's time is the sum over the chunks of
+// its best time for each. A spell then spoils one attempt at one chunk rather than one peer's whole figure. The
+// peers' calls stay inline in the timed loops.
 template <class... FirstHit>
-std::array<Timed, sizeof...(FirstHit)> traceInterleaved(const std::vector<Ray>& rays, int repeat, FirstHit&&... peers) {
+std::array<Timed, sizeof...(FirstHit)> trace(const std::vector<Ray>& rays, std::size_t count, int repeat,
+                                             FirstHit&&... peers) {
     constexpr std::size_t kPeers = sizeof...(FirstHit);
+    const std::size_t traced = std::min(count, rays.size());
     std::array<Timed, kPeers> timed;
-    for (Timed& peer : timed) {
-        peer.hits.resize(rays.size());
-        peer.seconds = 0.0;
-    }
-    for (std::size_t begin = 0; begin < rays.size(); begin += kChunkRays) {
-        const std::size_t end = std::min(rays.size(), begin + kChunkRays);
+    for (Timed& peer : timed) peer.hits.resize(traced);
+    for (std::size_t begin = 0, chunk = 0; begin < traced; begin += kChunkRays, ++chunk) {
+        const std::size_t end = std::min(traced, begin + kChunkRays);
         std::array<double, kPeers> best;
         best.fill(std::numeric_limits<double>::infinity());
+        // Peer k's attempt at this chunk.
+        const auto attempt = [&](std::size_t k, auto& firstHit) {
+            const Stopwatch watch;
+            for (std::size_t i = begin; i < end; ++i) timed[k].hits[i] = firstHit(rays[i]);
+            best[k] = std::min(best[k], watch.seconds());
+        };
         for (int r = 0; r < repeat; ++r) {
-            std::size_t k = 0;
-            const auto attempt = [&](auto& firstHit) {
-                const Stopwatch watch;
-                for (std::size_t i = begin; i < end; ++i) timed[k].hits[i] = firstHit(rays[i]);
-                best[k] = std::min(best[k], watch.seconds());
-                ++k;
-            };
-            (attempt(peers), ...);
+            for (std::size_t turn = 0; turn < kPeers; ++turn) {
+                const std::size_t k = (chunk + turn) % kPeers;
+                std::size_t peer = 0;
+                ((peer++ == k ? attempt(k, peers) : void()), ...);
+            }
         }
         for (std::size_t k = 0; k < kPeers; ++k) timed[k].seconds += best[k];
     }
@@ -231,15 +222,15 @@ OrderResult runOrder(const std::string& name, const std::vector<Ray>& rays, cons
     std::cerr << "  " << name << ": octree, embree float and embree user in turns" << std::flush;
     const auto ft = static_cast<float>(floatTnear);
     const std::size_t testsBefore = embreeUser.sphereTests();
-    const auto [byOctree, byFloat, byUser] = traceInterleaved(
-        rays, options.repeat, [&](const Ray& ray) { return octree.firstHit(ray.origin, ray.direction); },
+    const auto [byOctree, byFloat, byUser] = trace(
+        rays, rays.size(), options.repeat, [&](const Ray& ray) { return octree.firstHit(ray.origin, ray.direction); },
         [&](const Ray& ray) { return embreeFloat.firstHit(ray, ft); },
         [&](const Ray& ray) { return embreeUser.firstHit(ray); });
     result.userTestsPerRay = static_cast<double>(embreeUser.sphereTests() - testsBefore) /
                              static_cast<double>(rays.size() * static_cast<std::size_t>(options.repeat));
     if (bruteRays > 0) {
         std::cerr << ", brute force" << std::flush;
-        const Timed byBrute = trace(rays, bruteRays, options.repeat, [&](const Ray& ray) {
+        const auto [byBrute] = trace(rays, bruteRays, options.repeat, [&](const Ray& ray) {
             return bruteForceFirstHit(octree.shapes(), ray.origin, ray.direction);
         });
         result.bruteRays = byBrute.hits.size();

@@ -198,6 +198,7 @@ void Octree::placeTopDown(std::uint32_t node, const CellBounds& bounds, std::vec
 }
 
 void Octree::freeze() {
+    readAheadBefore_ = 0;
     cells_.clear();
     blocks_.clear();
     exactSpheres_.clear();
@@ -248,9 +249,10 @@ void Octree::freeze() {
     building_ = {};
     const CellBounds root = inflated(rootBounds_, margin_);
     coordinateScale_ = largestCoordinate(root);
-    prefetch_ = blocks_.size() * sizeof(SphereBlock) > kPrefetchBytes;
+    const std::size_t blockBytes = blocks_.size() * sizeof(SphereBlock);
+    prefetch_ = blockBytes > kPrefetchBytes;
     constexpr std::size_t kReadAheadBlocks = kPrefilterFixedLanes / SphereBlock::kWidth;
-    readAheadBefore_ = blocks_.size() * sizeof(SphereBlock) > kReadAheadBytes || blocks_.size() < kReadAheadBlocks
+    readAheadBefore_ = blockBytes > kReadAheadBytes || blocks_.size() < kReadAheadBlocks
                            ? 0
                            : static_cast<std::uint32_t>(blocks_.size() - kReadAheadBlocks + 1);
     buildGrid();

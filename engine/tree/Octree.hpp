@@ -214,8 +214,9 @@ private:
     PrefilterFrame prefilterFrame_;  // around the root
     double packedReach_ = 0.0;       // the largest PrefilterFrame::reach of a packed sphere
     bool prefetch_ = false;          // whether the traversal prefetches children (a tree too large for the caches)
-    // Cells whose first block lies before this one may let the prefilter read kPrefilterFixedLanes spheres from
-    // it, past their own (sphereCandidates' readAhead); 0 in a tree whose blocks pass a core's L2.
+    // A cell's group of at most 64 spheres whose first block lies before this one may let the prefilter read
+    // kPrefilterFixedLanes spheres from it, past its own (sphereCandidates' readAhead); 0 in a tree whose
+    // blocks pass a core's L2.
     std::uint32_t readAheadBefore_ = 0;
     int gridLevel_ = 0;
     Point gridLow_ = Point::Zero();  // the root's lowest corner

@@ -34,7 +34,7 @@ inline constexpr double kPrefilterSmallestExtent = 0x1p-40;
 // A float no smaller than v, within a few units of single rounding (infinite beyond the largest float; the
 // lowest float below it). v is widened by 4 units of single rounding and 2 of the smallest subnormal, more than
 // the conversion to the nearest float can take back at any magnitude. Inline and without a branch on the
-// rounding: the traversal sets a limit in every cell it tests.
+// rounding: the traversal sets a limit each time its best hit changes.
 inline float floatAtLeast(double v) {
     constexpr double kFloatMax = std::numeric_limits<float>::max();
     if (v < -kFloatMax) return -std::numeric_limits<float>::max();
@@ -107,7 +107,6 @@ struct PrefilterRay {
 // wholly behind the origin and not wholly beyond the best. Every sphere the exact test would let win is among
 // them (docs/octree.md). Runs 8 lanes at once with AVX2 when the CPU has it (runtime dispatch), 4 with SSE2
 // otherwise; the results may differ only in rounding far inside the slack.
-//
 //
 // With `readAhead`, kPrefilterFixedLanes spheres may be read from `blocks`, past the first count (the octree's
 // next cells' blocks, in cache in a small tree): then with count at most that the test runs over exactly

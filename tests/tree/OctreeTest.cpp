@@ -235,6 +235,37 @@ TEST(Octree, TopGridWalkRunsToTheRootFace) {
     EXPECT_TRUE(found);
 }
 
+// In a small tree the prefilter reads on past a cell's own sphere blocks into the next cells' (docs/octree.md,
+// "A fixed number of lanes in a small tree"), never past the end of the block array: clouds of leaves of at most
+// 4 spheres, a block each, so that cells start at every distance from the array's end, traced at every droplet
+// from outside and from its centre outwards. Under AddressSanitizer a read past the array fails here.
+TEST(Octree, ThePrefilterReadsAheadNoFurtherThanTheLastBlock) {
+    for (int count = 20; count <= 120; count += 5) {
+        SCOPED_TRACE(::testing::Message() << count << " droplets");
+        Rng rng(static_cast<unsigned>(500 + count));
+        std::vector<std::unique_ptr<Shape>> shapes;
+        for (int i = 0; i < count; ++i) {
+            const double radius = testing::uniform(rng, 0.02, 0.1);
+            shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 1.0), radius));
+        }
+        const Octree tree(std::move(shapes), OctreeSettings{6, 4});
+        std::vector<Ray> rays;
+        for (const auto& shape : tree.shapes()) {
+            const Point centre = testing::boundsCenter(*shape);
+            const Point from = centre + 3.0 * testing::randomDirection(rng).vector();
+            rays.push_back({from, Direction(centre - from)});
+            rays.push_back({centre, testing::randomDirection(rng)});
+        }
+        int hits = 0;
+        for (const Ray& ray : rays) {
+            const RayHit expected = bruteForceFirstHit(tree.shapes(), ray.origin, ray.direction);
+            hits += expected ? 1 : 0;
+            expectSameHit(tree.firstHit(ray.origin, ray.direction), expected);
+        }
+        EXPECT_GE(hits, 2 * count);
+    }
+}
+
 TEST(Octree, NoTopGridWhereALevelHasLeaves) {
     std::vector<std::unique_ptr<Shape>> shapes;
     shapes.push_back(std::make_unique<Sphere>(Point(-7, -7, -7), 0.5));
