@@ -154,6 +154,13 @@ private:
     // a valid direction and p finite.
     std::optional<std::pair<double, double>> rootSpan(const Point& p, const Direction& d,
                                                       const Eigen::Vector3d& inverse) const;
+    // Whether p lies strictly inside the inflated root that rootSpan clips to. Then rootSpan gives a span
+    // from exactly 0 for every valid direction: on each axis d moves along, the two faces' crossings have
+    // opposite signs and are never NaN (neither offset is 0).
+    bool strictlyInsideRoot(const Point& p) const {
+        return (p.array() > rootBounds_.min().array() - margin_).all() &&
+               (p.array() < rootBounds_.max().array() + margin_).all();
+    }
     void freeze();
     void buildGrid();
     void thaw();

@@ -151,7 +151,7 @@ struct Octree::Traversal {
     // own shapes, then the grid's cells the ray crosses over [tEnter, tExit], in order (a 3D DDA: the next
     // cell is across the nearest of the three planes ahead; two or three at once through an edge or
     // corner), each visited as visit() would, stopping once the best hit lies before the next cell.
-    void walkGrid(double tEnter, double tExit) {
+    void walkGrid(const Eigen::Vector3d& start, double tEnter, double tExit) {
         const Cell& root = tree.cells_[0];
         if (root.size() > 0) testShapes(root);
         const int level = tree.gridLevel_;
@@ -178,9 +178,8 @@ struct Octree::Traversal {
                                          (std::bit_cast<std::uint64_t>(kInfinity) & last));
         };
         for (int axis = 0; axis < 3; ++axis) {
-            const double at = d[axis] == 0.0 ? p[axis] : p[axis] + tEnter * d[axis];
             // Truncation is the floor here: a negative value is clamped to the first cell either way.
-            const double cell = (at - low[axis]) * tree.gridCellInverse_;
+            const double cell = (start[axis] - low[axis]) * tree.gridCellInverse_;
             index[axis] = cell < 0.0 ? 0 : cell >= side ? side - 1 : static_cast<int>(cell);
             // From the signs of d as 0s and 1s rather than ?:, which GCC 12 compiles to jumps a random ray
             // takes either way.
@@ -231,16 +230,28 @@ struct Octree::Traversal {
 
     void run() {
         if (!d || !p.allFinite()) return;
+        const double doubleSlack = kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_);
+        // The debugger's record lists every level's cells, so it takes the walk from the root.
+        const bool fromGrid = tree.gridLevel_ > 0 && !record;
+        if (fromGrid && tree.strictlyInsideRoot(p)) {
+            // The common case (a photon inside the scene): the ray enters the root at t = 0, which is what
+            // rootSpan gives there. Known without 1 / d, the walk's first cell and the prefilter's ray do not
+            // wait on the three divisions, which the processor then overlaps with the first cell's tests.
+            prefilterRay.aim(p, d, 0.0, tree.prefilterFrame_, tree.packedReach_, doubleSlack);
+            inverse = d.vector().cwiseInverse();
+            walkGrid(p, 0.0, tree.rootSpan(p, d, inverse)->second);
+            return;
+        }
         inverse = d.vector().cwiseInverse();
         const std::optional<std::pair<double, double>> span = tree.rootSpan(p, d, inverse);
         if (!span) return;
         // The prefilter's ray starts where this one enters the root, so its single-precision coordinates are
         // those of points within the frame's unit cube around the root's centre.
-        prefilterRay.aim(p, d, span->first, tree.prefilterFrame_, tree.packedReach_,
-                         kPrefilterSlackRelative * (p.cwiseAbs().maxCoeff() + tree.coordinateScale_));
-        // The debugger's record lists every level's cells, so it takes the walk from the root.
-        if (tree.gridLevel_ > 0 && !record) {
-            walkGrid(span->first, span->second);
+        prefilterRay.aim(p, d, span->first, tree.prefilterFrame_, tree.packedReach_, doubleSlack);
+        if (fromGrid) {
+            Eigen::Vector3d start;
+            for (int axis = 0; axis < 3; ++axis) start[axis] = d[axis] == 0.0 ? p[axis] : p[axis] + span->first * d[axis];
+            walkGrid(start, span->first, span->second);
         } else {
             visit(0, tree.rootBounds_.center(), tree.rootHalf_, 0, span->first, span->second);
         }
