@@ -250,7 +250,9 @@ struct Octree::Traversal {
         prefilterRay.aim(p, d, span->first, tree.prefilterFrame_, tree.packedReach_, doubleSlack);
         if (fromGrid) {
             Eigen::Vector3d start;
-            for (int axis = 0; axis < 3; ++axis) start[axis] = d[axis] == 0.0 ? p[axis] : p[axis] + span->first * d[axis];
+            for (int axis = 0; axis < 3; ++axis) {
+                start[axis] = d[axis] == 0.0 ? p[axis] : p[axis] + span->first * d[axis];
+            }
             walkGrid(start, span->first, span->second);
         } else {
             visit(0, tree.rootBounds_.center(), tree.rootHalf_, 0, span->first, span->second);

@@ -105,23 +105,27 @@ struct PrefilterRay {
 // Bit k is set for each of the first `count` (at most 64) spheres of `blocks` that may give a distance in
 // (0, best]: those whose ball of radius R kPrefilterRadiusFactor + slack meets the ray's line, is not
 // wholly behind the origin and not wholly beyond the best. Every sphere the exact test would let win is among
-// them (docs/octree.md). Runs 8 lanes at once with AVX2 when the CPU has it (runtime dispatch), 4 with SSE2
-// otherwise; the results may differ only in rounding far inside the slack.
+// them (docs/octree.md). Runs 16 lanes at once with AVX-512F, 8 with AVX2, 4 with SSE2 otherwise, the widest
+// the CPU has (runtime dispatch); SSE2's results may differ from the others' only in rounding far inside the
+// slack.
 //
 // With `readAhead`, kPrefilterFixedLanes spheres may be read from `blocks`, past the first count (the octree's
 // next cells' blocks, in cache in a small tree): then with count at most that the test runs over exactly
 // kPrefilterFixedLanes lanes and drops the bits beyond count. Cells hold varying numbers of spheres, and a loop
-// that ran as many steps as each cell needs would end where the processor mispredicts it (docs/performance.md).
+// that ran as many steps as each cell needs would end where the processor mispredicts it (docs/octree.md).
 inline constexpr unsigned kPrefilterFixedLanes = 32;
 std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, bool readAhead, const PrefilterRay& ray);
 inline std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray) {
     return sphereCandidates(blocks, count, false, ray);
 }
 
-// The two implementations behind sphereCandidates, for tests (their bits beyond `count` are unspecified).
-// The AVX2 one may run only when cpuHasAvx2().
+// The implementations behind sphereCandidates, for tests (their bits beyond `count` are unspecified). The
+// AVX2 one may run only when cpuHasAvx2(), the AVX-512 one only when cpuHasAvx512(); the AVX-512 one gives
+// the AVX2 one's bits.
 std::uint64_t sphereCandidatesSse2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
 std::uint64_t sphereCandidatesAvx2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
+std::uint64_t sphereCandidatesAvx512(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
 bool cpuHasAvx2();
+bool cpuHasAvx512();
 
 }  // namespace dropscope

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -117,9 +118,43 @@ TEST(SpherePrefilter, Avx2NeverRejectsAWinningSphere) {
     expectConservative(sphereCandidatesAvx2);
 }
 
+TEST(SpherePrefilter, Avx512NeverRejectsAWinningSphere) {
+    if (!cpuHasAvx512()) GTEST_SKIP() << "no AVX-512 on this CPU";
+    expectConservative(sphereCandidatesAvx512);
+}
+
+// The AVX-512 version runs the AVX2 version's operations in the same order on its transposed lanes, so for any
+// count the two give the same bits, down to spheres whose rounding decides.
+TEST(SpherePrefilter, Avx512GivesTheAvx2Bits) {
+    if (!cpuHasAvx512() || !cpuHasAvx2()) GTEST_SKIP() << "no AVX-512 or AVX2 on this CPU";
+    Rng rng(29);
+    int candidates = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Case c = randomCase(rng, i);
+        // 24 spheres around the case's: about its size, within a few radii of it, some on the ray's line.
+        SphereBlock blocks[6];
+        for (unsigned k = 0; k < 24; ++k) {
+            const double radius = c.sphere.radius * testing::uniform(rng, 0.5, 2.0);
+            const Point centre = c.sphere.center + testing::randomPoint(rng, (k % 3 == 0 ? 0.1 : 4.0) * radius);
+            blocks[k / 4].pack(k % 4, SphereGeometry::make(centre, radius), c.frame);
+        }
+        PrefilterRay ray = rayFor(c);
+        ray.setBest(i % 2 == 0 ? kInfinity : c.sphere.distanceToSurface(c.origin, c.direction));
+        for (unsigned count = 1; count <= 24; ++count) {
+            const std::uint64_t within = (std::uint64_t{1} << count) - 1;
+            const std::uint64_t avx2 = sphereCandidatesAvx2(blocks, count, ray) & within;
+            ASSERT_EQ(sphereCandidatesAvx512(blocks, count, ray) & within, avx2) << "case " << i << ", count " << count;
+            if (count == 24) candidates += std::popcount(avx2);
+        }
+    }
+    EXPECT_GT(candidates, 20000 * 24 / 10);  // neither all rejected nor all accepted
+    EXPECT_LT(candidates, 20000 * 24 * 9 / 10);
+}
+
 // Unused lanes and lanes beyond `count` are never candidates; a block run of 64 spheres maps lane k to bit k,
-// for every count (odd numbers of blocks included, which the AVX2 version pairs with themselves), also when
-// the test may read ahead over kPrefilterFixedLanes lanes (the candidates beyond count there are dropped).
+// for every count (odd numbers of blocks included, which the AVX2 version pairs with themselves, and the
+// AVX-512 one's last steps of one to three blocks), also when the test may read ahead over
+// kPrefilterFixedLanes lanes (the candidates beyond count there are dropped).
 TEST(SpherePrefilter, LanesMapToBits) {
     SphereBlock blocks[16];
     const PrefilterFrame frame = PrefilterFrame::around(Point(30.0, 1.0, -2.0), 40.0);
@@ -139,6 +174,9 @@ TEST(SpherePrefilter, LanesMapToBits) {
         EXPECT_EQ(sphereCandidatesSse2(blocks, count, ray) & within, expected & within) << count;
         if (cpuHasAvx2()) {
             EXPECT_EQ(sphereCandidatesAvx2(blocks, count, ray) & within, expected & within) << count;
+        }
+        if (cpuHasAvx512()) {
+            EXPECT_EQ(sphereCandidatesAvx512(blocks, count, ray) & within, expected & within) << count;
         }
     }
 }
