@@ -186,8 +186,8 @@ __attribute__((target("avx512f"))) inline Avx512Spheres transpose(const SphereBl
 }  // namespace
 
 // Four blocks a step, transposed in registers; the same operations in the same order as the AVX2 version,
-// so the two give the same bits. A last step with fewer than four blocks left repeats the last one (the
-// repeats' bits lie beyond count).
+// so the two give the same bits. A last step of fewer than 16 spheres (one to four blocks) fills the lanes
+// of the blocks it lacks with its last block again (their bits lie beyond count).
 __attribute__((target("avx512f"))) std::uint64_t sphereCandidatesAvx512(const SphereBlock* blocks, unsigned count,
                                                                         const PrefilterRay& ray) {
     const __m512 ox = _mm512_set1_ps(ray.origin[0]);
@@ -223,7 +223,7 @@ __attribute__((target("avx512f"))) std::uint64_t sphereCandidatesAvx512(const Sp
     }
     if (first < count) {
         const SphereBlock* rest = blocks + first / SphereBlock::kWidth;
-        const unsigned last = (count - first - 1) / SphereBlock::kWidth;  // 0, 1 or 2
+        const unsigned last = (count - first - 1) / SphereBlock::kWidth;  // the last block's index here, 0-3
         mask |= accept(transpose(rest, rest + std::min(1u, last), rest + std::min(2u, last), rest + last)) << first;
     }
     return mask;

@@ -266,6 +266,61 @@ TEST(Octree, ThePrefilterReadsAheadNoFurtherThanTheLastBlock) {
     }
 }
 
+// A ray from strictly inside the inflated root enters it at exactly +0 whatever its direction, which the walk
+// takes for granted there (it starts from p without waiting on the clip): one ulp inside each face, moving
+// along, across and away from it, with components of +-0 and subnormal ones (whose inverse is infinite).
+TEST(Octree, ARayFromJustInsideTheRootEntersItAtZero) {
+    Rng rng(61);
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int i = 0; i < 600; ++i) {
+        const double radius = testing::uniform(rng, 0.02, 0.06);
+        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 1.0), radius));
+    }
+    const Octree tree(std::move(shapes), OctreeSettings{10, 16});
+    ASSERT_GT(tree.gridLevel(), 0);
+    const Eigen::Array3d low = tree.rootBounds().min().array() - tree.margin();
+    const Eigen::Array3d high = tree.rootBounds().max().array() + tree.margin();
+    const double tiny = std::numeric_limits<double>::denorm_min() * 1e3;
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    int rays = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (const bool upper : {false, true}) {
+            for (int i = 0; i < 40; ++i) {
+                Point p = testing::randomPoint(rng, 0.9);
+                p[axis] = upper ? std::nextafter(high[axis], -kInfinity) : std::nextafter(low[axis], kInfinity);
+                Eigen::Vector3d v = testing::randomDirection(rng).vector();
+                switch (i % 5) {
+                case 0:
+                    v = Eigen::Vector3d::Zero();
+                    v[axis] = i % 2 == 0 ? 1.0 : -1.0;
+                    break;                                           // across the face
+                case 1: v[axis] = i % 2 == 0 ? 0.0 : -0.0; break;    // along it
+                case 2: v[axis] = i % 2 == 0 ? tiny : -tiny; break;  // along it, subnormally
+                case 3:
+                    v[(axis + 1) % 3] = -0.0;
+                    v[(axis + 2) % 3] = tiny;
+                    break;
+                default: break;
+                }
+                const Direction d(v);
+                ASSERT_TRUE(d);
+                SCOPED_TRACE(::testing::Message() << "axis " << axis << ", upper " << upper << ", ray " << i);
+                const auto span = tree.rootSpan(p, d);
+                ASSERT_TRUE(span.has_value());
+                EXPECT_EQ(span->first, 0.0);
+                EXPECT_FALSE(std::signbit(span->first));
+                EXPECT_GT(span->second, 0.0);
+                const RayHit expected = bruteForceFirstHit(tree.shapes(), p, d);
+                expectSameHit(tree.firstHit(p, d), expected);
+                TraversalRecord record;
+                expectSameHit(tree.firstHit(p, d, record), expected);
+                ++rays;
+            }
+        }
+    }
+    EXPECT_EQ(rays, 240);
+}
+
 TEST(Octree, NoTopGridWhereALevelHasLeaves) {
     std::vector<std::unique_ptr<Shape>> shapes;
     shapes.push_back(std::make_unique<Sphere>(Point(-7, -7, -7), 0.5));
