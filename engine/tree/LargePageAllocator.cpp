@@ -23,7 +23,9 @@ namespace dropscope {
 
 namespace {
 
+#ifdef DROPSCOPE_LARGE_PAGES
 std::size_t roundUp(std::size_t bytes, std::size_t unit) { return (bytes + unit - 1) / unit * unit; }
+#endif
 
 std::atomic<std::size_t> mappedBytes{0};
 

@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <iostream>
-#include <numbers>
 #include <string>
 
 namespace dropscope {
@@ -17,8 +16,6 @@ namespace {
 
 using testing::Rng;
 using testing::uniform;
-
-constexpr double kPi = std::numbers::pi;
 
 // Seed 000 eqs. 1.64-1.66 with M = Q: the placed surface Q r(u, v) has its x extremes at
 // extremeRange(surface, Q.row(0)); the rotated Ellipsoid's are analytic (seed eqs. 1.27-1.29).
