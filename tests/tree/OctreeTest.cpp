@@ -290,13 +290,13 @@ TEST(Octree, ARayFromJustInsideTheRootEntersItAtZero) {
                 p[axis] = upper ? std::nextafter(high[axis], -kInfinity) : std::nextafter(low[axis], kInfinity);
                 Eigen::Vector3d v = testing::randomDirection(rng).vector();
                 switch (i % 5) {
-                case 0:
+                case 0:  // across the face, inwards or outwards
                     v = Eigen::Vector3d::Zero();
                     v[axis] = i % 2 == 0 ? 1.0 : -1.0;
-                    break;                                           // across the face
+                    break;
                 case 1: v[axis] = i % 2 == 0 ? 0.0 : -0.0; break;    // along it
                 case 2: v[axis] = i % 2 == 0 ? tiny : -tiny; break;  // along it, subnormally
-                case 3:
+                case 3:                                              // -0 and subnormal across the other two axes
                     v[(axis + 1) % 3] = -0.0;
                     v[(axis + 2) % 3] = tiny;
                     break;
