@@ -216,7 +216,7 @@ void Octree::freeze() {
         const auto firstOther = static_cast<std::uint32_t>(others_.size());
         for (ShapeId id : node.sphereIds) {
             const SphereGeometry& sphere = static_cast<const Sphere&>(*shapes_[id]).geometry();
-            if (SphereBlock::packable(sphere, prefilterFrame_)) {
+            if (SphereLanes::packable(sphere, prefilterFrame_)) {
                 spheres.emplace_back(id, &sphere);
                 if (exactSpheres_.empty()) exactSpheres_.resize(shapes_.size());
                 exactSpheres_[id] = {sphere.center, sphere.radius};
@@ -229,16 +229,17 @@ void Octree::freeze() {
         cells_.push_back({node.firstChild, static_cast<std::uint32_t>(blocks_.size()),
                           static_cast<std::uint32_t>(spheres.size()), firstOther,
                           static_cast<std::uint32_t>(others_.size()) - firstOther});
-        for (std::size_t k = 0; k < spheres.size(); k += SphereBlock::kWidth) {
-            SphereBlock& block = blocks_.emplace_back();
-            for (unsigned lane = 0; lane < SphereBlock::kWidth; ++lane) {
-                const bool used = k + lane < spheres.size();
-                if (used)
-                    block.pack(lane, *spheres[k + lane].second, prefilterFrame_);
-                else
-                    block.clear(lane);
-                sphereIds_.push_back(used ? spheres[k + lane].first : RayHit::kNone);
-            }
+        const auto count = static_cast<unsigned>(spheres.size());
+        const std::size_t firstBlock = blocks_.size();
+        blocks_.resize(firstBlock + SphereLanes::blocksFor(count));
+        SphereLanes lanes(blocks_.data() + firstBlock, count);
+        for (unsigned lane = 0; lane < lanes.stride(); ++lane) {
+            const bool used = lane < count;
+            if (used)
+                lanes.pack(lane, *spheres[lane].second, prefilterFrame_);
+            else
+                lanes.clear(lane);
+            sphereIds_.push_back(used ? spheres[lane].first : RayHit::kNone);
         }
     }
     cells_.shrink_to_fit();

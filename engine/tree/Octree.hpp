@@ -22,12 +22,11 @@ class BoundingBox;
 // A shape is stored in every child cell it overlaps, with cells inflated by margin() so that rounding
 // can never hide a shape from a ray that grazes a cell boundary; a shape that overlaps all eight
 // children of a cell stays in that cell instead (a glass cell around a whole cloud is then tested
-// once per ray, not in every leaf). A cell's spheres are also packed by value, four to a SphereBlock
-// (structure of arrays, single precision), for a conservative vectorised prefilter; the few that pass it get
-// the exact SphereGeometry::distanceToSurface from the sphere's double centre and radius, kept once per sphere,
-// the same code as Sphere itself, so bit-identical. Shapes are
-// placed into growable per-cell lists, which are then frozen into flat arrays for the queries; an
-// insert or remove thaws, edits and refreezes (O(N), a few ms per 1e5 shapes).
+// once per ray, not in every leaf). A cell's spheres are also packed by value (SphereLanes: structure of
+// arrays, single precision, in cache-line SphereBlocks), for a conservative vectorised prefilter; the few that pass it
+// get the exact SphereGeometry::distanceToSurface from the sphere's double centre and radius, kept once per sphere, the
+// same code as Sphere itself, so bit-identical. Shapes are placed into growable per-cell lists, which are then frozen
+// into flat arrays for the queries; an insert or remove thaws, edits and refreezes (O(N), a few ms per 1e5 shapes).
 class Octree {
 public:
     explicit Octree(std::vector<std::unique_ptr<Shape>> shapes, OctreeSettings settings = {},
@@ -43,7 +42,7 @@ public:
     const Shape* shape(ShapeId id) const { return id < shapes_.size() ? shapes_[id].get() : nullptr; }
     const std::vector<std::unique_ptr<Shape>>& shapes() const { return shapes_; }
     // Whether `id` is a sphere the traversal tests from the octree's own copy of its centre and radius (every
-    // Sphere that SphereBlock::packable accepts, which is every one in a real scene).
+    // Sphere that SphereLanes::packable accepts, which is every one in a real scene).
     bool packsSphere(ShapeId id) const { return id < exactSpheres_.size() && exactSpheres_[id].radius > 0.0; }
     // That sphere's geometry, the same bits as the Sphere's, from the record the traversal has just read when
     // the sphere is its hit (a photon's next crossing reads it there, not from a record of its own). Requires
@@ -206,7 +205,7 @@ private:
     template <class T>
     using SearchArray = std::vector<T, LargePageAllocator<T>>;
     SearchArray<Cell> cells_;
-    SearchArray<SphereBlock> blocks_;  // each cell's spheres in prefilterFrame_, padded to 4
+    SearchArray<SphereBlock> blocks_;  // each cell's spheres in prefilterFrame_ as SphereLanes, padded to 4
     SearchArray<ShapeId> sphereIds_;   // 4 per block, RayHit::kNone in padding
     // A packed sphere's double centre and radius, for the exact test of the candidates the prefilter leaves
     // (SphereGeometry::make recomputes its band; freeze packs only the spheres whose band it recomputes).

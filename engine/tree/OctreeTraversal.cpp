@@ -47,12 +47,16 @@ struct Octree::Traversal {
     [[gnu::always_inline]] void testShapes(const Cell& cell) {
         if (cell.sphereCount > 0) {
             const PrefilterRay& ray = prefilterRay;
+            const float* x = tree.blocks_[cell.firstBlock].values;
+            const unsigned stride = SphereLanes::strideFor(cell.sphereCount);
             for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
+                // The group's lanes start in this block (sphereCandidates' readAhead counts from there).
                 const std::uint32_t block = cell.firstBlock + first / SphereBlock::kWidth;
-                const ShapeId* ids = tree.sphereIds_.data() + std::size_t{block} * SphereBlock::kWidth;
+                const ShapeId* ids =
+                    tree.sphereIds_.data() + std::size_t{cell.firstBlock} * SphereBlock::kWidth + first;
                 const unsigned count = std::min<std::uint32_t>(cell.sphereCount - first, 64);
                 for (std::uint64_t candidates =
-                         sphereCandidates(tree.blocks_.data() + block, count, block < tree.readAheadBefore_, ray);
+                         sphereCandidates(x + first, stride, count, block < tree.readAheadBefore_, ray);
                      candidates != 0; candidates &= candidates - 1) {
                     const ShapeId id = ids[__builtin_ctzll(candidates)];
                     testExactly(id, tree.packedSphere(id).distanceToSurface(p, d));
@@ -118,11 +122,18 @@ struct Octree::Traversal {
         }
     }
 
-    // Asks for a cell's first sphere blocks (up to 16 spheres, 4 cache lines) and its children's cells.
+    // Asks for a cell's first 16 spheres (the lines where each of the four arrays' first 16 lanes begin and
+    // end: all of a cell of up to 16, in 4 cache lines or fewer) and its children's cells.
     void prefetchCell(const Cell& cell) const {
-        const SphereBlock* blocks = tree.blocks_.data() + cell.firstBlock;
-        const std::uint32_t blockCount = (std::min<std::uint32_t>(cell.sphereCount, 16) + 3) / 4;
-        for (std::uint32_t b = 0; b < blockCount; ++b) __builtin_prefetch(blocks + b);
+        if (cell.sphereCount > 0) {
+            const unsigned stride = SphereLanes::strideFor(cell.sphereCount);
+            const unsigned last = std::min(stride, 16u) - 1;
+            for (unsigned array = 0; array < 4; ++array) {
+                const float* begin = tree.blocks_[cell.firstBlock].values + array * stride;
+                __builtin_prefetch(begin);
+                __builtin_prefetch(begin + last);
+            }
+        }
         if (!cell.isLeaf()) __builtin_prefetch(tree.cells_.data() + cell.firstChild);
     }
 

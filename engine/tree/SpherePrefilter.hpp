@@ -56,16 +56,29 @@ struct PrefilterFrame {
     }
 };
 
-// Four spheres of one octree cell as structure of arrays in single precision (one cache line), for a
-// conservative vectorised test before the exact one, which reads the sphere's double centre and radius. Centres
-// are in the frame's coordinates (rounded to nearest); radii are R x kPrefilterRadiusFactor x scale rounded up.
-// Unused lanes hold NaN centres, which no ray accepts.
+// 64 bytes (one cache line) of the storage of a cell's packed spheres; SphereLanes says what they hold.
 struct alignas(64) SphereBlock {
-    static constexpr unsigned kWidth = 4;
-    float x[kWidth];
-    float y[kWidth];
-    float z[kWidth];
-    float radius[kWidth];
+    static constexpr unsigned kWidth = 4;  // spheres a block's worth of storage holds
+    float values[4 * kWidth];
+};
+
+// A cell's spheres in single precision, for a conservative vectorised test before the exact one, which reads the
+// sphere's double centre and radius: `count` spheres in blocksFor(count) blocks, as four arrays of
+// strideFor(count) floats (the count rounded up to 4) one after another, x, y, z and radius. Centres are in the
+// frame's coordinates (rounded to nearest); radii are R x kPrefilterRadiusFactor x scale rounded up. Unused
+// lanes hold NaN centres, which no ray accepts. Sixteen spheres' x (y, z, radius) are then one load, which
+// blocks of four spheres each would make four loads and a transposition in registers (docs/octree.md).
+class SphereLanes {
+public:
+    static unsigned strideFor(unsigned count) {
+        return (count + SphereBlock::kWidth - 1) / SphereBlock::kWidth * SphereBlock::kWidth;
+    }
+    static unsigned blocksFor(unsigned count) { return strideFor(count) / SphereBlock::kWidth; }
+
+    SphereLanes(SphereBlock* blocks, unsigned count) : x_(blocks->values), stride_(strideFor(count)) {}
+
+    const float* x() const { return x_; }
+    unsigned stride() const { return stride_; }
 
     // Whether `sphere` can be packed in `frame`: SphereGeometry::make recomputes its band from its centre and
     // radius (the exact test of a candidate does, from the octree's doubles), and its reach in the frame is
@@ -73,6 +86,11 @@ struct alignas(64) SphereBlock {
     static bool packable(const SphereGeometry& sphere, const PrefilterFrame& frame);
     void pack(unsigned lane, const SphereGeometry& sphere, const PrefilterFrame& frame);
     void clear(unsigned lane);
+    float& radius(unsigned lane) { return x_[3 * stride_ + lane]; }
+
+private:
+    float* x_;
+    unsigned stride_;
 };
 
 // The ray as the prefilter sees it: shifted along itself to a point q = p + shift d near the anchor, in the
@@ -102,29 +120,31 @@ struct PrefilterRay {
     void setBest(double best) { limit = floatAtLeast((best + limitOffset) * scale); }
 };
 
-// Bit k is set for each of the first `count` (at most 64) spheres of `blocks` that may give a distance in
-// (0, best]: those whose ball of radius R kPrefilterRadiusFactor + slack meets the ray's line, is not
-// wholly behind the origin and not wholly beyond the best. Every sphere the exact test would let win is among
-// them (docs/octree.md). Runs 16 lanes at once with AVX-512F, 8 with AVX2, 4 with SSE2 otherwise, the widest
-// the CPU has (runtime dispatch); SSE2's results may differ from the others' only in rounding far inside the
-// slack.
+// Bit k is set for each of the first `count` (at most 64) spheres from `x` (x[k], x[stride + k],
+// x[2 stride + k], x[3 stride + k]: a cell's SphereLanes, or a later part of them) that may give a distance in
+// (0, best]: those whose ball of radius R kPrefilterRadiusFactor + slack meets the ray's line, is not wholly
+// behind the origin and not wholly beyond the best. Every sphere the exact test would let win is among them
+// (docs/octree.md). Runs 16 lanes at once with AVX-512F, 8 with AVX2, 4 with SSE2 otherwise, the widest the CPU
+// has (runtime dispatch); SSE2's results may differ from the others' only in rounding far inside the slack.
+// Reads only the first `count` lanes (rounded up to 4) of each array.
 //
-// With `readAhead`, kPrefilterFixedLanes spheres may be read from `blocks`, past the first count (the octree's
-// next cells' blocks, in cache in a small tree): then with count at most that the test runs over exactly
-// kPrefilterFixedLanes lanes and drops the bits beyond count. Cells hold varying numbers of spheres, and a loop
-// that ran as many steps as each cell needs would end where the processor mispredicts it (docs/octree.md).
+// With `readAhead` and count at most kPrefilterFixedLanes, the test runs over exactly that many lanes of each
+// array and drops the bits beyond count: it may read up to x[3 stride + kPrefilterFixedLanes - 1] (in the
+// octree, the next cells' blocks, in cache in a small tree). Cells hold varying numbers of spheres, and a loop that ran
+// as many steps as each cell needs would end where the processor mispredicts it (docs/octree.md).
 inline constexpr unsigned kPrefilterFixedLanes = 32;
-std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, bool readAhead, const PrefilterRay& ray);
-inline std::uint64_t sphereCandidates(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray) {
-    return sphereCandidates(blocks, count, false, ray);
+std::uint64_t sphereCandidates(const float* x, unsigned stride, unsigned count, bool readAhead,
+                               const PrefilterRay& ray);
+inline std::uint64_t sphereCandidates(const SphereLanes& lanes, unsigned count, const PrefilterRay& ray) {
+    return sphereCandidates(lanes.x(), lanes.stride(), count, false, ray);
 }
 
 // The implementations behind sphereCandidates, for tests (their bits beyond `count` are unspecified). The
 // AVX2 one may run only when cpuHasAvx2(), the AVX-512 one only when cpuHasAvx512(); the AVX-512 one gives
 // the AVX2 one's bits.
-std::uint64_t sphereCandidatesSse2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
-std::uint64_t sphereCandidatesAvx2(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
-std::uint64_t sphereCandidatesAvx512(const SphereBlock* blocks, unsigned count, const PrefilterRay& ray);
+std::uint64_t sphereCandidatesSse2(const float* x, unsigned stride, unsigned count, const PrefilterRay& ray);
+std::uint64_t sphereCandidatesAvx2(const float* x, unsigned stride, unsigned count, const PrefilterRay& ray);
+std::uint64_t sphereCandidatesAvx512(const float* x, unsigned stride, unsigned count, const PrefilterRay& ray);
 bool cpuHasAvx2();
 bool cpuHasAvx512();
 

@@ -7,13 +7,14 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace dropscope {
 namespace {
 
 using testing::Rng;
 
-using Candidates = std::uint64_t (*)(const SphereBlock*, unsigned, const PrefilterRay&);
+using Candidates = std::uint64_t (*)(const float*, unsigned, unsigned, const PrefilterRay&);
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -68,13 +69,35 @@ PrefilterRay rayFor(const Case& c) {
                               kPrefilterSlackRelative * scale);
 }
 
-// One sphere in lane 0 of a block whose other lanes are unused.
-SphereBlock blockOf(const SphereGeometry& sphere, const PrefilterFrame& frame) {
-    SphereBlock block;
-    block.pack(0, sphere, frame);
-    for (unsigned lane = 1; lane < SphereBlock::kWidth; ++lane) block.clear(lane);
-    return block;
-}
+// A cell's packed spheres as the octree holds them: `count` lanes (padded to 4, the padding cleared, and every lane
+// cleared until packed) in blocks of their own, then `blocksAfter` blocks of NaN, which the read-ahead may read
+// as it reads the octree's next cells. Without them any read beyond the cell is one past its allocation, which
+// AddressSanitizer reports.
+class PackedCell {
+public:
+    explicit PackedCell(unsigned count, unsigned blocksAfter = 0)
+        : blocks_(SphereLanes::blocksFor(count) + blocksAfter), lanes_(blocks_.data(), count) {
+        for (SphereBlock& block : blocks_) {
+            for (float& value : block.values) value = std::numeric_limits<float>::quiet_NaN();
+        }
+        for (unsigned lane = 0; lane < lanes_.stride(); ++lane) lanes_.clear(lane);
+    }
+    PackedCell(const SphereGeometry& sphere, const PrefilterFrame& frame) : PackedCell(1) {
+        lanes_.pack(0, sphere, frame);
+    }
+    PackedCell(const PackedCell&) = delete;
+    PackedCell& operator=(const PackedCell&) = delete;
+
+    SphereLanes& lanes() { return lanes_; }
+    // The first `count` lanes' candidates by `candidates`.
+    std::uint64_t test(Candidates candidates, unsigned count, const PrefilterRay& ray) const {
+        return candidates(lanes_.x(), lanes_.stride(), count, ray);
+    }
+
+private:
+    std::vector<SphereBlock> blocks_;
+    SphereLanes lanes_;
+};
 
 // Every sphere the exact test would let win (0 < t <= best) is a candidate, whatever the best so far,
 // for both implementations; and spheres far off the ray are not.
@@ -84,12 +107,12 @@ void expectConservative(Candidates candidates) {
     int rejected = 0;
     for (int i = 0; i < 200000; ++i) {
         const Case c = randomCase(rng, i);
-        const SphereBlock block = blockOf(c.sphere, c.frame);
+        const PackedCell cell(c.sphere, c.frame);
         const double t = c.sphere.distanceToSurface(c.origin, c.direction);
         PrefilterRay ray = rayFor(c);
         for (double best : {kInfinity, t, std::nextafter(t, 0.0)}) {
             ray.setBest(best);
-            const std::uint64_t mask = candidates(&block, 1, ray) & 1;
+            const std::uint64_t mask = cell.test(candidates, 1, ray) & 1;
             if (t > 0.0 && t <= best) {
                 ++hits;
                 ASSERT_EQ(mask, 1u) << "case " << i << ": t = " << t << ", best = " << best;
@@ -99,12 +122,12 @@ void expectConservative(Candidates candidates) {
         const SphereGeometry off = SphereGeometry::make(
             c.sphere.center + 3.1 * c.sphere.radius * Direction(c.direction.vector().cross(Point(1, 2, 3))).vector(),
             c.sphere.radius);
-        const SphereBlock offBlock = blockOf(off, c.frame);
+        const PackedCell offCell(off, c.frame);
         ray.setBest(kInfinity);
         if ((c.origin + c.shift * c.direction.vector() - c.sphere.center).norm() < 1.1 * c.sphere.radius &&
             ray.slack < c.sphere.radius * c.frame.scale) {
             ++rejected;
-            EXPECT_EQ(candidates(&offBlock, 1, ray) & 1, 0u) << "case " << i;
+            EXPECT_EQ(offCell.test(candidates, 1, ray) & 1, 0u) << "case " << i;
         }
     }
     EXPECT_GT(hits, 100000);
@@ -123,14 +146,21 @@ TEST(SpherePrefilter, Avx512NeverRejectsAWinningSphere) {
     expectConservative(sphereCandidatesAvx512);
 }
 
-// The least float radius that AVX2 accepts for the sphere in `lane` of `block` (every comparison's side
-// grows with the radius, so acceptance is monotone in it; a bisection over the floats' bit patterns, which
-// order positive floats); 0 when it accepts a radius of 0.
-float leastAcceptedRadius(SphereBlock block, unsigned lane, const PrefilterRay& ray) {
+// The least float radius that AVX2 accepts for the sphere in `lane` of `cell`'s first `count` (every
+// comparison's side grows with the radius, so acceptance is monotone in it; a bisection over the floats' bit
+// patterns, which order positive floats); 0 when it accepts a radius of 0. The cell is left as it was.
+float leastAcceptedRadius(PackedCell& cell, unsigned count, unsigned lane, const PrefilterRay& ray) {
+    const float radius = cell.lanes().radius(lane);
     const auto accepts = [&](std::uint32_t bits) {
-        block.radius[lane] = std::bit_cast<float>(bits);
-        return (sphereCandidatesAvx2(&block, SphereBlock::kWidth, ray) >> lane & 1) != 0;
+        cell.lanes().radius(lane) = std::bit_cast<float>(bits);
+        return (cell.test(sphereCandidatesAvx2, count, ray) >> lane & 1) != 0;
     };
+    struct Restore {
+        PackedCell& cell;
+        unsigned lane;
+        float radius;
+        ~Restore() { cell.lanes().radius(lane) = radius; }
+    } restore{cell, lane, radius};
     std::uint32_t rejected = 0;
     std::uint32_t accepted = std::bit_cast<std::uint32_t>(std::numeric_limits<float>::max());
     if (accepts(rejected)) return 0.0f;
@@ -141,7 +171,7 @@ float leastAcceptedRadius(SphereBlock block, unsigned lane, const PrefilterRay& 
     return std::bit_cast<float>(accepted);
 }
 
-// The AVX-512 version runs the AVX2 version's operations in the same order on its transposed lanes, so for any
+// The AVX-512 version runs the AVX2 version's operations in the same order on twice as many lanes, so for any
 // count the two give the same bits, down to spheres whose last rounding decides: half the lanes hold a radius
 // at AVX2's boundary for their centre (the least it accepts, or the float below it), where a different
 // rounding or a comparison made strict would flip a bit.
@@ -155,23 +185,24 @@ TEST(SpherePrefilter, Avx512GivesTheAvx2Bits) {
         PrefilterRay ray = rayFor(c);
         ray.setBest(i % 2 == 0 ? kInfinity : c.sphere.distanceToSurface(c.origin, c.direction));
         // 24 spheres around the case's: about its size, within a few radii of it, some on the ray's line.
-        SphereBlock blocks[6];
+        PackedCell cell(24);
         for (unsigned k = 0; k < 24; ++k) {
             const double radius = c.sphere.radius * testing::uniform(rng, 0.5, 2.0);
             const Point centre = c.sphere.center + testing::randomPoint(rng, (k % 3 == 0 ? 0.1 : 4.0) * radius);
-            blocks[k / 4].pack(k % 4, SphereGeometry::make(centre, radius), c.frame);
+            cell.lanes().pack(k, SphereGeometry::make(centre, radius), c.frame);
             if (k % 2 == 1) {
-                const float least = leastAcceptedRadius(blocks[k / 4], k % 4, ray);
+                const float least = leastAcceptedRadius(cell, 24, k, ray);
                 if (least > 0.0f) {
-                    blocks[k / 4].radius[k % 4] = k % 4 == 1 ? least : std::nextafter(least, 0.0f);
+                    cell.lanes().radius(k) = k % 4 == 1 ? least : std::nextafter(least, 0.0f);
                     ++boundaries;
                 }
             }
         }
         for (unsigned count = 1; count <= 24; ++count) {
             const std::uint64_t within = (std::uint64_t{1} << count) - 1;
-            const std::uint64_t avx2 = sphereCandidatesAvx2(blocks, count, ray) & within;
-            ASSERT_EQ(sphereCandidatesAvx512(blocks, count, ray) & within, avx2) << "case " << i << ", count " << count;
+            const std::uint64_t avx2 = cell.test(sphereCandidatesAvx2, count, ray) & within;
+            ASSERT_EQ(cell.test(sphereCandidatesAvx512, count, ray) & within, avx2)
+                << "case " << i << ", count " << count;
             if (count == 24) candidates += std::popcount(avx2);
         }
     }
@@ -180,35 +211,46 @@ TEST(SpherePrefilter, Avx512GivesTheAvx2Bits) {
     EXPECT_LT(candidates, 4000 * 24 * 9 / 10);
 }
 
-// Unused lanes and lanes beyond `count` are never candidates; a block run of 64 spheres maps lane k to bit k,
-// for every count (odd numbers of blocks included, which the AVX2 version pairs with themselves, and the
-// AVX-512 one's last steps of one to four blocks), also when the test may read ahead over
-// kPrefilterFixedLanes lanes (the candidates beyond count there are dropped).
+// Unused lanes and lanes beyond `count` are never candidates, and lane k maps to bit k, for every count from 1 to
+// 64 and every implementation: in a cell of exactly that many spheres (the AVX2 version's last step of four, the
+// AVX-512 one's masked last step, neither reading past the cell), among the first of a cell of 64 (a later group
+// of a larger cell), and with the read-ahead over kPrefilterFixedLanes lanes, whose candidates beyond count
+// are dropped.
 TEST(SpherePrefilter, LanesMapToBits) {
-    SphereBlock blocks[16];
     const PrefilterFrame frame = PrefilterFrame::around(Point(30.0, 1.0, -2.0), 40.0);
     // The spheres whose bit is set lie on the x axis, the ray's line, the others off it; no period, so no
     // two lanes' places can be swapped unseen.
     constexpr std::uint64_t kOnTheLine = 0x9e3779b97f4a7c15;
-    for (unsigned k = 0; k < 64; ++k) {
+    const auto sphere = [](unsigned k) {
         const double y = (kOnTheLine >> k) & 1 ? 0.0 : 5.0;
-        blocks[k / 4].pack(k % 4, SphereGeometry::make(Point(static_cast<double>(k), y, 0.0), 0.25), frame);
-    }
-    blocks[15].clear(3);
+        return SphereGeometry::make(Point(static_cast<double>(k), y, 0.0), 0.25);
+    };
     const PrefilterRay ray =
         PrefilterRay::make(Point(-1.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 0.0, frame, 40.0, 1e-12);
-    const std::uint64_t expected = kOnTheLine & ~(std::uint64_t{1} << 63);  // lane 63 is cleared
+    PackedCell all(64);
+    for (unsigned k = 0; k < 63; ++k) all.lanes().pack(k, sphere(k), frame);  // lane 63 stays cleared
+    const std::uint64_t expected = kOnTheLine & ~(std::uint64_t{1} << 63);
     for (unsigned count = 1; count <= 64; ++count) {
         const std::uint64_t within = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
-        EXPECT_EQ(sphereCandidates(blocks, count, ray), expected & within) << count;
-        EXPECT_EQ(sphereCandidates(blocks, count, true, ray), expected & within) << count;
-        EXPECT_EQ(sphereCandidatesSse2(blocks, count, ray) & within, expected & within) << count;
-        if (cpuHasAvx2()) {
-            EXPECT_EQ(sphereCandidatesAvx2(blocks, count, ray) & within, expected & within) << count;
+        PackedCell exact(count);
+        PackedCell readAhead(count, 8);
+        for (unsigned k = 0; k < std::min(count, 63u); ++k) {
+            exact.lanes().pack(k, sphere(k), frame);
+            readAhead.lanes().pack(k, sphere(k), frame);
         }
-        if (cpuHasAvx512()) {
-            EXPECT_EQ(sphereCandidatesAvx512(blocks, count, ray) & within, expected & within) << count;
+        std::vector<Candidates> implementations = {sphereCandidatesSse2};
+        if (cpuHasAvx2()) implementations.push_back(sphereCandidatesAvx2);
+        if (cpuHasAvx512()) implementations.push_back(sphereCandidatesAvx512);
+        for (const Candidates candidates : implementations) {
+            EXPECT_EQ(exact.test(candidates, count, ray) & within, expected & within) << count;
+            EXPECT_EQ(all.test(candidates, count, ray) & within, expected & within) << count;
         }
+        EXPECT_EQ(sphereCandidates(exact.lanes(), count, ray), expected & within) << count;
+        EXPECT_EQ(sphereCandidates(readAhead.lanes().x(), readAhead.lanes().stride(), count, true, ray),
+                  expected & within)
+            << count;
+        EXPECT_EQ(sphereCandidates(all.lanes().x(), all.lanes().stride(), count, true, ray), expected & within)
+            << count;
     }
 }
 
@@ -216,18 +258,18 @@ TEST(SpherePrefilter, LanesMapToBits) {
 // origin and one wholly beyond the best so far are not candidates.
 TEST(SpherePrefilter, DistancesCountFromTheOriginOfAShiftedRay) {
     const PrefilterFrame frame = PrefilterFrame::around(Point::Zero(), 21.0);
-    SphereBlock block;
+    PackedCell cell(4);
     const double centres[] = {-150.0, -90.0, 5.0, 20.0};  // ray distances of their centres: -50, 10, 105, 120
     for (unsigned lane = 0; lane < 4; ++lane) {
-        block.pack(lane, SphereGeometry::make(Point(centres[lane], 0.0, 0.0), 1.0), frame);
+        cell.lanes().pack(lane, SphereGeometry::make(Point(centres[lane], 0.0, 0.0), 1.0), frame);
     }
     PrefilterRay ray =
         PrefilterRay::make(Point(-100.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 100.0, frame, 151.0, 1e-10);
-    EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b1110u);
+    EXPECT_EQ(sphereCandidates(cell.lanes(), 4, ray), 0b1110u);
     ray.setBest(110.0);
-    EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b0110u);
+    EXPECT_EQ(sphereCandidates(cell.lanes(), 4, ray), 0b0110u);
     ray.setBest(20.0);
-    EXPECT_EQ(sphereCandidates(&block, 4, ray), 0b0010u);
+    EXPECT_EQ(sphereCandidates(cell.lanes(), 4, ray), 0b0010u);
 }
 
 // The frame scales the root's half-side into [1, 2) by a power of two. A ray whose X (in the frame's units)
@@ -238,26 +280,24 @@ TEST(SpherePrefilter, OutsideItsRangeEverySphereIsACandidate) {
     EXPECT_EQ(frame.scale, 0.5);
     EXPECT_EQ(PrefilterFrame::around(Point::Zero(), 1e-30).scale * 1e-30, std::ldexp(1e-30, -std::ilogb(1e-30)));
     EXPECT_EQ(PrefilterFrame::around(Point::Zero(), 0.0).scale, 1.0);
-    SphereBlock block;
-    block.pack(0, SphereGeometry::make(Point(1.0, 0.0, 0.0), 0.5), frame);
-    block.pack(1, SphereGeometry::make(Point(-1.0, 2.0, 0.0), 0.5), frame);
-    block.clear(2);
-    block.clear(3);
+    PackedCell cell(4);
+    cell.lanes().pack(0, SphereGeometry::make(Point(1.0, 0.0, 0.0), 0.5), frame);
+    cell.lanes().pack(1, SphereGeometry::make(Point(-1.0, 2.0, 0.0), 0.5), frame);
     const Direction up(0.0, 1.0, 0.0);
-    EXPECT_EQ(sphereCandidates(&block, 4, PrefilterRay::make(Point(0.0, 4e15, 0.0), up, 0.0, frame, 3.0, 1.0)), 0b11u);
-    EXPECT_EQ(sphereCandidates(&block, 4, PrefilterRay::make(Point(0.0, 5.0, 0.0), up, 0.0, frame, 3.0, 1e-12)), 0u);
+    EXPECT_EQ(sphereCandidates(cell.lanes(), 4, PrefilterRay::make(Point(0.0, 4e15, 0.0), up, 0.0, frame, 3.0, 1.0)),
+              0b11u);
+    EXPECT_EQ(sphereCandidates(cell.lanes(), 4, PrefilterRay::make(Point(0.0, 5.0, 0.0), up, 0.0, frame, 3.0, 1e-12)),
+              0u);
     // A ray at the anchor with spheres reaching 1e-13 of the half-side: X is below 2^-40.
-    SphereBlock tiny;
-    tiny.pack(0, SphereGeometry::make(Point(1e-14, 0.0, 0.0), 1e-14), frame);
-    for (unsigned lane = 1; lane < 4; ++lane) tiny.clear(lane);
-    EXPECT_EQ(sphereCandidates(&tiny, 4, PrefilterRay::make(Point::Zero(), up, 0.0, frame, 2e-14, 1e-30)), 0b1u);
-    EXPECT_TRUE(SphereBlock::packable(SphereGeometry::make(Point(-1e6, 3e6, 0.0), 0.5), frame));
-    EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 3e15, 0.0), 0.5), frame));
-    EXPECT_FALSE(SphereBlock::packable(SphereGeometry::make(Point(0.0, 0.0, 0.0), 3e15), frame));
+    PackedCell tiny(SphereGeometry::make(Point(1e-14, 0.0, 0.0), 1e-14), frame);
+    EXPECT_EQ(sphereCandidates(tiny.lanes(), 4, PrefilterRay::make(Point::Zero(), up, 0.0, frame, 2e-14, 1e-30)), 0b1u);
+    EXPECT_TRUE(SphereLanes::packable(SphereGeometry::make(Point(-1e6, 3e6, 0.0), 0.5), frame));
+    EXPECT_FALSE(SphereLanes::packable(SphereGeometry::make(Point(0.0, 3e15, 0.0), 0.5), frame));
+    EXPECT_FALSE(SphereLanes::packable(SphereGeometry::make(Point(0.0, 0.0, 0.0), 3e15), frame));
     // A band SphereGeometry::make would not recompute: the candidates' exact test could not reproduce it.
     SphereGeometry widened = SphereGeometry::make(Point(1.0, 0.0, 0.0), 0.5);
     widened.band *= 2.0;
-    EXPECT_FALSE(SphereBlock::packable(widened, frame));
+    EXPECT_FALSE(SphereLanes::packable(widened, frame));
 }
 
 }  // namespace
