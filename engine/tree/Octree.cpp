@@ -230,6 +230,7 @@ void Octree::freeze() {
                           static_cast<std::uint32_t>(spheres.size()), firstOther,
                           static_cast<std::uint32_t>(others_.size()) - firstOther});
         const auto count = static_cast<unsigned>(spheres.size());
+        if (count == 0) continue;
         const std::size_t firstBlock = blocks_.size();
         blocks_.resize(firstBlock + SphereLanes::blocksFor(count));
         SphereLanes lanes(blocks_.data() + firstBlock, count);

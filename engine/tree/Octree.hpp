@@ -121,7 +121,7 @@ private:
         void add(ShapeId id, bool sphere) { (sphere ? sphereIds : otherIds).push_back(id); }
     };
     // The same cell, frozen for queries: ranges into the flat arrays, so a visit touches 20 bytes of
-    // cell and one contiguous run of sphere blocks (4 spheres a cache line).
+    // cell and one contiguous run of sphere blocks (a cache line per 4 spheres).
     struct Cell {
         std::uint32_t firstChild;
         std::uint32_t firstBlock;  // into blocks_; its spheres' ids from sphereIds_[4 firstBlock]
@@ -220,9 +220,11 @@ private:
     PrefilterFrame prefilterFrame_;  // around the root
     double packedReach_ = 0.0;       // the largest PrefilterFrame::reach of a packed sphere
     bool prefetch_ = false;          // whether the traversal prefetches children (a tree too large for the caches)
-    // A cell's group of at most 64 spheres whose first block lies before this one may let the prefilter read
-    // kPrefilterFixedLanes spheres from it, past its own (sphereCandidates' readAhead); 0 in a tree whose
-    // blocks pass a core's L2.
+    // The group of at most 64 spheres from lane `first` of a cell may let the prefilter read kPrefilterFixedLanes
+    // lanes of each array (sphereCandidates' readAhead), past its own, when block firstBlock + first / 4 lies
+    // before this one: its furthest read, float first + 3 stride + 31 of the cell, is at most
+    // 3 (stride - first) + 31 <= 127 floats past that block's start (stride - first <= 32 for a group that
+    // reads ahead), so within the 8 blocks from it. 0 in a tree whose blocks pass a core's L2.
     std::uint32_t readAheadBefore_ = 0;
     int gridLevel_ = 0;
     Point gridLow_ = Point::Zero();  // the root's lowest corner

@@ -50,7 +50,7 @@ struct Octree::Traversal {
             const float* x = tree.blocks_[cell.firstBlock].values;
             const unsigned stride = SphereLanes::strideFor(cell.sphereCount);
             for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
-                // The group's lanes start in this block (sphereCandidates' readAhead counts from there).
+                // The block from which the group's reads, with the read-ahead, stay within 8 (readAheadBefore_).
                 const std::uint32_t block = cell.firstBlock + first / SphereBlock::kWidth;
                 const ShapeId* ids =
                     tree.sphereIds_.data() + std::size_t{cell.firstBlock} * SphereBlock::kWidth + first;

@@ -112,7 +112,7 @@ __attribute__((target("avx2,fma"))) inline __m256 fourTwice(const float* at) {
 
 }  // namespace
 
-// Eight lanes a step; a last step of four (a count 4 more than a multiple of 8) tests those four in both halves.
+// Eight lanes a step; a last step of four (a count 1 to 4 more than a multiple of 8) tests those in both halves.
 // The loads do not wait on a test of which step is the last.
 __attribute__((target("avx2,fma"))) std::uint64_t sphereCandidatesAvx2(const float* x, unsigned stride, unsigned count,
                                                                        const PrefilterRay& ray) {

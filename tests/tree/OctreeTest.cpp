@@ -237,10 +237,11 @@ TEST(Octree, TopGridWalkRunsToTheRootFace) {
 
 // In a small tree the prefilter reads on past a cell's own sphere blocks into the next cells' (docs/octree.md,
 // "A fixed number of lanes in a small tree"), never past the end of the block array: clouds of leaves of at most
-// 4 spheres, a block each, so that cells start at every distance from the array's end, traced at every droplet
-// from outside and from its centre outwards. Under AddressSanitizer a read past the array fails here.
+// 32 spheres (whose read-ahead reaches furthest, to the last float of the 8th block), of many sizes, so that
+// cells of every size start at every distance from the array's end, traced at every droplet from outside and
+// from its centre outwards. Under AddressSanitizer a read past the array fails here.
 TEST(Octree, ThePrefilterReadsAheadNoFurtherThanTheLastBlock) {
-    for (int count = 20; count <= 120; count += 5) {
+    for (int count = 20; count <= 300; count += 7) {
         SCOPED_TRACE(::testing::Message() << count << " droplets");
         Rng rng(static_cast<unsigned>(500 + count));
         std::vector<std::unique_ptr<Shape>> shapes;
@@ -248,7 +249,7 @@ TEST(Octree, ThePrefilterReadsAheadNoFurtherThanTheLastBlock) {
             const double radius = testing::uniform(rng, 0.02, 0.1);
             shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 1.0), radius));
         }
-        const Octree tree(std::move(shapes), OctreeSettings{6, 4});
+        const Octree tree(std::move(shapes), OctreeSettings{6, 32});
         std::vector<Ray> rays;
         for (const auto& shape : tree.shapes()) {
             const Point centre = testing::boundsCenter(*shape);
@@ -261,6 +262,34 @@ TEST(Octree, ThePrefilterReadsAheadNoFurtherThanTheLastBlock) {
             const RayHit expected = bruteForceFirstHit(tree.shapes(), ray.origin, ray.direction);
             hits += expected ? 1 : 0;
             expectSameHit(tree.firstHit(ray.origin, ray.direction), expected);
+        }
+        EXPECT_GE(hits, 2 * count);
+    }
+}
+
+// A cell of more than 64 spheres goes through the prefilter in groups of 64 from lane `first` of its arrays, each
+// with its own ids: one leaf of every size around the groups' edges, traced at every droplet from outside and
+// from its centre outwards, equals brute force.
+TEST(Octree, ALeafOfMoreThan64SpheresEqualsBruteForce) {
+    for (int count : {63, 64, 65, 67, 96, 127, 128, 129, 130, 160, 193, 250}) {
+        SCOPED_TRACE(::testing::Message() << count << " droplets");
+        Rng rng(static_cast<unsigned>(900 + count));
+        std::vector<std::unique_ptr<Shape>> shapes;
+        for (int i = 0; i < count; ++i) {
+            shapes.push_back(
+                std::make_unique<Sphere>(testing::randomPoint(rng, 1.0), testing::uniform(rng, 0.02, 0.1)));
+        }
+        const Octree tree(std::move(shapes), OctreeSettings{6, 1000});
+        ASSERT_EQ(tree.statistics().size(), 1u);  // the root alone, a leaf
+        int hits = 0;
+        for (const auto& shape : tree.shapes()) {
+            const Point centre = testing::boundsCenter(*shape);
+            const Point from = centre + 3.0 * testing::randomDirection(rng).vector();
+            for (const Ray& ray : {Ray{from, Direction(centre - from)}, Ray{centre, testing::randomDirection(rng)}}) {
+                const RayHit expected = bruteForceFirstHit(tree.shapes(), ray.origin, ray.direction);
+                hits += expected ? 1 : 0;
+                expectSameHit(tree.firstHit(ray.origin, ray.direction), expected);
+            }
         }
         EXPECT_GE(hits, 2 * count);
     }

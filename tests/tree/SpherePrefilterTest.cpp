@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -214,26 +215,33 @@ TEST(SpherePrefilter, Avx512GivesTheAvx2Bits) {
 // Unused lanes and lanes beyond `count` are never candidates, and lane k maps to bit k, for every count from 1 to
 // 64 and every implementation: in a cell of exactly that many spheres (the AVX2 version's last step of four, the
 // AVX-512 one's masked last step, neither reading past the cell), among the first of a cell of 64 (a later group
-// of a larger cell), and with the read-ahead over kPrefilterFixedLanes lanes, whose candidates beyond count
-// are dropped.
+// of a larger cell), and with the read-ahead over kPrefilterFixedLanes lanes (with no more than the 8 blocks
+// from the cell's first that the octree allows it), whose candidates beyond count are dropped. Each of the four
+// arrays decides some bits: a sphere is a candidate when it is ahead of the ray (x) and on its line (y and z 0)
+// or large enough to reach it from off it (the radius); each choice follows its own non-periodic pattern, so
+// no two lanes of any array can be swapped unseen.
 TEST(SpherePrefilter, LanesMapToBits) {
-    const PrefilterFrame frame = PrefilterFrame::around(Point(30.0, 1.0, -2.0), 40.0);
-    // The spheres whose bit is set lie on the x axis, the ray's line, the others off it; no period, so no
-    // two lanes' places can be swapped unseen.
+    const PrefilterFrame frame = PrefilterFrame::around(Point(-10.0, 1.0, -2.0), 80.0);
     constexpr std::uint64_t kOnTheLine = 0x9e3779b97f4a7c15;
-    const auto sphere = [](unsigned k) {
-        const double y = (kOnTheLine >> k) & 1 ? 0.0 : 5.0;
-        return SphereGeometry::make(Point(static_cast<double>(k), y, 0.0), 0.25);
+    constexpr std::uint64_t kOffAlongY = 0xbf58476d1ce4e5b9;  // else along z
+    constexpr std::uint64_t kLarge = 0x94d049bb133111eb;
+    constexpr std::uint64_t kAhead = 0xd6e8feb86659fd93;
+    const auto bit = [](std::uint64_t pattern, unsigned k) { return ((pattern >> k) & 1) != 0; };
+    const auto sphere = [&](unsigned k) {
+        const double off = bit(kOnTheLine, k) ? 0.0 : 5.0;
+        const double x = bit(kAhead, k) ? static_cast<double>(k) : -10.0 - static_cast<double>(k);
+        const Point centre(x, bit(kOffAlongY, k) ? off : 0.0, bit(kOffAlongY, k) ? 0.0 : off);
+        return SphereGeometry::make(centre, bit(kLarge, k) ? 6.0 : 0.25);  // 6 reaches the line from 5 off it
     };
     const PrefilterRay ray =
-        PrefilterRay::make(Point(-1.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 0.0, frame, 40.0, 1e-12);
+        PrefilterRay::make(Point(-1.0, 0.0, 0.0), Direction(1.0, 0.0, 0.0), 0.0, frame, 90.0, 1e-12);
     PackedCell all(64);
     for (unsigned k = 0; k < 63; ++k) all.lanes().pack(k, sphere(k), frame);  // lane 63 stays cleared
-    const std::uint64_t expected = kOnTheLine & ~(std::uint64_t{1} << 63);
+    const std::uint64_t expected = kAhead & (kOnTheLine | kLarge) & ~(std::uint64_t{1} << 63);
     for (unsigned count = 1; count <= 64; ++count) {
         const std::uint64_t within = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
         PackedCell exact(count);
-        PackedCell readAhead(count, 8);
+        PackedCell readAhead(count, 8 - std::min(8u, SphereLanes::blocksFor(count)));
         for (unsigned k = 0; k < std::min(count, 63u); ++k) {
             exact.lanes().pack(k, sphere(k), frame);
             readAhead.lanes().pack(k, sphere(k), frame);
