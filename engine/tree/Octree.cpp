@@ -249,7 +249,7 @@ void Octree::freeze() {
     exactSpheres_.shrink_to_fit();
     others_.shrink_to_fit();
     building_ = {};
-    const CellBounds root = inflated(rootBounds_, margin_);
+    const CellBounds root = inflatedRoot();
     coordinateScale_ = largestCoordinate(root);
     const std::size_t blockBytes = blocks_.size() * sizeof(SphereBlock);
     prefetch_ = blockBytes > kPrefetchBytes;

@@ -153,12 +153,16 @@ private:
     // a valid direction and p finite.
     std::optional<std::pair<double, double>> rootSpan(const Point& p, const Direction& d,
                                                       const Eigen::Vector3d& inverse) const;
-    // Whether p lies strictly inside the inflated root that rootSpan clips to. Then rootSpan gives a span
-    // from exactly 0 for every valid direction: on each axis d moves along, the two faces' crossings have
-    // opposite signs and are never NaN (neither offset is 0).
+    // The root grown by the margin on every side: what rootSpan clips a ray to.
+    CellBounds inflatedRoot() const {
+        return CellBounds(rootBounds_.min().array() - margin_, rootBounds_.max().array() + margin_);
+    }
+    // Whether p lies strictly inside the inflated root. Then rootSpan gives a span from exactly 0 for every
+    // valid direction: on each axis d moves along, the two faces' crossings have opposite signs and are never
+    // NaN (neither offset is 0).
     bool strictlyInsideRoot(const Point& p) const {
-        return (p.array() > rootBounds_.min().array() - margin_).all() &&
-               (p.array() < rootBounds_.max().array() + margin_).all();
+        const CellBounds root = inflatedRoot();
+        return (p.array() > root.min().array()).all() && (p.array() < root.max().array()).all();
     }
     void freeze();
     void buildGrid();

@@ -279,7 +279,7 @@ std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const 
 
 std::optional<std::pair<double, double>> Octree::rootSpan(const Point& p, const Direction& d,
                                                           const Eigen::Vector3d& inverse) const {
-    const CellBounds root(rootBounds_.min().array() - margin_, rootBounds_.max().array() + margin_);
+    const CellBounds root = inflatedRoot();
     double tEnter = 0.0;
     double tExit = kInfinity;
     for (int axis = 0; axis < 3; ++axis) {
