@@ -156,20 +156,18 @@ float leastAcceptedRadius(PackedCell& cell, unsigned count, unsigned lane, const
         cell.lanes().radius(lane) = std::bit_cast<float>(bits);
         return (cell.test(sphereCandidatesAvx2, count, ray) >> lane & 1) != 0;
     };
-    struct Restore {
-        PackedCell& cell;
-        unsigned lane;
-        float radius;
-        ~Restore() { cell.lanes().radius(lane) = radius; }
-    } restore{cell, lane, radius};
     std::uint32_t rejected = 0;
     std::uint32_t accepted = std::bit_cast<std::uint32_t>(std::numeric_limits<float>::max());
-    if (accepts(rejected)) return 0.0f;
-    while (accepted - rejected > 1) {
-        const std::uint32_t middle = rejected + (accepted - rejected) / 2;
-        (accepts(middle) ? accepted : rejected) = middle;
+    float least = 0.0f;
+    if (!accepts(rejected)) {
+        while (accepted - rejected > 1) {
+            const std::uint32_t middle = rejected + (accepted - rejected) / 2;
+            (accepts(middle) ? accepted : rejected) = middle;
+        }
+        least = std::bit_cast<float>(accepted);
     }
-    return std::bit_cast<float>(accepted);
+    cell.lanes().radius(lane) = radius;
+    return least;
 }
 
 // The AVX-512 version runs the AVX2 version's operations in the same order on twice as many lanes, so for any
