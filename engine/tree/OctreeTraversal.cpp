@@ -41,13 +41,16 @@ struct Octree::Traversal {
         }
     }
 
+    // A cell's x lanes; its y, z and radius lanes follow, each SphereLanes::strideFor(sphereCount) further on.
+    const float* lanesOf(const Cell& cell) const { return tree.blocks_[cell.firstBlock].values; }
+
     // The cell's spheres through the prefilter, then the exact test on the candidates it lets through;
     // then every other shape exactly. Inline in the walks: a call per cell was measurable at 1e3 droplets,
     // where a ray meets two or three cells of about 21 spheres (docs/performance.md).
     [[gnu::always_inline]] void testShapes(const Cell& cell) {
         if (cell.sphereCount > 0) {
             const PrefilterRay& ray = prefilterRay;
-            const float* x = tree.blocks_[cell.firstBlock].values;
+            const float* x = lanesOf(cell);
             const unsigned stride = SphereLanes::strideFor(cell.sphereCount);
             for (std::uint32_t first = 0; first < cell.sphereCount; first += 64) {
                 // The block from which the group's reads, with the read-ahead, stay within 8 (readAheadBefore_).
@@ -129,7 +132,7 @@ struct Octree::Traversal {
             const unsigned stride = SphereLanes::strideFor(cell.sphereCount);
             const unsigned last = std::min(stride, 16u) - 1;
             for (unsigned array = 0; array < 4; ++array) {
-                const float* begin = tree.blocks_[cell.firstBlock].values + array * stride;
+                const float* begin = lanesOf(cell) + array * stride;
                 __builtin_prefetch(begin);
                 __builtin_prefetch(begin + last);
             }
