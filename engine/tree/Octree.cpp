@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace dropscope {
@@ -24,6 +25,8 @@ constexpr double kMarginRelative = 1e-8;
 // 1 MiB cost 7-10 % at 1e5). 8 MiB: a few times a core's L2, inside L3. The float blocks, half the bytes
 // (2.2 MB at 1e5, 22 MB at 1e6), fall on the same sides of it.
 constexpr std::size_t kPrefetchBytes = std::size_t{8} << 20;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Sphere blocks up to this many bytes (a core's L2 here) let the prefilter read on past a cell's own blocks
 // (sphereCandidates' readAhead): in cache, the extra lanes cost less than a mispredicted loop end; beyond it they
@@ -268,6 +271,7 @@ void Octree::buildGrid() {
     gridLevel_ = 0;
     grid_.clear();
     gridAbove_.clear();
+    gridPlanes_.clear();
     struct Placed {
         std::uint32_t cell;
         std::uint32_t x, y, z;
@@ -294,11 +298,21 @@ void Octree::buildGrid() {
     gridLow_ = rootBounds_.center().array() - rootHalf_;
     gridCell_ = std::ldexp(2.0 * rootHalf_, -depth);
     gridCellInverse_ = 1.0 / gridCell_;
+    const std::size_t side = std::size_t{1} << depth;
+    gridPlanes_.assign(4 * (side + 1), kInfinity);
+    for (int axis = 0; axis < 3; ++axis) {
+        double* row = gridPlanes_.data() + static_cast<std::size_t>(axis) * (side + 1);
+        row[0] = -kInfinity;
+        // The expression the walk used before the table held the planes, so the same doubles.
+        for (std::size_t i = 1; i < side; ++i) row[i] = gridLow_[axis] + gridCell_ * static_cast<double>(i);
+    }
     const auto table = [&](const std::vector<Placed>& level, int at, std::vector<std::uint32_t>& into) {
-        const std::size_t side = std::size_t{1} << at;
+        const std::size_t levelSide = std::size_t{1} << at;
         const std::size_t offset = into.size();
-        into.resize(offset + side * side * side);
-        for (const Placed& placed : level) into[offset + gridSlot(placed.x, placed.y, placed.z, side)] = placed.cell;
+        into.resize(offset + levelSide * levelSide * levelSide);
+        for (const Placed& placed : level) {
+            into[offset + gridSlot(placed.x, placed.y, placed.z, levelSide)] = placed.cell;
+        }
     };
     table(levels[static_cast<std::size_t>(depth)], depth, grid_);
     grid_.shrink_to_fit();
@@ -475,7 +489,7 @@ std::size_t Octree::bytesUsed() const {
     return sizeof(*this) + cells_.capacity() * sizeof(Cell) + blocks_.capacity() * sizeof(SphereBlock) +
            sphereIds_.capacity() * sizeof(ShapeId) + exactSpheres_.capacity() * sizeof(ExactSphere) +
            others_.capacity() * sizeof(ShapeId) + shapes_.capacity() * sizeof(std::unique_ptr<Shape>) +
-           (grid_.capacity() + gridAbove_.capacity()) * sizeof(std::uint32_t);
+           (grid_.capacity() + gridAbove_.capacity()) * sizeof(std::uint32_t) + gridPlanes_.capacity() * sizeof(double);
 }
 
 }  // namespace dropscope

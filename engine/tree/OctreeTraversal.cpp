@@ -2,7 +2,6 @@
 #include "tree/Octree.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -174,34 +173,35 @@ struct Octree::Traversal {
         const Point& low = tree.gridLow_;
         int index[3];
         int step[3];
-        int lastIndex[3];  // the grid's last cell along the ray on each axis (the cell it stays in if d is 0 there)
-        int upper[3];      // 1 when the plane ahead is the cell's upper face
         // Where the ray crosses the plane ahead on each axis; +inf in the grid's last cell that way, which
         // (as the recursive walk's last child) the ray leaves only at tExit, on the inflated root, and on an
         // axis the ray does not move along (d 0 there: its only cell is its last). The step below does not
         // branch on which axis the ray crosses next, which is what a DDA cannot predict.
         double next[3];
+        // Per axis, the plane ahead of cell i is ahead[axis][i]: the lower or the upper face, from the table of
+        // the grid's planes (whose faces are -inf and +inf, the crossings of the last cell that way), or +inf for
+        // an axis the ray does not move along. A load where the walk used to compute the plane: a step's planes
+        // are then a few cycles nearer, on the chain from one step to the next (docs/performance.md).
+        const double* ahead[3];
+        double scale[3];  // 1/d; 1 where d is 0, whose planes are all +inf
         const auto planeAhead = [&](int axis) {
-            const double offset = low[axis] + tree.gridCell_ * (index[axis] + upper[axis]) - p[axis];
+            const double offset = ahead[axis][index[axis]] - p[axis];
             // offset 0 crosses at 0 also when d[axis] is subnormal (an infinite inverse; 0 x inf is NaN).
-            const double at = offset == 0.0 ? 0.0 : offset * inverse[axis];
-            // +inf in the last cell, chosen by masking bits: as a ?: GCC 12 compiles it to a jump, whose way
-            // depends on where each ray runs out of cells on each axis.
-            const std::uint64_t last = 0 - static_cast<std::uint64_t>(index[axis] == lastIndex[axis]);
-            return std::bit_cast<double>((std::bit_cast<std::uint64_t>(at) & ~last) |
-                                         (std::bit_cast<std::uint64_t>(kInfinity) & last));
+            return offset == 0.0 ? 0.0 : offset * scale[axis];
         };
+        const std::size_t row = std::size_t(side) + 1;
         for (int axis = 0; axis < 3; ++axis) {
             // Truncation is the floor here: a negative value is clamped to the first cell either way.
             const double cell = (start[axis] - low[axis]) * tree.gridCellInverse_;
             index[axis] = cell < 0.0 ? 0 : cell >= side ? side - 1 : static_cast<int>(cell);
-            // From the signs of d as 0s and 1s rather than ?:, which GCC 12 compiles to jumps a random ray
-            // takes either way.
+            // From the sign of d as 0 or 1 rather than ?:, which GCC 12 compiles to a jump a random ray takes
+            // either way (d 0, rare, is predicted).
             const int forward = static_cast<int>(d[axis] > 0.0);
-            const int still = static_cast<int>(d[axis] == 0.0);
+            const bool still = d[axis] == 0.0;
             step[axis] = 2 * forward - 1;
-            upper[axis] = forward;
-            lastIndex[axis] = forward * (side - 1) + still * index[axis];
+            // Cell i's lower face is plane i, its upper face plane i + 1.
+            ahead[axis] = tree.gridPlanes_.data() + std::size_t(still ? 3 : axis) * row + std::size_t(forward);
+            scale[axis] = still ? 1.0 : inverse[axis];
             next[axis] = planeAhead(axis);
         }
         double t = tEnter;

@@ -235,6 +235,83 @@ TEST(Octree, TopGridWalkRunsToTheRootFace) {
     EXPECT_TRUE(found);
 }
 
+// The grid walk visits every grid cell a ray passes through, also the corner of a cell that it clips beside an
+// edge of the grid. Probes: a small sphere in each of the four cells around an edge, a thousandth of a cell
+// from both planes (so stored in that cell alone), each traced along the two diagonals of the edge's
+// cross-section that pass beside the edge, from 3 thousandths before it: each such ray enters the probe's cell
+// across one plane and leaves it across the other within 2 thousandths of the edge. A walk whose planes were
+// off by a thousandth of a cell or more, or that took the crossings in the wrong order, would skip the cell.
+TEST(Octree, TopGridWalkEntersEveryCellItClips) {
+    Rng rng(37);
+    std::vector<std::unique_ptr<Shape>> cloud;
+    for (int i = 0; i < 4000; ++i) {
+        const double radius = testing::uniform(rng, 0.01, 0.08);
+        cloud.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 2.0), radius));
+    }
+    cloud.push_back(std::make_unique<Box>(Point(-2.1, -2.1, -2.1), Point(2.1, 2.1, 2.1)));  // fixes the root
+    const auto copy = [&] {
+        std::vector<std::unique_ptr<Shape>> copied;
+        for (const auto& shape : cloud) copied.push_back(shape->clone());
+        return copied;
+    };
+    const Octree withoutProbes(copy(), OctreeSettings{10, 16});
+    const int gridLevel = withoutProbes.gridLevel();
+    ASSERT_GE(gridLevel, 3);
+    const CellBounds root = withoutProbes.rootBounds();
+    const double half = 0.5 * root.sizes().maxCoeff();
+    const Point low = root.center().array() - half;
+    const double cell = std::ldexp(2.0 * half, -gridLevel);
+    const int side = 1 << gridLevel;
+    const double apart = 1e-3 * cell;  // a probe's centre from each of the edge's two planes
+    const double lead = 3e-3 * cell;   // how far before the probe a ray starts, along each of the two axes
+
+    std::vector<std::unique_ptr<Shape>> shapes = copy();
+    std::vector<Ray> rays;
+    std::vector<ShapeId> probes;
+    for (int edge = 0; edge < 120; ++edge) {
+        const int along = edge % 3;  // the edge's axis; a and b span its cross-section
+        const int a = (along + 1) % 3;
+        const int b = (along + 2) % 3;
+        Point corner;
+        corner[a] = low[a] + cell * static_cast<double>(1 + static_cast<int>(rng() % static_cast<unsigned>(side - 1)));
+        corner[b] = low[b] + cell * static_cast<double>(1 + static_cast<int>(rng() % static_cast<unsigned>(side - 1)));
+        corner[along] = testing::uniform(rng, -1.9, 1.9);
+        for (int quadrant = 0; quadrant < 4; ++quadrant) {
+            const double sa = (quadrant & 1) ? 1.0 : -1.0;
+            const double sb = (quadrant & 2) ? 1.0 : -1.0;
+            Point centre = corner;
+            centre[a] += sa * apart;
+            centre[b] += sb * apart;
+            shapes.push_back(std::make_unique<Sphere>(centre, 0.5 * apart));
+            const auto probe = static_cast<ShapeId>(shapes.size() - 1);
+            // From the quadrant across a's plane, and from the one across b's.
+            for (const auto& [ua, ub] : {std::pair{-sa, sb}, std::pair{sa, -sb}}) {
+                Eigen::Vector3d toward = Eigen::Vector3d::Zero();
+                toward[a] = -ua;
+                toward[b] = -ub;
+                toward[along] = testing::uniform(rng, -0.5, 0.5);
+                Point from = centre;
+                from[a] += ua * lead;
+                from[b] += ub * lead;
+                from[along] -= toward[along] * lead;
+                rays.push_back({from, Direction(toward)});
+                probes.push_back(probe);
+            }
+        }
+    }
+    const Octree tree(std::move(shapes), OctreeSettings{10, 16});
+    ASSERT_EQ(tree.gridLevel(), gridLevel);
+    ASSERT_TRUE(tree.rootBounds().isApprox(root, 0.0));
+    int probeHits = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        SCOPED_TRACE(::testing::Message() << "ray " << i);
+        const RayHit expected = bruteForceFirstHit(tree.shapes(), rays[i].origin, rays[i].direction);
+        probeHits += expected.shape == probes[i] ? 1 : 0;
+        expectSameHit(tree.firstHit(rays[i].origin, rays[i].direction), expected);
+    }
+    EXPECT_GT(probeHits, static_cast<int>(rays.size()) * 9 / 10);
+}
+
 // In a small tree the prefilter reads on past a cell's own sphere blocks into the next cells' (docs/octree.md,
 // "A fixed number of lanes in a small tree"), never past the end of the block array: clouds of leaves of at most
 // 32 spheres (whose read-ahead reaches furthest, to the last float of the 8th block), of many sizes, so that
