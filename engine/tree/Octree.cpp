@@ -26,8 +26,6 @@ constexpr double kMarginRelative = 1e-8;
 // (2.2 MB at 1e5, 22 MB at 1e6), fall on the same sides of it.
 constexpr std::size_t kPrefetchBytes = std::size_t{8} << 20;
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 // Sphere blocks up to this many bytes (a core's L2 here) let the prefilter read on past a cell's own blocks
 // (sphereCandidates' readAhead): in cache, the extra lanes cost less than a mispredicted loop end; beyond it they
 // would be loads from L3 or memory (0.2 MB of blocks at 1e4 droplets, 2.2 MB at 1e5).
@@ -38,6 +36,8 @@ constexpr std::size_t kReadAheadBytes = std::size_t{1} << 20;
 // few against those it skips.
 constexpr int kMinGridLevel = 2;
 constexpr int kMaxGridLevel = 6;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 CellBounds inflated(const CellBounds& b, double by) { return CellBounds(b.min().array() - by, b.max().array() + by); }
 
@@ -303,7 +303,6 @@ void Octree::buildGrid() {
     for (int axis = 0; axis < 3; ++axis) {
         double* row = gridPlanes_.data() + static_cast<std::size_t>(axis) * (side + 1);
         row[0] = -kInfinity;
-        // The expression the walk used before the table held the planes, so the same doubles.
         for (std::size_t i = 1; i < side; ++i) row[i] = gridLow_[axis] + gridCell_ * static_cast<double>(i);
     }
     const auto table = [&](const std::vector<Placed>& level, int at, std::vector<std::uint32_t>& into) {

@@ -235,13 +235,13 @@ private:
     double gridCell_ = 0.0;          // a grid cell's side
     double gridCellInverse_ = 0.0;
     std::vector<std::uint32_t> grid_;  // the cells of level gridLevel_, at their gridSlot
+    // Levels 1 .. gridLevel_ - 1 in the same order, one after the other, when any of their cells holds a
+    // shape; empty otherwise.
+    std::vector<std::uint32_t> gridAbove_;
     // The grid's planes, for the walk: rows x, y and z of side + 1 (side = 2^gridLevel_) hold plane i, gridLow_ +
     // gridCell_ x i, at entry i, but for the grid's faces, -inf and +inf (the grid's last cell runs to the root's
     // exit); a fourth row is all +inf, for an axis the ray does not move along.
     std::vector<double> gridPlanes_;
-    // Levels 1 .. gridLevel_ - 1 in the same order, one after the other, when any of their cells holds a
-    // shape; empty otherwise.
-    std::vector<std::uint32_t> gridAbove_;
 };
 
 template <class F>

@@ -178,10 +178,10 @@ struct Octree::Traversal {
         // axis the ray does not move along (d 0 there: its only cell is its last). The step below does not
         // branch on which axis the ray crosses next, which is what a DDA cannot predict.
         double next[3];
-        // Per axis, the plane ahead of cell i is ahead[axis][i]: the lower or the upper face, from the table of
-        // the grid's planes (whose faces are -inf and +inf, the crossings of the last cell that way), or +inf for
-        // an axis the ray does not move along. A load where the walk used to compute the plane: a step's planes
-        // are then a few cycles nearer, on the chain from one step to the next (docs/performance.md).
+        // Per axis, the plane ahead of cell i is ahead[axis][i], its lower or upper face in the grid's table of
+        // planes: the grid's faces there are -inf and +inf, whose crossings, the last cell's, are +inf; an axis the
+        // ray does not move along reads a row of +inf. A load, not a computation, on the chain from one step to
+        // the next (docs/performance.md, "The grid's planes from a table").
         const double* ahead[3];
         double scale[3];  // 1/d; 1 where d is 0, whose planes are all +inf
         const auto planeAhead = [&](int axis) {

@@ -237,10 +237,10 @@ TEST(Octree, TopGridWalkRunsToTheRootFace) {
 
 // The grid walk visits every grid cell a ray passes through, also the corner of a cell that it clips beside an
 // edge of the grid. Probes: a small sphere in each of the four cells around an edge, a thousandth of a cell
-// from both planes (so stored in that cell alone), each traced along the two diagonals of the edge's
-// cross-section that pass beside the edge, from 3 thousandths before it: each such ray enters the probe's cell
-// across one plane and leaves it across the other within 2 thousandths of the edge. A walk whose planes were
-// off by a thousandth of a cell or more, or that took the crossings in the wrong order, would skip the cell.
+// from both planes (so, across the edge, stored in that cell alone), each traced both ways along the line
+// through it across the cell's corner, from 3 thousandths before it: each ray enters the probe's cell across
+// one plane and leaves it across the other, 2 thousandths of a cell apart. A walk with one plane off by 2
+// thousandths of a cell (0.2 %) or more, or that took the crossings in the wrong order, would skip the cell.
 TEST(Octree, TopGridWalkEntersEveryCellItClips) {
     Rng rng(37);
     std::vector<std::unique_ptr<Shape>> cloud;
@@ -273,8 +273,8 @@ TEST(Octree, TopGridWalkEntersEveryCellItClips) {
         const int a = (along + 1) % 3;
         const int b = (along + 2) % 3;
         Point corner;
-        corner[a] = low[a] + cell * static_cast<double>(1 + static_cast<int>(rng() % static_cast<unsigned>(side - 1)));
-        corner[b] = low[b] + cell * static_cast<double>(1 + static_cast<int>(rng() % static_cast<unsigned>(side - 1)));
+        corner[a] = low[a] + cell * static_cast<double>(1 + rng() % static_cast<unsigned>(side - 1));
+        corner[b] = low[b] + cell * static_cast<double>(1 + rng() % static_cast<unsigned>(side - 1));
         corner[along] = testing::uniform(rng, -1.9, 1.9);
         for (int quadrant = 0; quadrant < 4; ++quadrant) {
             const double sa = (quadrant & 1) ? 1.0 : -1.0;
