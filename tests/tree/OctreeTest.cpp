@@ -28,6 +28,18 @@ std::vector<std::unique_ptr<Shape>> randomScene(Rng& rng, int count, double half
     return shapes;
 }
 
+// `count` spheres, each drawn as its radius, uniform in [minRadius, maxRadius), then its centre, uniform in the
+// cube of half-side `halfWidth` about `centre` (one draw per statement: RandomGeometry.hpp).
+std::vector<std::unique_ptr<Shape>> randomSpheres(Rng& rng, int count, double halfWidth, double minRadius,
+                                                  double maxRadius, const Point& centre = Point::Zero()) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int i = 0; i < count; ++i) {
+        const double radius = testing::uniform(rng, minRadius, maxRadius);
+        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, halfWidth, centre), radius));
+    }
+    return shapes;
+}
+
 // Bitwise agreement: same shape and the very same double.
 void expectSameHit(const RayHit& actual, const RayHit& expected) {
     EXPECT_EQ(actual.shape, expected.shape);
@@ -137,11 +149,7 @@ TEST(Octree, FirstHitEqualsBruteForceAtEveryScale) {
 // grid, where only the walk's test of the cells it enters on the way finds it.
 TEST(Octree, TopGridWalkEqualsBruteForce) {
     Rng rng(31);
-    std::vector<std::unique_ptr<Shape>> shapes;
-    for (int i = 0; i < 4000; ++i) {
-        const double radius = testing::uniform(rng, 0.01, 0.08);  // one draw per statement (RandomGeometry.hpp)
-        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 2.0), radius));
-    }
+    std::vector<std::unique_ptr<Shape>> shapes = randomSpheres(rng, 4000, 2.0, 0.01, 0.08);
     shapes.push_back(std::make_unique<Box>(Point(-2.1, -2.1, -2.1), Point(2.1, 2.1, 2.1)));  // fixes the root
     const Point straddler = Point::Constant(0.5 * 2.1 * (1.0 + 1e-6));  // centre of the (+, +, +) level-1 cell
     shapes.push_back(std::make_unique<Sphere>(straddler, 0.05));
@@ -206,12 +214,7 @@ TEST(Octree, TopGridWalkRunsToTheRootFace) {
     for (int shift = 0; shift < 400 && !found; ++shift) {
         Rng rng(static_cast<unsigned>(33 + shift));
         const Point offset = testing::randomPoint(rng, 5.0);
-        std::vector<std::unique_ptr<Shape>> shapes;
-        for (int i = 0; i < 3000; ++i) {
-            const double radius = testing::uniform(rng, 0.01, 0.06);
-            shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 2.0, offset), radius));
-        }
-        Octree tree(std::move(shapes), OctreeSettings{10, 16});
+        Octree tree(randomSpheres(rng, 3000, 2.0, 0.01, 0.06, offset), OctreeSettings{10, 16});
         if (tree.gridLevel() < 2) continue;
         const CellBounds root = tree.rootBounds();
         const double half = 0.5 * root.sizes().maxCoeff();
@@ -243,11 +246,7 @@ TEST(Octree, TopGridWalkRunsToTheRootFace) {
 // thousandths of a cell (0.2 %) or more, or that took the crossings in the wrong order, would skip the cell.
 TEST(Octree, TopGridWalkEntersEveryCellItClips) {
     Rng rng(37);
-    std::vector<std::unique_ptr<Shape>> cloud;
-    for (int i = 0; i < 4000; ++i) {
-        const double radius = testing::uniform(rng, 0.01, 0.08);
-        cloud.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 2.0), radius));
-    }
+    std::vector<std::unique_ptr<Shape>> cloud = randomSpheres(rng, 4000, 2.0, 0.01, 0.08);
     cloud.push_back(std::make_unique<Box>(Point(-2.1, -2.1, -2.1), Point(2.1, 2.1, 2.1)));  // fixes the root
     const auto copy = [&] {
         std::vector<std::unique_ptr<Shape>> copied;
@@ -321,12 +320,7 @@ TEST(Octree, ThePrefilterReadsAheadNoFurtherThanTheLastBlock) {
     for (int count = 20; count <= 300; count += 7) {
         SCOPED_TRACE(::testing::Message() << count << " droplets");
         Rng rng(static_cast<unsigned>(500 + count));
-        std::vector<std::unique_ptr<Shape>> shapes;
-        for (int i = 0; i < count; ++i) {
-            const double radius = testing::uniform(rng, 0.02, 0.1);
-            shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 1.0), radius));
-        }
-        const Octree tree(std::move(shapes), OctreeSettings{6, 32});
+        const Octree tree(randomSpheres(rng, count, 1.0, 0.02, 0.1), OctreeSettings{6, 32});
         std::vector<Ray> rays;
         for (const auto& shape : tree.shapes()) {
             const Point centre = testing::boundsCenter(*shape);
@@ -377,12 +371,7 @@ TEST(Octree, ALeafOfMoreThan64SpheresEqualsBruteForce) {
 // along, across and away from it, with components of +-0 and subnormal ones (whose inverse is infinite).
 TEST(Octree, ARayFromJustInsideTheRootEntersItAtZero) {
     Rng rng(61);
-    std::vector<std::unique_ptr<Shape>> shapes;
-    for (int i = 0; i < 600; ++i) {
-        const double radius = testing::uniform(rng, 0.02, 0.06);
-        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 1.0), radius));
-    }
-    const Octree tree(std::move(shapes), OctreeSettings{10, 16});
+    const Octree tree(randomSpheres(rng, 600, 1.0, 0.02, 0.06), OctreeSettings{10, 16});
     ASSERT_GT(tree.gridLevel(), 0);
     const Eigen::Array3d low = tree.rootBounds().min().array() - tree.margin();
     const Eigen::Array3d high = tree.rootBounds().max().array() + tree.margin();
@@ -720,12 +709,7 @@ TEST(Octree, StatisticsAreConsistent) {
 TEST(Octree, ACloudTakesAtMost64BytesADropletBesidesItsShapeSlots) {
     Rng rng(41);
     constexpr std::size_t kCount = 1000;
-    std::vector<std::unique_ptr<Shape>> shapes;
-    for (std::size_t i = 0; i < kCount; ++i) {
-        const double radius = testing::uniform(rng, 0.002, 0.005);  // one draw per statement (RandomGeometry.hpp)
-        shapes.push_back(std::make_unique<Sphere>(testing::randomPoint(rng, 0.1), radius));
-    }
-    const Octree tree(std::move(shapes));
+    const Octree tree(randomSpheres(rng, static_cast<int>(kCount), 0.1, 0.002, 0.005));
     const double perDroplet = static_cast<double>(tree.bytesUsed()) / static_cast<double>(kCount);
     EXPECT_LE(perDroplet - sizeof(std::unique_ptr<Shape>), 64.0) << perDroplet;
     EXPECT_GT(perDroplet, 40.0);  // 32 bytes of exact sphere and 1.3 references of 20 at least
