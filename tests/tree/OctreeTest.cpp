@@ -40,6 +40,24 @@ std::vector<std::unique_ptr<Shape>> randomSpheres(Rng& rng, int count, double ha
     return shapes;
 }
 
+std::vector<std::unique_ptr<Shape>> copies(const std::vector<std::unique_ptr<Shape>>& shapes) {
+    std::vector<std::unique_ptr<Shape>> copied;
+    for (const auto& shape : shapes) copied.push_back(shape ? shape->clone() : nullptr);
+    return copied;
+}
+
+// The top grid's cells as the walk places them: the root's cube from its centre and half-side, 2^level cells a side.
+struct GridGeometry {
+    Point low;    // the lowest corner
+    double cell;  // a cell's side
+    int side;     // cells a side
+};
+
+GridGeometry gridGeometry(const CellBounds& root, int level) {
+    const double half = 0.5 * root.sizes().maxCoeff();
+    return {root.center().array() - half, std::ldexp(2.0 * half, -level), 1 << level};
+}
+
 // Bitwise agreement: same shape and the very same double.
 void expectSameHit(const RayHit& actual, const RayHit& expected) {
     EXPECT_EQ(actual.shape, expected.shape);
@@ -217,10 +235,7 @@ TEST(Octree, TopGridWalkRunsToTheRootFace) {
         Octree tree(randomSpheres(rng, 3000, 2.0, 0.01, 0.06, offset), OctreeSettings{10, 16});
         if (tree.gridLevel() < 2) continue;
         const CellBounds root = tree.rootBounds();
-        const double half = 0.5 * root.sizes().maxCoeff();
-        const Point low = root.center().array() - half;
-        const double cell = std::ldexp(2.0 * half, -tree.gridLevel());
-        const int side = 1 << tree.gridLevel();
+        const auto [low, cell, side] = gridGeometry(root, tree.gridLevel());
         const double face = low.x() + cell * side;
         if (!(face < root.max().x())) continue;
         found = true;
@@ -248,23 +263,15 @@ TEST(Octree, TopGridWalkEntersEveryCellItClips) {
     Rng rng(37);
     std::vector<std::unique_ptr<Shape>> cloud = randomSpheres(rng, 4000, 2.0, 0.01, 0.08);
     cloud.push_back(std::make_unique<Box>(Point(-2.1, -2.1, -2.1), Point(2.1, 2.1, 2.1)));  // fixes the root
-    const auto copy = [&] {
-        std::vector<std::unique_ptr<Shape>> copied;
-        for (const auto& shape : cloud) copied.push_back(shape->clone());
-        return copied;
-    };
-    const Octree withoutProbes(copy(), OctreeSettings{10, 16});
+    const Octree withoutProbes(copies(cloud), OctreeSettings{10, 16});
     const int gridLevel = withoutProbes.gridLevel();
     ASSERT_GE(gridLevel, 3);
     const CellBounds root = withoutProbes.rootBounds();
-    const double half = 0.5 * root.sizes().maxCoeff();
-    const Point low = root.center().array() - half;
-    const double cell = std::ldexp(2.0 * half, -gridLevel);
-    const int side = 1 << gridLevel;
+    const auto [low, cell, side] = gridGeometry(root, gridLevel);
     const double apart = 1e-3 * cell;  // a probe's centre from each of the edge's two planes
     const double lead = 3e-3 * cell;   // how far before the probe a ray starts, along each of the two axes
 
-    std::vector<std::unique_ptr<Shape>> shapes = copy();
+    std::vector<std::unique_ptr<Shape>> shapes = copies(cloud);
     std::vector<Ray> rays;
     std::vector<ShapeId> probes;
     for (int edge = 0; edge < 120; ++edge) {
@@ -521,12 +528,6 @@ TreeContents contentsOf(const Octree& tree) {
         return true;
     });
     return contents;
-}
-
-std::vector<std::unique_ptr<Shape>> copies(const std::vector<std::unique_ptr<Shape>>& shapes) {
-    std::vector<std::unique_ptr<Shape>> copied;
-    for (const auto& shape : shapes) copied.push_back(shape ? shape->clone() : nullptr);
-    return copied;
 }
 
 void expectSameTree(const Octree& actual, const Octree& expected) {
