@@ -17,7 +17,9 @@
 // alternate blocks; and the app orbiting and the 3D view alone with the hidden chords left out (as the app
 // draws) and drawn (RenderOptions::skipHiddenChords), in alternate blocks; and the app orbiting, the 3D view
 // alone and the shapes alone with the spheres apart drawn at their centre's depth (as the app draws) and not
-// (RenderOptions::apartSpheres), in alternate blocks.
+// (RenderOptions::apartSpheres), in alternate blocks; and the app orbiting and copying its kept view with its panels
+// drawn on the processor (as the app draws over a software OpenGL) and by OpenGL (UiState::panelsOnProcessor), frame by
+// frame.
 // docs/performance.md ("The app") has the figures.
 //
 // Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--point-pixels 6] [--png FILE]
@@ -269,6 +271,24 @@ int run(const Options& options) {
         viewInto.ms.insert(viewInto.ms.end(), view.ms.begin(), view.ms.end());
     }
     app.state().view.layers.render.processorRaster = processorAsIs;
+    // The peer of drawing the panels on the processor (UiState::panelsOnProcessor): OpenGL's, alternated frame by
+    // frame (each side first in turn), for the app orbiting and for a frame that copies the kept view (the third of
+    // its view, after the one drawing it and the one keeping it).
+    Series orbitPanelsProcessor, orbitPanelsOpenGL, copiedPanelsProcessor, copiedPanelsOpenGL;
+    for (int k = 0; k < options.frames; ++k) {
+        for (const bool processor : {k % 2 == 0, k % 2 != 0}) {
+            app.state().ui.panelsOnProcessor = processor;
+            app.state().view.camera.orbit(kOrbitStep, 0.0);
+            for (Series* series : {processor ? &orbitPanelsProcessor : &orbitPanelsOpenGL, (Series*)nullptr,
+                                   processor ? &copiedPanelsProcessor : &copiedPanelsOpenGL}) {
+                Stopwatch watch;
+                app.frame(input);
+                context.gl().Finish();
+                if (series) series->ms.push_back(1e3 * watch.seconds());
+            }
+        }
+    }
+    app.state().ui.panelsOnProcessor = true;
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
     const auto row = [&](const char* name, Series& series) {
@@ -299,6 +319,10 @@ int run(const Options& options) {
     row("app, orbiting, drawn by OpenGL (alt.)", orbitOpenGL);
     row("3D view alone, on the processor (alt.)", viewProcessor);
     row("3D view alone, by OpenGL (alt.)", viewOpenGL);
+    row("app, orbiting, panels on the processor (alt.)", orbitPanelsProcessor);
+    row("app, orbiting, panels by OpenGL (alt.)", orbitPanelsOpenGL);
+    row("kept view copied, panels on processor (alt.)", copiedPanelsProcessor);
+    row("kept view copied, panels by OpenGL (alt.)", copiedPanelsOpenGL);
     std::printf("steady (kept view copied): %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steadyCopied.median(),
                 1e3 / orbit.median());
     // The ray tree (R): first of the scene (its optical scene built from the document), then again from a source

@@ -6,11 +6,14 @@
 #include "gui/Shortcuts.hpp"
 #include "gui/TraceActions.hpp"
 #include "gui/platform/ImGuiInput.hpp"
+#include "gui/platform/ImGuiRasteriser.hpp"
 #include "gui/platform/ImGuiRenderer.hpp"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
+#include <thread>
 
 namespace dropscope::gui {
 
@@ -79,9 +82,25 @@ void App::frame(const InputFrame& input) {
 
     const int width = std::max(input.framebufferWidth, 1);
     const int height = std::max(input.framebufferHeight, 1);
-    scene_->draw(state_, width, height);
-    imguiRenderer_->render(ImGui::GetDrawData());
+    panelsOnProcessor_ = scene_->draw(state_, width, height, panelsOverlay(width, height));
+    if (!panelsOnProcessor_) imguiRenderer_->render(ImGui::GetDrawData());
     if (state_.ui.screenshot && state_.ui.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
+}
+
+render::Renderer::RasterOverlay App::panelsOverlay(int framebufferWidth, int framebufferHeight) const {
+    const ImDrawData* data = ImGui::GetDrawData();
+    if (!state_.ui.panelsOnProcessor || !data || !rasterisable(*data, imguiRenderer_->fontTexture()) ||
+        static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x) != framebufferWidth ||
+        static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y) != framebufferHeight) {
+        return {};
+    }
+    AtlasPixels atlas;
+    unsigned char* pixels = nullptr;
+    ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &atlas.width, &atlas.height);
+    atlas.rgba = pixels;
+    return [data, atlas](render::RasterImage& image) {
+        rasteriseImGui(*data, atlas, image, std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+    };
 }
 
 // A trace or a ray tree running, a screenshot due, or a text field being edited (its cursor blinks).

@@ -43,9 +43,15 @@ public:
     const AppState& state() const { return state_; }
     const ViewportScene& viewport() const { return *scene_; }
 
+    // Whether the last frame's panels were drawn on the processor, into its 3D view's picture (panelsOverlay).
+    bool panelsLastOnProcessor() const { return panelsOnProcessor_; }
+
 private:
     void buildUi();
     void takeScreenshot(int framebufferWidth, int framebufferHeight);
+    // The last ImGui frame's panels drawn on the processor (UiState::panelsOnProcessor), for the 3D view to draw over
+    // its picture when it is drawn there; none when they show an OpenGL texture or the frame is not the display's.
+    render::Renderer::RasterOverlay panelsOverlay(int framebufferWidth, int framebufferHeight) const;
 
     const render::GlFunctions& gl_;
     AppOptions options_;
@@ -55,6 +61,7 @@ private:
     std::unique_ptr<ViewportScene> scene_;
     ViewportControls controls_;
     AppState state_;
+    bool panelsOnProcessor_ = false;
 };
 
 }  // namespace dropscope::gui

@@ -47,6 +47,7 @@ void drawMainMenu(AppState& state) {
         ImGui::MenuItem("Grid", nullptr, &view.layers.grid);
         ImGui::MenuItem("Translucent shapes", nullptr, &view.layers.render.translucent);
         ImGui::MenuItem("Draw spheres and lines on the processor", nullptr, &view.layers.render.processorRaster);
+        ImGui::MenuItem("Draw the panels there too", nullptr, &state.ui.panelsOnProcessor);
         if (ImGui::IsItemHovered()) {
             ImGui::SetTooltip(
                 "Faster than a software OpenGL (llvmpipe, on by default there); a view holding\n"

@@ -30,6 +30,9 @@ struct UiState {
     std::filesystem::path lastScreenshot;
     ItemProbe itemProbe;  // AppOptions::itemProbe
     PanelState panels;    // started afresh when a scene is opened
+    // Whether a frame whose 3D view is drawn on the processor gets its panels drawn there too, into the same
+    // picture, when they show only text and shapes (gui/platform/ImGuiRasteriser); else OpenGL draws them.
+    bool panelsOnProcessor = true;
 };
 
 }  // namespace dropscope::gui

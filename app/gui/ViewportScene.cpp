@@ -167,7 +167,7 @@ bool ViewportScene::recolour(const AppState& state, const ViewKey& key) {
     return true;
 }
 
-void ViewportScene::draw(AppState& state, int width, int height) {
+bool ViewportScene::draw(AppState& state, int width, int height, const render::Renderer::RasterOverlay& overlay) {
     if (const ViewKey key = viewKey(state); key != builtFrom_ && !recolour(state, key)) rebuild(state, key);
     ViewState& view = state.view;
     const double aspect = static_cast<double>(width) / static_cast<double>(std::max(height, 1));
@@ -188,25 +188,43 @@ void ViewportScene::draw(AppState& state, int width, int height) {
     gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
     const bool keepable = keepImage_ && sampleBuffers == 0 && unkeepableSize_ != std::pair{width, height};
     if (keepable && kept_ == drawn) {
-        image_.copyTo(static_cast<GLuint>(target.draw));
-        ++copiedFrames_;
-        lastDrawn_ = drawn;
-        return;
+        if (!keptPicture_) {
+            image_.copyTo(static_cast<GLuint>(target.draw));
+            ++copiedFrames_;
+            lastDrawn_ = drawn;
+            return false;
+        }
+        if (renderer_.showHeld(*keptPicture_, width, height, overlay)) {
+            ++copiedFrames_;
+            lastDrawn_ = drawn;
+            return overlay != nullptr;
+        }
     }
-    bool keep = false;
-    if (keepable && lastDrawn_ == drawn) {
-        kept_.reset();  // the image is drawn over, or dropped
-        keep = image_.bindForDrawing(width, height);
-        if (!keep) unkeepableSize_ = std::pair{width, height};
-    }
-    renderer_.draw(view.camera, view.layers.render, width, height);
-    ++drawnFrames_;
+    // A picture drawn on the processor is kept by the renderer, which holds it before the overlay (a copy in
+    // memory); one drawn by OpenGL is drawn into image_ and copied out.
+    const bool onProcessor = renderer_.drawsOnProcessor(view.layers.render, width, height);
+    const bool keep = keepable && lastDrawn_ == drawn;
+    bool keepInImage = false;
     if (keep) {
+        kept_.reset();  // the image is drawn over, or dropped
+        keptPicture_.reset();
+        if (!onProcessor) {
+            keepInImage = image_.bindForDrawing(width, height);
+            if (!keepInImage) unkeepableSize_ = std::pair{width, height};
+        }
+    }
+    const bool overlaid = renderer_.draw(view.camera, view.layers.render, width, height, overlay, keep && onProcessor);
+    ++drawnFrames_;
+    if (keepInImage) {
         target.restore(gl_);
         image_.copyTo(static_cast<GLuint>(target.draw));
         kept_ = drawn;
+    } else if (keep && onProcessor && renderer_.lastFrameOnProcessor()) {
+        kept_ = drawn;
+        keptPicture_ = renderer_.heldPicture();
     }
     lastDrawn_ = drawn;
+    return overlaid;
 }
 
 }  // namespace dropscope::gui

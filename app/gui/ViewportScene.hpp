@@ -49,8 +49,10 @@ public:
         : gl_(gl), renderer_(gl), image_(gl), keepImage_(keepImage) {}
 
     // Rebuilds the shapes and layers when the key changed, fits or clips the camera, and draws into the
-    // bound framebuffer, or copies the kept picture there when it shows this view.
-    void draw(AppState& state, int width, int height);
+    // bound framebuffer, or copies the kept picture there when it shows this view. A view drawn on the processor
+    // (render::RenderOptions::processorRaster) gets `overlay` drawn over it before it is handed over; returns whether
+    // it did.
+    bool draw(AppState& state, int width, int height, const render::Renderer::RasterOverlay& overlay = {});
 
     // The bounds of the shapes as last drawn (render::sceneBounds): they size the source handles.
     const Eigen::AlignedBox3d& sceneBounds() const { return bounds_; }
@@ -97,7 +99,8 @@ private:
     render::OffscreenImage image_;
     bool keepImage_ = true;
     std::optional<DrawnView> lastDrawn_;                 // the view of the last frame
-    std::optional<DrawnView> kept_;                      // the view image_ holds
+    std::optional<DrawnView> kept_;                      // the view image_ or the renderer's held picture holds
+    std::optional<std::uint64_t> keptPicture_;           // the renderer's held picture (heldPicture), if it holds it
     std::optional<std::pair<int, int>> unkeepableSize_;  // a size the driver could not make image_ at
     std::uint64_t drawnFrames_ = 0;
     std::uint64_t copiedFrames_ = 0;

@@ -576,6 +576,10 @@ bool Renderer::roundedWithin(const glm::dvec3& eye, double reach) const {
     });
 }
 
+bool Renderer::drawsOnProcessor(const RenderOptions& options, int width, int height) const {
+    return options.processorRaster && processorDraws(options, width, height);
+}
+
 bool Renderer::processorDraws(const RenderOptions& options, int width, int height) const {
     const bool shapesDrawable =
         !options.shapes || (!options.translucent && roundedAllSpheres_ && boxes_->count == 0 && meshes_.empty());
@@ -609,15 +613,27 @@ bool Renderer::readyToHandOver(int width, int height) {
     return complete;
 }
 
-void Renderer::drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices) {
-    const int width = view.width;
-    const int height = view.height;
+void Renderer::drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices,
+                               const RasterOverlay& overlay, bool hold) {
     RasterContent content;
     if (options.shapes) content.spheres = rasterSpheres_;
     content.markers = rasterMarkers_;
     content.lines = std::span<const LineVertex>(rasterLines_).first(static_cast<std::size_t>(lineVertices));
     rasterise(content, view, options.background, rasterImage_, std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+    ++pictures_;
+    if (hold) {
+        heldColour_ = rasterImage_.colour();
+        heldWidth_ = rasterImage_.width();
+        heldHeight_ = rasterImage_.height();
+        heldPicture_ = pictures_;
+    }
+    handOver(overlay);
+}
 
+void Renderer::handOver(const RasterOverlay& overlay) {
+    if (overlay) overlay(rasterImage_);
+    const int width = rasterImage_.width();
+    const int height = rasterImage_.height();
     // The upload with the pixel store and bindings it needs, the caller's put back after.
     GLint texture = 0;
     GLint unpackBuffer = 0;
@@ -646,11 +662,26 @@ void Renderer::drawOnProcessor(const RasterView& view, const RenderOptions& opti
     caller.restore(gl_);
 }
 
+bool Renderer::showHeld(std::uint64_t picture, int width, int height, const RasterOverlay& overlay) {
+    if (picture == 0 || picture != heldPicture_ || heldWidth_ != width || heldHeight_ != height ||
+        !readyToHandOver(width, height)) {
+        return false;
+    }
+    rasterImage_.resize(width, height);  // the same stride: the held rows are copied as they lie
+    std::copy(heldColour_.begin(), heldColour_.end(), rasterImage_.colourRow(0));
+    const bool scissor = gl_.IsEnabled(GL_SCISSOR_TEST) == GL_TRUE;  // the whole picture, as OffscreenImage's copy
+    if (scissor) gl_.Disable(GL_SCISSOR_TEST);
+    handOver(overlay);
+    if (scissor) gl_.Enable(GL_SCISSOR_TEST);
+    return true;
+}
+
 void Renderer::drawMeshes(const FrameUniforms& frame, float opacity) {
     for (const auto& mesh : meshes_) drawShapes(*mesh.second, *box_, frame, opacity);
 }
 
-void Renderer::draw(const Camera& camera, const RenderOptions& options, int width, int height) {
+bool Renderer::draw(const Camera& camera, const RenderOptions& options, int width, int height,
+                    const RasterOverlay& overlay, bool hold) {
     Camera local = camera;  // the same camera, in anchor-relative coordinates
     const glm::dvec3 origin(anchor_.origin.x(), anchor_.origin.y(), anchor_.origin.z());
     local.eye -= origin;
@@ -690,11 +721,10 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
                               !roundedWithin(local.eye, nearReach);
     const bool chordsDrawn = options.lines && chordsFrom_ < lines_->count && !chordsHidden;
     apartInLastFrame_ = 0;
-    lastFrameOnProcessor_ =
-        options.processorRaster && processorDraws(options, width, height) && readyToHandOver(width, height);
+    lastFrameOnProcessor_ = drawsOnProcessor(options, width, height) && readyToHandOver(width, height);
     if (lastFrameOnProcessor_) {
-        drawOnProcessor(view, options, options.lines ? (chordsHidden ? chordsFrom_ : lines_->count) : 0);
-        return;
+        drawOnProcessor(view, options, options.lines ? (chordsHidden ? chordsFrom_ : lines_->count) : 0, overlay, hold);
+        return overlay != nullptr;
     }
     gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     drawShapes(*markers_, *impostor_, frame, 1.0f);
@@ -741,6 +771,7 @@ void Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
         gl_.Disable(GL_BLEND);
     }
     gl_.BindVertexArray(0);
+    return false;
 }
 
 }  // namespace dropscope::render

@@ -9,6 +9,7 @@
 #include "render/ShaderProgram.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -30,8 +31,8 @@ inline constexpr float kExactPointPixels = 32.0f;
 inline constexpr int kApartMostSpheres = 300000;
 
 // Frames of more pixels than this (a 3840 x 2160 screen) are drawn by OpenGL even with
-// RenderOptions::processorRaster: the processor's picture costs 8 bytes a pixel, kept between frames, and a
-// screenshot of up to 8192 x 8192 pixels would keep half a gigabyte.
+// RenderOptions::processorRaster: the processor's picture costs 8 bytes a pixel, kept between frames (12 with a
+// picture held for the kept view), and a screenshot of up to 8192 x 8192 pixels would keep half a gigabyte.
 inline constexpr long kProcessorMostPixels = 3840L * 2160L;
 
 // What to draw; every layer can be switched off.
@@ -99,7 +100,21 @@ public:
     // Small spheres (event markers): instances of the impostor, drawn with the shapes, always opaque.
     void setMarkers(const std::vector<ShapeInstance>& markers);
 
-    void draw(const Camera& camera, const RenderOptions& options, int width, int height);
+    // What a frame drawn on the processor gets drawn over it before it is handed over (the app's panels:
+    // gui/platform/ImGuiRasteriser), in the picture's own pixels.
+    using RasterOverlay = std::function<void(RasterImage&)>;
+    // Draws the frame into the framebuffer bound for drawing. Drawn on the processor, `overlay` (when there is one)
+    // is drawn over it before the hand-over, and with `hold` the picture without the overlay is held for showHeld.
+    // Returns whether the overlay was drawn.
+    bool draw(const Camera& camera, const RenderOptions& options, int width, int height,
+              const RasterOverlay& overlay = {}, bool hold = false);
+    // The last picture held by draw (0: none yet). showHeld hands it over again, with `overlay` drawn over it, into
+    // the framebuffer bound for drawing (the whole picture, whatever the scissor box), while `picture` is still
+    // heldPicture() and its size width x height; false, drawing nothing, otherwise.
+    std::uint64_t heldPicture() const { return heldPicture_; }
+    bool showHeld(std::uint64_t picture, int width, int height, const RasterOverlay& overlay);
+    // Whether a frame of these options and size is drawn on the processor (when OpenGL can take its picture).
+    bool drawsOnProcessor(const RenderOptions& options, int width, int height) const;
     // How many spheres apart (RenderOptions::apartSpheres) the last frame offered to the points at their
     // centre's depth: those of its chunks in view (each sphere's width and place then decide).
     std::size_t apartInLastFrame() const { return apartInLastFrame_; }
@@ -156,8 +171,11 @@ private:
     // Whether the processor's picture can be blitted into the framebuffer bound for drawing (not multisampled) and
     // its texture made for width x height.
     bool readyToHandOver(int width, int height);
-    // The frame drawn by rasterise into rasterImage_, copied into the framebuffer bound for drawing.
-    void drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices);
+    // The frame drawn by rasterise into rasterImage_ (held first with `hold`), then handed over.
+    void drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices,
+                         const RasterOverlay& overlay, bool hold);
+    // rasterImage_, with `overlay` drawn over it, uploaded and copied into the framebuffer bound for drawing.
+    void handOver(const RasterOverlay& overlay);
 
     const GlFunctions& gl_;
     Anchor anchor_;
@@ -193,7 +211,12 @@ private:
     bool markersAllSpheres_ = true;
     std::vector<LineVertex> rasterLines_;
     RasterImage rasterImage_;
-    GLuint rasterTexture_ = 0;  // rasterImage_ uploaded, read through rasterFramebuffer_
+    std::vector<std::uint32_t> heldColour_;  // rasterImage_'s colour as drawn with `hold`, before its overlay
+    int heldWidth_ = 0;
+    int heldHeight_ = 0;
+    std::uint64_t heldPicture_ = 0;
+    std::uint64_t pictures_ = 0;  // pictures drawn on the processor
+    GLuint rasterTexture_ = 0;    // rasterImage_ uploaded, read through rasterFramebuffer_
     GLuint rasterFramebuffer_ = 0;
     int rasterTextureWidth_ = 0;
     int rasterTextureHeight_ = 0;

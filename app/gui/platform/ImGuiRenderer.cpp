@@ -1,5 +1,7 @@
 #include "gui/platform/ImGuiRenderer.hpp"
 
+#include "gui/platform/ImGuiClip.hpp"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -83,20 +85,6 @@ private:
     GLint activeTexture_ = GL_TEXTURE0;
     GLint texture0_ = 0;  // the 2D texture bound to unit 0
 };
-
-// A clip rectangle in framebuffer pixels, origin at the top-left corner like ImGui's.
-struct PixelRect {
-    float minX, minY, maxX, maxY;
-    bool empty() const { return maxX <= minX || maxY <= minY; }
-};
-
-PixelRect framebufferClip(const ImDrawData& data, const ImVec4& clip, int framebufferWidth, int framebufferHeight) {
-    const ImVec2 origin = data.DisplayPos;
-    const ImVec2 scale = data.FramebufferScale;
-    return {std::max((clip.x - origin.x) * scale.x, 0.0f), std::max((clip.y - origin.y) * scale.y, 0.0f),
-            std::min((clip.z - origin.x) * scale.x, static_cast<float>(framebufferWidth)),
-            std::min((clip.w - origin.y) * scale.y, static_cast<float>(framebufferHeight))};
-}
 
 }  // namespace
 
@@ -224,12 +212,9 @@ void ImGuiRenderer::drawCommands(const ImDrawData& data, int framebufferWidth, i
                 }
                 continue;
             }
-            const PixelRect clip = framebufferClip(data, command.ClipRect, framebufferWidth, framebufferHeight);
-            if (clip.empty() || command.ElemCount == 0) continue;
-            // GL's scissor box counts rows from the bottom.
-            const float bottom = static_cast<float>(framebufferHeight) - clip.maxY;
-            gl_.Scissor(static_cast<GLint>(clip.minX), static_cast<GLint>(bottom),
-                        static_cast<GLsizei>(clip.maxX - clip.minX), static_cast<GLsizei>(clip.maxY - clip.minY));
+            const ScissorBox box = scissorBox(data, command.ClipRect, framebufferWidth, framebufferHeight);
+            if (box.empty() || command.ElemCount == 0) continue;
+            gl_.Scissor(box.x, box.y, box.width, box.height);
             gl_.BindTexture(GL_TEXTURE_2D, toTextureName(command.GetTexID()));
             const std::size_t firstIndex = listIndex + command.IdxOffset;
             gl_.DrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(command.ElemCount), kIndexType,

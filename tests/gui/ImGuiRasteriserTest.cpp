@@ -1,0 +1,154 @@
+// ImGui's panels drawn on the processor (gui/platform/ImGuiRasteriser): the picture ImGuiRenderer draws with OpenGL
+// (llvmpipe) of the app's own draw data, every panel open, over the same background.
+#include "AppHarness.hpp"
+#include "UiTestScenes.hpp"
+
+#include "gui/platform/ImGuiRasteriser.hpp"
+#include "gui/platform/ImGuiRenderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdlib>
+
+namespace dropscope::gui::testing {
+namespace {
+
+constexpr int kWidth = 1280;
+constexpr int kHeight = 800;
+// OpenGL's blending and filtering round in their own ways (llvmpipe blends bytes in fixed point, filters with
+// 8-bit weights): a pixel may differ from the processor's by this much in a channel.
+constexpr int kRoundingTolerance = 2;
+// Pixels whose centres lie within rounding of a triangle's edge may go either way: at most this share differ by
+// more (3 of the 1,024,000 here).
+constexpr double kEdgeShare = 1e-4;
+
+class ImGuiRasteriser : public ::testing::Test {
+protected:
+    ImGuiRasteriser() {
+        ImGuiIO& io = ImGui::GetIO();
+        fontTexture_ = io.Fonts->TexID;
+        unsigned char* pixels = nullptr;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &atlas_.width, &atlas_.height);
+        atlas_.rgba = pixels;
+    }
+
+    // The last frame's panels drawn on the processor over `background` with `threads` bands.
+    render::RasterImage drawnOnProcessor(std::uint32_t background, unsigned threads) const {
+        render::RasterImage image;
+        image.resize(kWidth, kHeight);
+        for (int y = 0; y < kHeight; ++y) std::fill_n(image.colourRow(y), image.stride(), background);
+        rasteriseImGui(*ImGui::GetDrawData(), atlas_, image, threads);
+        return image;
+    }
+
+    AppHarness harness_{kCloudScene, kWidth, kHeight};
+    ImTextureID fontTexture_ = nullptr;
+    AtlasPixels atlas_;
+};
+
+TEST_F(ImGuiRasteriser, DrawsThePanelsOpenGLDraws) {
+    const ImDrawData& data = *ImGui::GetDrawData();
+    ASSERT_TRUE(rasterisable(data, fontTexture_));
+    ASSERT_GT(data.TotalVtxCount, 1000) << "every panel open";
+    const render::GlFunctions& gl = harness_.gl();
+    for (const std::uint32_t background : {0xFF1C1714u, 0x00000000u, 0xFFFFFFFFu}) {
+        SCOPED_TRACE(background);
+        gl.ClearColor(
+            static_cast<float>(background & 0xFFu) / 255.0f, static_cast<float>(background >> 8 & 0xFFu) / 255.0f,
+            static_cast<float>(background >> 16 & 0xFFu) / 255.0f, static_cast<float>(background >> 24) / 255.0f);
+        gl.Clear(GL_COLOR_BUFFER_BIT);
+        {
+            ImGuiRenderer renderer(gl);  // the app's font texture stays: the draw data names it
+            renderer.render(&data);
+        }
+        ImGui::GetIO().Fonts->SetTexID(fontTexture_);
+        const snapshot::Image byOpenGL = harness_.image();
+        const render::RasterImage onProcessor = drawnOnProcessor(background, 2);
+        int differing = 0;
+        int changed = 0;
+        for (int row = 0; row < kHeight; ++row) {
+            for (int x = 0; x < kWidth; ++x) {
+                const std::uint8_t* expected = &byOpenGL.rgba[4 * (static_cast<std::size_t>(row) * kWidth + x)];
+                const std::uint32_t drawn = onProcessor.colourAt(x, kHeight - 1 - row);
+                bool differs = false;
+                for (int k = 0; k < 4; ++k) {
+                    differs = differs || std::abs(static_cast<int>(drawn >> (8 * k) & 0xFFu) -
+                                                  static_cast<int>(expected[k])) > kRoundingTolerance;
+                }
+                differing += differs ? 1 : 0;
+                changed += drawn != background ? 1 : 0;
+            }
+        }
+        EXPECT_GT(changed, kWidth * kHeight / 3) << "the panels cover a good part of the window";
+        EXPECT_LE(differing, static_cast<int>(kEdgeShare * kWidth * kHeight))
+            << differing << " of " << kWidth * kHeight << " pixels differ";
+    }
+}
+
+TEST_F(ImGuiRasteriser, AnyNumberOfBandsDrawsTheSamePicture) {
+    const render::RasterImage one = drawnOnProcessor(0xFF1C1714u, 1);
+    for (const unsigned threads : {2u, 3u, 7u}) {
+        EXPECT_EQ(drawnOnProcessor(0xFF1C1714u, threads).colour(), one.colour()) << threads << " bands";
+    }
+}
+
+// The pixels of two frames of the window that differ by more than kRoundingTolerance in some channel.
+int differingPixels(const snapshot::Image& a, const snapshot::Image& b) {
+    int differing = 0;
+    for (std::size_t pixel = 0; pixel + 3 < a.rgba.size(); pixel += 4) {
+        bool differs = false;
+        for (std::size_t k = 0; k < 4; ++k) {
+            differs = differs || std::abs(static_cast<int>(a.rgba[pixel + k]) - static_cast<int>(b.rgba[pixel + k])) >
+                                     kRoundingTolerance;
+        }
+        differing += differs ? 1 : 0;
+    }
+    return differing;
+}
+
+// The app over a software OpenGL draws its panels into the 3D view's picture on the processor: the window is the one
+// OpenGL's panels make, when the view is drawn afresh (orbiting) and when its kept picture is copied.
+TEST_F(ImGuiRasteriser, TheAppsWindowIsTheOneWithOpenGLsPanels) {
+    const int most = static_cast<int>(kEdgeShare * kWidth * kHeight);
+    for (const bool orbiting : {true, false}) {
+        SCOPED_TRACE(orbiting ? "orbiting" : "the kept view copied");
+        const auto frame = [&](bool panelsOnProcessor) {
+            harness_.state().ui.panelsOnProcessor = panelsOnProcessor;
+            if (orbiting) harness_.state().view.camera.orbit(0.01, 0.0);
+            harness_.frames(orbiting ? 1 : 3);
+            if (!orbiting) {
+                EXPECT_GT(harness_.app().viewport().copiedFrames(), 0u);
+            }
+            EXPECT_EQ(harness_.app().panelsLastOnProcessor(), panelsOnProcessor);
+            return harness_.image();
+        };
+        const snapshot::Image byOpenGL = frame(false);
+        if (orbiting) harness_.state().view.camera.orbit(-0.01, 0.0);  // the same view again
+        const snapshot::Image onProcessor = frame(true);
+        EXPECT_LE(differingPixels(onProcessor, byOpenGL), most);
+    }
+}
+
+// A frame whose panels show an OpenGL texture (a plot, a detector's image) leaves them to OpenGL.
+TEST_F(ImGuiRasteriser, PanelsShowingAnotherTextureAreLeftToOpenGL) {
+    ImDrawList list(ImGui::GetDrawListSharedData());
+    list._ResetForNewFrame();
+    list.PushClipRectFullScreen();
+    list.PushTextureID(fontTexture_);
+    list.AddRectFilled({10.0f, 10.0f}, {50.0f, 30.0f}, IM_COL32(200, 100, 50, 255));
+    ImDrawList* lists[] = {&list};
+    ImDrawData data;
+    data.Valid = true;
+    data.CmdLists = lists;
+    data.CmdListsCount = 1;
+    data.DisplaySize = {kWidth, kHeight};
+    data.FramebufferScale = {1.0f, 1.0f};
+    EXPECT_TRUE(rasterisable(data, fontTexture_));
+    const auto otherTexture = reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(12345));
+    list.AddImage(otherTexture, {60.0f, 10.0f}, {90.0f, 40.0f});
+    EXPECT_FALSE(rasterisable(data, fontTexture_));
+}
+
+}  // namespace
+}  // namespace dropscope::gui::testing
