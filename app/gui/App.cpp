@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <thread>
 
 namespace dropscope::gui {
 
@@ -82,8 +81,8 @@ void App::frame(const InputFrame& input) {
 
     const int width = std::max(input.framebufferWidth, 1);
     const int height = std::max(input.framebufferHeight, 1);
-    panelsOnProcessor_ = scene_->draw(state_, width, height, panelsOverlay(width, height));
-    if (!panelsOnProcessor_) imguiRenderer_->render(ImGui::GetDrawData());
+    panelsLastOnProcessor_ = scene_->draw(state_, width, height, panelsOverlay(width, height));
+    if (!panelsLastOnProcessor_) imguiRenderer_->render(ImGui::GetDrawData());
     if (state_.ui.screenshot && state_.ui.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
 }
 
@@ -98,9 +97,7 @@ render::Renderer::RasterOverlay App::panelsOverlay(int framebufferWidth, int fra
     unsigned char* pixels = nullptr;
     ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &atlas.width, &atlas.height);
     atlas.rgba = pixels;
-    return [data, atlas](render::RasterImage& image) {
-        rasteriseImGui(*data, atlas, image, std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
-    };
+    return [data, atlas](render::RasterImage& image) { rasteriseImGui(*data, atlas, image, render::rasterThreads()); };
 }
 
 // A trace or a ray tree running, a screenshot due, or a text field being edited (its cursor blinks).

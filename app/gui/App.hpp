@@ -44,7 +44,7 @@ public:
     const ViewportScene& viewport() const { return *scene_; }
 
     // Whether the last frame's panels were drawn on the processor, into its 3D view's picture (panelsOverlay).
-    bool panelsLastOnProcessor() const { return panelsOnProcessor_; }
+    bool panelsLastOnProcessor() const { return panelsLastOnProcessor_; }
 
 private:
     void buildUi();
@@ -61,7 +61,7 @@ private:
     std::unique_ptr<ViewportScene> scene_;
     ViewportControls controls_;
     AppState state_;
-    bool panelsOnProcessor_ = false;
+    bool panelsLastOnProcessor_ = false;
 };
 
 }  // namespace dropscope::gui

@@ -47,11 +47,16 @@ void drawMainMenu(AppState& state) {
         ImGui::MenuItem("Grid", nullptr, &view.layers.grid);
         ImGui::MenuItem("Translucent shapes", nullptr, &view.layers.render.translucent);
         ImGui::MenuItem("Draw spheres and lines on the processor", nullptr, &view.layers.render.processorRaster);
-        ImGui::MenuItem("Draw the panels there too", nullptr, &state.ui.panelsOnProcessor);
         if (ImGui::IsItemHovered()) {
             ImGui::SetTooltip(
                 "Faster than a software OpenGL (llvmpipe, on by default there); a view holding\n"
                 "other shapes, translucent ones or detector screens is drawn by OpenGL.");
+        }
+        ImGui::MenuItem("Draw the panels there too", nullptr, &state.ui.panelsOnProcessor);
+        if (ImGui::IsItemHovered()) {
+            ImGui::SetTooltip(
+                "The panels drawn into the view's picture when it is drawn on the processor;\n"
+                "panels showing a plot or a detector's image are drawn by OpenGL.");
         }
         ImGui::EndMenu();
     }

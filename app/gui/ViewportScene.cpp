@@ -200,26 +200,26 @@ bool ViewportScene::draw(AppState& state, int width, int height, const render::R
             return overlay != nullptr;
         }
     }
-    // A picture drawn on the processor is kept by the renderer, which holds it before the overlay (a copy in
-    // memory); one drawn by OpenGL is drawn into image_ and copied out.
-    const bool onProcessor = renderer_.drawsOnProcessor(view.layers.render, width, height);
+    // A picture drawn on the processor with an overlay is kept by the renderer, which holds it before the overlay (a
+    // copy in memory), so that later frames draw their overlay over it; any other is drawn into image_ and copied out.
+    const bool hold = overlay && renderer_.drawsOnProcessor(view.layers.render, width, height);
     const bool keep = keepable && lastDrawn_ == drawn;
     bool keepInImage = false;
     if (keep) {
         kept_.reset();  // the image is drawn over, or dropped
         keptPicture_.reset();
-        if (!onProcessor) {
+        if (!hold) {
             keepInImage = image_.bindForDrawing(width, height);
             if (!keepInImage) unkeepableSize_ = std::pair{width, height};
         }
     }
-    const bool overlaid = renderer_.draw(view.camera, view.layers.render, width, height, overlay, keep && onProcessor);
+    const bool overlaid = renderer_.draw(view.camera, view.layers.render, width, height, overlay, keep && hold);
     ++drawnFrames_;
     if (keepInImage) {
         target.restore(gl_);
         image_.copyTo(static_cast<GLuint>(target.draw));
         kept_ = drawn;
-    } else if (keep && onProcessor && renderer_.lastFrameOnProcessor()) {
+    } else if (keep && hold && renderer_.lastFrameOnProcessor()) {
         kept_ = drawn;
         keptPicture_ = renderer_.heldPicture();
     }

@@ -41,7 +41,8 @@ ViewKey viewKey(const AppState& state);
 // is that one. Panels, tooltips and a running trace's progress redraw the window many times a second without
 // changing the view, and on a software renderer a view of 1e5 droplets takes tens of milliseconds to draw
 // (docs/performance.md, "The app"). A view that changes every frame (an orbit) is drawn straight into the
-// framebuffer, with nothing copied.
+// framebuffer, with nothing copied. A view drawn on the processor with an overlay (the app's panels) is kept by the
+// renderer instead, as its colours before the overlay (render::Renderer::showHeld).
 class ViewportScene {
 public:
     // `keepImage` false draws the view in every frame (the frame benchmark's reference).

@@ -374,6 +374,8 @@ const DrawBand kFastestDrawBand = fastestDrawBand();
 
 bool rasterCodeHasAvx2() { return kFastestDrawBand == drawBandAvx2; }
 
+unsigned rasterThreads() { return std::clamp(std::thread::hardware_concurrency(), 1u, 8u); }
+
 void rasterise(const RasterContent& content, const RasterView& view, const Colour& background, RasterImage& image,
                unsigned threads, RasterCode code) {
     image.resize(view.width, view.height);

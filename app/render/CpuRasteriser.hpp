@@ -96,4 +96,7 @@ void rasterise(const RasterContent& content, const RasterView& view, const Colou
 // Whether RasterCode::fastest is the AVX2 copy on this processor.
 bool rasterCodeHasAvx2();
 
+// The threads a frame drawn on the processor is cut into: the processor's, up to 8.
+unsigned rasterThreads();
+
 }  // namespace dropscope::render

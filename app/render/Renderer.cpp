@@ -12,7 +12,6 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
-#include <thread>
 
 namespace dropscope::render {
 
@@ -577,10 +576,10 @@ bool Renderer::roundedWithin(const glm::dvec3& eye, double reach) const {
 }
 
 bool Renderer::drawsOnProcessor(const RenderOptions& options, int width, int height) const {
-    return options.processorRaster && processorDraws(options, width, height);
+    return options.processorRaster && processorCanDraw(options, width, height);
 }
 
-bool Renderer::processorDraws(const RenderOptions& options, int width, int height) const {
+bool Renderer::processorCanDraw(const RenderOptions& options, int width, int height) const {
     const bool shapesDrawable =
         !options.shapes || (!options.translucent && roundedAllSpheres_ && boxes_->count == 0 && meshes_.empty());
     return markersAllSpheres_ && shapesDrawable && (!options.lines || surfaces_->count == 0) &&
@@ -619,7 +618,7 @@ void Renderer::drawOnProcessor(const RasterView& view, const RenderOptions& opti
     if (options.shapes) content.spheres = rasterSpheres_;
     content.markers = rasterMarkers_;
     content.lines = std::span<const LineVertex>(rasterLines_).first(static_cast<std::size_t>(lineVertices));
-    rasterise(content, view, options.background, rasterImage_, std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+    rasterise(content, view, options.background, rasterImage_, rasterThreads());
     ++pictures_;
     if (hold) {
         heldColour_ = rasterImage_.colour();

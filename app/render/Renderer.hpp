@@ -167,7 +167,7 @@ private:
     // them, or the near plane cut one open.
     bool roundedWithin(const glm::dvec3& eye, double reach) const;
     // Whether this frame's layers are all the processor draws: opaque spheres, markers that are spheres, lines.
-    bool processorDraws(const RenderOptions& options, int width, int height) const;
+    bool processorCanDraw(const RenderOptions& options, int width, int height) const;
     // Whether the processor's picture can be blitted into the framebuffer bound for drawing (not multisampled) and
     // its texture made for width x height.
     bool readyToHandOver(int width, int height);

@@ -24,7 +24,7 @@ inline ScissorBox scissorBox(const ImDrawData& data, const ImVec4& clip, int fra
     const float minY = std::max((clip.y - origin.y) * scale.y, 0.0f);
     const float maxX = std::min((clip.z - origin.x) * scale.x, static_cast<float>(framebufferWidth));
     const float maxY = std::min((clip.w - origin.y) * scale.y, static_cast<float>(framebufferHeight));
-    if (maxX <= minX || maxY <= minY) return {};
+    if (!(maxX > minX) || !(maxY > minY)) return {};  // empty, or not a number
     return {static_cast<int>(minX), static_cast<int>(static_cast<float>(framebufferHeight) - maxY),
             static_cast<int>(maxX - minX), static_cast<int>(maxY - minY)};
 }

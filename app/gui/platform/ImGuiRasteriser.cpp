@@ -48,9 +48,12 @@ inline std::uint32_t over(std::uint32_t colour, std::uint32_t under) {
     return over(ownShare(colour), colour >> 24, under);
 }
 
-// A value in [0, 1] as a byte, rounded to nearest.
+// A coordinate within reach of int (ImGui's lie within a few window sizes), a NaN as 0.
+inline float bounded(float edge) { return std::isnan(edge) ? 0.0f : std::clamp(edge, -1e6f, 1e6f); }
+
+// A value in [0, 1] as a byte, rounded to nearest (a NaN as 0).
 inline std::uint32_t toByte(float unit) {
-    return static_cast<std::uint32_t>(std::clamp(unit, 0.0f, 1.0f) * 255.0f + 0.5f);
+    return static_cast<std::uint32_t>((unit > 0.0f ? std::min(unit, 1.0f) : 0.0f) * 255.0f + 0.5f);
 }
 
 struct Rgba {
@@ -71,14 +74,13 @@ Rgba sample(const AtlasPixels& atlas, float u, float v) {
     const float y0 = std::floor(y);
     const float fx = x - x0;
     const float fy = y - y0;
-    // The atlas's coordinates stay within a few of its sizes (ImGui's lie in [0, 1]), far inside int's reach.
     const auto wrap = [](int index, int size) {
         if (index >= 0 && index < size) return index;
         const int i = index % size;
         return i < 0 ? i + size : i;
     };
-    const int ix = static_cast<int>(std::clamp(x0, -1e6f, 1e6f));
-    const int iy = static_cast<int>(std::clamp(y0, -1e6f, 1e6f));
+    const int ix = static_cast<int>(bounded(x0));
+    const int iy = static_cast<int>(bounded(y0));
     const int xs[2] = {wrap(ix, atlas.width), wrap(ix + 1, atlas.width)};
     const int ys[2] = {wrap(iy, atlas.height), wrap(iy + 1, atlas.height)};
     Rgba out{};
@@ -118,18 +120,21 @@ Vertex vertexAt(const ImDrawData& data, const ImDrawVert& vertex) {
             (vertex.pos.y - data.DisplayPos.y) * data.FramebufferScale.y, vertex.uv.x, vertex.uv.y, vertex.col};
 }
 
-// The first column (or row) whose pixel centre lies at or past `edge`.
-inline int firstCentreFrom(float edge) { return static_cast<int>(std::ceil(edge - 0.5f)); }
+// The first column whose pixel centre lies at or right of `edge`.
+inline int firstCentreFrom(float edge) { return static_cast<int>(std::ceil(bounded(edge) - 0.5f)); }
+// The first row whose pixel centre lies below `edge` (ImGui's y grows downwards).
+inline int firstCentreBelow(float edge) { return static_cast<int>(std::floor(bounded(edge) - 0.5f)) + 1; }
 
 // An axis-aligned quad of one colour whose atlas coordinates are affine across it (ImDrawList::PrimRect and
 // PrimRectUV: corners a, (c.x, a.y), c, (a.x, c.y), drawn as a b c and a c d): the two triangles' pixels are the
-// rectangle's, whose centres lie within it (its top and left edges included), with the same values.
+// rectangle's, whose centres lie within it (on its edges, those of the left and the bottom one: drawTriangle), with
+// the same values.
 void drawRectangle(const Vertex& a, const Vertex& c, const AtlasPixels& atlas, const PixelBox& box,
                    render::RasterImage& image) {
     const int left = std::max(firstCentreFrom(std::min(a.x, c.x)), box.left);
     const int right = std::min(firstCentreFrom(std::max(a.x, c.x)), box.right);
-    const int top = std::max(firstCentreFrom(std::min(a.y, c.y)), box.top);
-    const int bottom = std::min(firstCentreFrom(std::max(a.y, c.y)), box.bottom);
+    const int top = std::max(firstCentreBelow(std::min(a.y, c.y)), box.top);
+    const int bottom = std::min(firstCentreBelow(std::max(a.y, c.y)), box.bottom);
     if (left >= right || top >= bottom) return;
     const Rgba colour = unpack(a.colour);
     const int height = image.height();
@@ -196,9 +201,10 @@ void drawRectangle(const Vertex& a, const Vertex& c, const AtlasPixels& atlas, c
     }
 }
 
-// Any triangle: the pixels whose centres lie inside (on an edge, the top and left ones, as OpenGL's rasterisers
-// break the tie), with the colour and atlas coordinate interpolated linearly (ImGui's positions are projected
-// orthographically, so linear is what OpenGL interpolates).
+// Any triangle: the pixels whose centres lie inside, with the colour and atlas coordinate interpolated linearly
+// (ImGui's positions are projected orthographically, so linear is what OpenGL interpolates). A centre on an edge
+// goes to the triangle on its right or, on a level edge, above it on the screen: what llvmpipe does in a window's
+// framebuffer, which Mesa keeps with its top row first (its "bottom edge rule"; tested on edges through centres).
 void drawTriangle(const Vertex& p0, const Vertex& p1, const Vertex& p2, const AtlasPixels& atlas, const PixelBox& box,
                   render::RasterImage& image) {
     const Vertex* v[3] = {&p0, &p1, &p2};
@@ -221,14 +227,15 @@ void drawTriangle(const Vertex& p0, const Vertex& p1, const Vertex& p2, const At
     const int bottom = std::min(firstCentreFrom(maxY) + 1, box.bottom);
     if (left >= right || top >= bottom) return;
     // Edge k runs from v[k + 1] to v[k + 2]; its function is area's share of the vertex opposite, v[k]. With the
-    // positive orientation (y down), an edge is a top one when it runs along +x level, a left one when it runs up.
+    // positive orientation (y down), a level edge running along -x has the triangle above it, and an edge running
+    // up (-y) has it on its right.
     std::array<bool, 3> inclusive{};
     for (int k = 0; k < 3; ++k) {
         const Vertex& from = *v[(k + 1) % 3];
         const Vertex& to = *v[(k + 2) % 3];
         const float dx = to.x - from.x;
         const float dy = to.y - from.y;
-        inclusive[static_cast<std::size_t>(k)] = (dy == 0.0f && dx > 0.0f) || dy < 0.0f;
+        inclusive[static_cast<std::size_t>(k)] = (dy == 0.0f && dx < 0.0f) || dy < 0.0f;
     }
     const Rgba colours[3] = {unpack(v[0]->colour), unpack(v[1]->colour), unpack(v[2]->colour)};
     // The atlas's white pixel under an edge's fringe, or any one texel: sampled once.
@@ -256,8 +263,8 @@ void drawTriangle(const Vertex& p0, const Vertex& p1, const Vertex& p2, const At
                 to = from;
             }
         }
-        const int spanLeft = std::max(left, static_cast<int>(std::max(from, -1.0f)));
-        const int spanRight = std::min(right, static_cast<int>(std::min(to, 1e6f)) + 1);
+        const int spanLeft = std::max(left, static_cast<int>(bounded(from)));
+        const int spanRight = std::min(right, static_cast<int>(bounded(to)) + 1);
         std::uint32_t* pixels = image.colourRow(height - 1 - row);
         for (int x = spanLeft; x < spanRight; ++x) {
             const float px = static_cast<float>(x) + 0.5f;

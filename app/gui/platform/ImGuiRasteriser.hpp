@@ -19,7 +19,8 @@ bool rasterisable(const ImDrawData& data, ImTextureID fontTexture);
 
 // ImGui's draw data drawn over `image` (the framebuffer's size) as ImGuiRenderer draws it with OpenGL: each
 // command's triangles within its clip rectangle (the scissor box, as OpenGL's is cut from it), a pixel taken where its
-// centre lies inside (on an edge, the top and left ones), the vertex colour times the atlas (bilinear, repeating) at
+// centre lies inside (on an edge, as llvmpipe decides in a window: drawTriangle), the vertex colour times the atlas
+// (bilinear, repeating) at
 // the interpolated coordinate, blended with straight alpha over what is there (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA;
 // alpha GL_ONE, GL_ONE_MINUS_SRC_ALPHA) in 8-bit arithmetic rounded to nearest. The image's rows are cut into
 // `threads` bands, drawn at once; any count gives the same picture. docs/gui.md, "ImGui's panels on the processor".
