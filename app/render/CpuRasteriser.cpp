@@ -379,19 +379,21 @@ unsigned rasterThreads() { return std::clamp(std::thread::hardware_concurrency()
 void rasterise(const RasterContent& content, const RasterView& view, const Colour& background, RasterImage& image,
                unsigned threads, RasterCode code) {
     image.resize(view.width, view.height);
-    const int height = view.height;
-    const int bands = static_cast<int>(std::clamp(threads, 1u, static_cast<unsigned>(std::max(height, 1))));
     const std::uint32_t backgroundColour = packColour(background);
     const DrawBand drawBand = code == RasterCode::baseline ? drawBandBaseline : kFastestDrawBand;
-    const auto band = [&](int index) {
-        drawBand(content, view, backgroundColour, image, height * index / bands, height * (index + 1) / bands);
-    };
+    drawInBands(view.height, threads,
+                [&](int rowBegin, int rowEnd) { drawBand(content, view, backgroundColour, image, rowBegin, rowEnd); });
+}
+
+void drawInBands(int rows, unsigned threads, const std::function<void(int, int)>& drawRows) {
+    const int bands = static_cast<int>(std::clamp(threads, 1u, static_cast<unsigned>(std::max(rows, 1))));
+    const auto band = [&](int index) { drawRows(rows * index / bands, rows * (index + 1) / bands); };
     std::vector<std::thread> helpers;
     helpers.reserve(static_cast<std::size_t>(bands - 1));
     for (int k = 1; k < bands; ++k) {
         try {
             helpers.emplace_back(band, k);
-        } catch (const std::system_error&) {  // no thread to be had (a login node's process limit): this one draws it
+        } catch (const std::system_error&) {  // no thread to be had: this one draws the band
             band(k);
         }
     }

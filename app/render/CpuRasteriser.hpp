@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -98,5 +99,9 @@ bool rasterCodeHasAvx2();
 
 // The threads a frame drawn on the processor is cut into: the processor's, up to 8.
 unsigned rasterThreads();
+
+// drawRows(rowBegin, rowEnd) for `rows` rows cut into min(threads, rows) bands (at least one), drawn at once: on
+// helper threads and this one, or on this one when no thread is to be had (a login node's process limit).
+void drawInBands(int rows, unsigned threads, const std::function<void(int, int)>& drawRows);
 
 }  // namespace dropscope::render

@@ -33,56 +33,95 @@ protected:
         atlas_.rgba = pixels;
     }
 
-    // The last frame's panels drawn on the processor over `background` with `threads` bands.
-    render::RasterImage drawnOnProcessor(std::uint32_t background, unsigned threads) const {
+    // `data` (the last frame's panels unless given) drawn on the processor over `background` (RGBA8, red in the
+    // lowest byte) with `threads` bands.
+    render::RasterImage drawnOnProcessor(std::uint32_t background, unsigned threads,
+                                         const ImDrawData& data = *ImGui::GetDrawData()) const {
         render::RasterImage image;
         image.resize(kWidth, kHeight);
         for (int y = 0; y < kHeight; ++y) std::fill_n(image.colourRow(y), image.stride(), background);
-        rasteriseImGui(*ImGui::GetDrawData(), atlas_, image, threads);
+        rasteriseImGui(data, atlas_, image, threads);
         return image;
     }
-
-    AppHarness harness_{kCloudScene, kWidth, kHeight};
-    ImTextureID fontTexture_ = nullptr;
-    AtlasPixels atlas_;
-};
-
-TEST_F(ImGuiRasteriser, DrawsThePanelsOpenGLDraws) {
-    const ImDrawData& data = *ImGui::GetDrawData();
-    ASSERT_TRUE(rasterisable(data, fontTexture_));
-    ASSERT_GT(data.TotalVtxCount, 1000) << "every panel open";
-    const render::GlFunctions& gl = harness_.gl();
-    for (const std::uint32_t background : {0xFF1C1714u, 0x00000000u, 0xFFFFFFFFu}) {
-        SCOPED_TRACE(background);
-        gl.ClearColor(
-            static_cast<float>(background & 0xFFu) / 255.0f, static_cast<float>(background >> 8 & 0xFFu) / 255.0f,
-            static_cast<float>(background >> 16 & 0xFFu) / 255.0f, static_cast<float>(background >> 24) / 255.0f);
+    // `data` drawn by ImGuiRenderer over the window cleared to `background`, read back.
+    snapshot::Image drawnByOpenGL(const ImDrawData& data, std::uint32_t background) {
+        const render::GlFunctions& gl = harness_.gl();
+        const auto channel = [&](int k) { return static_cast<float>(background >> (8 * k) & 0xFFu) / 255.0f; };
+        gl.ClearColor(channel(0), channel(1), channel(2), channel(3));
         gl.Clear(GL_COLOR_BUFFER_BIT);
         {
             ImGuiRenderer renderer(gl);  // the app's font texture stays: the draw data names it
             renderer.render(&data);
         }
         ImGui::GetIO().Fonts->SetTexID(fontTexture_);
-        const snapshot::Image byOpenGL = harness_.image();
-        const render::RasterImage onProcessor = drawnOnProcessor(background, 2);
-        int differing = 0;
-        int changed = 0;
-        for (int row = 0; row < kHeight; ++row) {
-            for (int x = 0; x < kWidth; ++x) {
-                const std::uint8_t* expected = &byOpenGL.rgba[4 * (static_cast<std::size_t>(row) * kWidth + x)];
-                const std::uint32_t drawn = onProcessor.colourAt(x, kHeight - 1 - row);
-                bool differs = false;
-                for (int k = 0; k < 4; ++k) {
-                    differs = differs || std::abs(static_cast<int>(drawn >> (8 * k) & 0xFFu) -
-                                                  static_cast<int>(expected[k])) > kRoundingTolerance;
-                }
-                differing += differs ? 1 : 0;
-                changed += drawn != background ? 1 : 0;
+        return harness_.image();
+    }
+    // A draw list of this test's own, for oneList; the font atlas bound, the whole window its clip rectangle.
+    ImDrawList& freshList(bool antiAliased = true) {
+        list_._ResetForNewFrame();
+        if (!antiAliased) list_.Flags &= ~(ImDrawListFlags_AntiAliasedFill | ImDrawListFlags_AntiAliasedLines);
+        list_.PushClipRectFullScreen();
+        list_.PushTextureID(fontTexture_);
+        return list_;
+    }
+    // freshList's draws as the frame's draw data, over the whole window.
+    ImDrawData oneList() {
+        lists_[0] = &list_;
+        ImDrawData data;
+        data.Valid = true;
+        data.CmdLists = lists_;
+        data.CmdListsCount = 1;
+        data.TotalVtxCount = list_.VtxBuffer.Size;
+        data.TotalIdxCount = list_.IdxBuffer.Size;
+        data.DisplaySize = {kWidth, kHeight};
+        data.FramebufferScale = {1.0f, 1.0f};
+        return data;
+    }
+
+    AppHarness harness_{kCloudScene, kWidth, kHeight};
+    ImTextureID fontTexture_ = nullptr;
+    AtlasPixels atlas_;
+    ImDrawList list_{ImGui::GetDrawListSharedData()};
+    ImDrawList* lists_[1] = {nullptr};
+};
+
+// The pixels of the window (read from the top down) and of the processor's picture that differ by more than
+// `tolerance` in some channel, and those of the picture other than `background`.
+struct Comparison {
+    int differing = 0;
+    int drawn = 0;
+};
+
+Comparison compare(const snapshot::Image& window, const render::RasterImage& picture, std::uint32_t background,
+                   int tolerance) {
+    Comparison result;
+    for (int row = 0; row < kHeight; ++row) {
+        for (int x = 0; x < kWidth; ++x) {
+            const std::uint8_t* expected = &window.rgba[4 * (static_cast<std::size_t>(row) * kWidth + x)];
+            const std::uint32_t pixel = picture.colourAt(x, kHeight - 1 - row);
+            bool differs = false;
+            for (int k = 0; k < 4; ++k) {
+                differs = differs || std::abs(static_cast<int>(pixel >> (8 * k) & 0xFFu) -
+                                              static_cast<int>(expected[k])) > tolerance;
             }
+            result.differing += differs ? 1 : 0;
+            result.drawn += pixel != background ? 1 : 0;
         }
-        EXPECT_GT(changed, kWidth * kHeight / 3) << "the panels cover a good part of the window";
-        EXPECT_LE(differing, static_cast<int>(kEdgeShare * kWidth * kHeight))
-            << differing << " of " << kWidth * kHeight << " pixels differ";
+    }
+    return result;
+}
+
+TEST_F(ImGuiRasteriser, DrawsThePanelsOpenGLDraws) {
+    const ImDrawData& data = *ImGui::GetDrawData();
+    ASSERT_TRUE(rasterisable(data, fontTexture_));
+    ASSERT_GT(data.TotalVtxCount, 1000) << "every panel open";
+    for (const std::uint32_t background : {0xFF1C1714u, 0x00000000u, 0xFFFFFFFFu}) {
+        SCOPED_TRACE(background);
+        const Comparison comparison =
+            compare(drawnByOpenGL(data, background), drawnOnProcessor(background, 2), background, kRoundingTolerance);
+        EXPECT_GT(comparison.drawn, kWidth * kHeight / 3) << "the panels cover a good part of the window";
+        EXPECT_LE(comparison.differing, static_cast<int>(kEdgeShare * kWidth * kHeight))
+            << comparison.differing << " of " << kWidth * kHeight << " pixels differ";
     }
 }
 
@@ -131,18 +170,9 @@ TEST_F(ImGuiRasteriser, TheAppsWindowIsTheOneWithOpenGLsPanels) {
 
 // A frame whose panels show an OpenGL texture (a plot, a detector's image) leaves them to OpenGL.
 TEST_F(ImGuiRasteriser, PanelsShowingAnotherTextureAreLeftToOpenGL) {
-    ImDrawList list(ImGui::GetDrawListSharedData());
-    list._ResetForNewFrame();
-    list.PushClipRectFullScreen();
-    list.PushTextureID(fontTexture_);
+    ImDrawList& list = freshList();
     list.AddRectFilled({10.0f, 10.0f}, {50.0f, 30.0f}, IM_COL32(200, 100, 50, 255));
-    ImDrawList* lists[] = {&list};
-    ImDrawData data;
-    data.Valid = true;
-    data.CmdLists = lists;
-    data.CmdListsCount = 1;
-    data.DisplaySize = {kWidth, kHeight};
-    data.FramebufferScale = {1.0f, 1.0f};
+    ImDrawData data = oneList();
     EXPECT_TRUE(rasterisable(data, fontTexture_));
     const auto otherTexture = reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(12345));
     list.AddImage(otherTexture, {60.0f, 10.0f}, {90.0f, 40.0f});
@@ -152,53 +182,17 @@ TEST_F(ImGuiRasteriser, PanelsShowingAnotherTextureAreLeftToOpenGL) {
 // Shapes whose edges run through pixel centres, level, upright and sloped, without ImGui's anti-aliased fringes: a
 // centre on an edge goes to the same side as in llvmpipe's window framebuffer, pixel for pixel.
 TEST_F(ImGuiRasteriser, AnEdgeThroughPixelCentresGoesWhereOpenGLPutsIt) {
-    ImDrawList list(ImGui::GetDrawListSharedData());
-    list._ResetForNewFrame();
-    list.Flags &= ~(ImDrawListFlags_AntiAliasedFill | ImDrawListFlags_AntiAliasedLines);
-    list.PushClipRectFullScreen();
-    list.PushTextureID(fontTexture_);
+    ImDrawList& list = freshList(false);
     list.AddRectFilled({10.5f, 10.5f}, {20.5f, 20.5f}, IM_COL32(255, 0, 0, 255));
     list.AddTriangleFilled({40.5f, 10.5f}, {60.5f, 10.5f}, {50.5f, 30.5f}, IM_COL32(0, 255, 0, 255));
     list.AddTriangleFilled({70.5f, 30.5f}, {90.5f, 30.5f}, {80.5f, 10.5f}, IM_COL32(0, 0, 255, 255));
     list.AddTriangleFilled({100.5f, 10.5f}, {120.5f, 20.5f}, {100.5f, 30.5f}, IM_COL32(255, 255, 0, 255));
     list.AddRectFilled({130.0f, 10.5f}, {140.0f, 20.0f}, IM_COL32(0, 255, 255, 255));  // edges between centres too
-    ImDrawList* lists[] = {&list};
-    ImDrawData data;
-    data.Valid = true;
-    data.CmdLists = lists;
-    data.CmdListsCount = 1;
-    data.TotalVtxCount = list.VtxBuffer.Size;
-    data.TotalIdxCount = list.IdxBuffer.Size;
-    data.DisplaySize = {kWidth, kHeight};
-    data.FramebufferScale = {1.0f, 1.0f};
-    const render::GlFunctions& gl = harness_.gl();
-    gl.ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    gl.Clear(GL_COLOR_BUFFER_BIT);
-    {
-        ImGuiRenderer renderer(gl);
-        renderer.render(&data);
-    }
-    ImGui::GetIO().Fonts->SetTexID(fontTexture_);
-    const snapshot::Image byOpenGL = harness_.image();
-    render::RasterImage image;
-    image.resize(kWidth, kHeight);
-    for (int y = 0; y < kHeight; ++y) std::fill_n(image.colourRow(y), image.stride(), 0xFF000000u);
-    rasteriseImGui(data, atlas_, image, 1);
-    int drawn = 0;
-    int differing = 0;
-    for (int row = 0; row < 40; ++row) {
-        for (int x = 0; x < 150; ++x) {
-            const std::uint8_t* expected = &byOpenGL.rgba[4 * (static_cast<std::size_t>(row) * kWidth + x)];
-            const std::uint32_t pixel = image.colourAt(x, kHeight - 1 - row);
-            drawn += pixel != 0xFF000000u ? 1 : 0;
-            differing += pixel != (expected[0] | expected[1] << 8 | expected[2] << 16 |
-                                   static_cast<std::uint32_t>(expected[3]) << 24)
-                             ? 1
-                             : 0;
-        }
-    }
-    EXPECT_GT(drawn, 700) << "the five shapes, about 800 pixels";
-    EXPECT_EQ(differing, 0);
+    const ImDrawData data = oneList();
+    constexpr std::uint32_t kBlack = 0xFF000000u;
+    const Comparison comparison = compare(drawnByOpenGL(data, kBlack), drawnOnProcessor(kBlack, 1, data), kBlack, 0);
+    EXPECT_GT(comparison.drawn, 700) << "the five shapes, about 800 pixels";
+    EXPECT_EQ(comparison.differing, 0);
 }
 
 }  // namespace

@@ -6,9 +6,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <system_error>
-#include <thread>
-#include <vector>
 
 namespace dropscope::gui {
 
@@ -343,21 +340,8 @@ bool rasterisable(const ImDrawData& data, ImTextureID fontTexture) {
 void rasteriseImGui(const ImDrawData& data, const AtlasPixels& atlas, render::RasterImage& image, unsigned threads) {
     const int height = image.height();
     if (height <= 0 || image.width() <= 0 || atlas.rgba == nullptr || atlas.width <= 0 || atlas.height <= 0) return;
-    const int bands = static_cast<int>(std::clamp(threads, 1u, static_cast<unsigned>(height)));
-    const auto band = [&](int index) {
-        drawBand(data, atlas, image, height * index / bands, height * (index + 1) / bands);
-    };
-    std::vector<std::thread> helpers;
-    helpers.reserve(static_cast<std::size_t>(bands - 1));
-    for (int k = 1; k < bands; ++k) {
-        try {
-            helpers.emplace_back(band, k);
-        } catch (const std::system_error&) {  // no thread to be had: this one draws the band
-            band(k);
-        }
-    }
-    band(0);
-    for (std::thread& helper : helpers) helper.join();
+    render::drawInBands(height, threads,
+                        [&](int rowBegin, int rowEnd) { drawBand(data, atlas, image, rowBegin, rowEnd); });
 }
 
 }  // namespace dropscope::gui
