@@ -289,6 +289,25 @@ int run(const Options& options) {
         }
     }
     app.state().ui.panelsOnProcessor = true;
+    // The peer of handing the processor's picture over in the window's own layout (GlFunctions::windowLayout,
+    // OSMesa's: the top row first, RGBA), which makes the blit a copy of memory: OpenGL's layout (the bottom row
+    // first), alternated frame by frame likewise.
+    Series orbitWindowLayout, orbitOpenGLLayout, copiedWindowLayout, copiedOpenGLLayout;
+    const render::PixelLayout windowLayout = context.gl().windowLayout;
+    for (int k = 0; k < options.frames; ++k) {
+        for (const bool window : {k % 2 == 0, k % 2 != 0}) {
+            context.setWindowLayout(window ? windowLayout : render::PixelLayout{});
+            app.state().view.camera.orbit(kOrbitStep, 0.0);
+            for (Series* series : {window ? &orbitWindowLayout : &orbitOpenGLLayout, (Series*)nullptr,
+                                   window ? &copiedWindowLayout : &copiedOpenGLLayout}) {
+                Stopwatch watch;
+                app.frame(input);
+                context.gl().Finish();
+                if (series) series->ms.push_back(1e3 * watch.seconds());
+            }
+        }
+    }
+    context.setWindowLayout(windowLayout);
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
     const auto row = [&](const char* name, Series& series) {
@@ -323,6 +342,10 @@ int run(const Options& options) {
     row("app, orbiting, panels by OpenGL (alt.)", orbitPanelsOpenGL);
     row("kept view copied, panels on processor (alt.)", copiedPanelsProcessor);
     row("kept view copied, panels by OpenGL (alt.)", copiedPanelsOpenGL);
+    row("app, orbiting, window's layout (alt.)", orbitWindowLayout);
+    row("app, orbiting, OpenGL's layout (alt.)", orbitOpenGLLayout);
+    row("kept view copied, window's layout (alt.)", copiedWindowLayout);
+    row("kept view copied, OpenGL's layout (alt.)", copiedOpenGLLayout);
     std::printf("steady (kept view copied): %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steadyCopied.median(),
                 1e3 / orbit.median());
     // The ray tree (R): first of the scene (its optical scene built from the document), then again from a source

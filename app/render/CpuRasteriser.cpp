@@ -68,6 +68,10 @@ std::uint32_t packColour(const Colour& colour) {
     return packed;
 }
 
+std::uint32_t RasterImage::pack(const Colour& colour) const {
+    return packColour(layout_.bgra ? Colour{colour[2], colour[1], colour[0], colour[3]} : colour);
+}
+
 namespace {
 
 // impostor.frag's values for one row of one sphere's pixels: pixel x's eye ray is rowRay + x perPixel.
@@ -81,8 +85,9 @@ struct SphereRow {
     float eyeClipW;
     float clipZ[3];
     float clipW[3];
-    // Red, green and blue times 255, at least 0 (NaN taken as 0), clamped to 255 after the shading as a framebuffer
-    // clamps. With the sphere's sums finite (spheresBody) the shade is a number, so the cast to int is defined.
+    // The colour's bytes 0-2 (red, green, blue, or blue, green, red: the image's layout) times 255, at least 0 (NaN
+    // taken as 0), clamped to 255 after the shading as a framebuffer clamps. With the sphere's sums finite
+    // (spheresBody) the shade is a number, so the cast to int is defined.
     float colour255[3];
     std::uint32_t alpha;  // the colour's alpha, packed (opaque: no opacity applies)
 };
@@ -182,8 +187,8 @@ struct SphereRow {
         row.c = c;
         row.eyeClipZ = view.eyeClip.x;
         row.eyeClipW = view.eyeClip.y;
-        for (std::size_t channel = 0; channel < 3; ++channel) {
-            row.colour255[channel] = std::max(0.0f, sphere.colour[channel]) * 255.0f;
+        for (std::size_t byte = 0; byte < 3; ++byte) {
+            row.colour255[byte] = std::max(0.0f, sphere.colour[image.layout().bgra ? 2 - byte : byte]) * 255.0f;
         }
         row.alpha = packedChannel(sphere.colour[3], 3);
         for (int y = rowFrom; y < rowTo; ++y) {
@@ -301,7 +306,7 @@ bool clipSegment(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
         }
         const float inverseLength = 1.0f / majorLength;
         const bool flat = colourA == colourB;  // most paths: no colour to interpolate
-        const std::uint32_t flatColour = packColour(colourA);
+        const std::uint32_t flatColour = image.pack(colourA);
         // At centre c + 0.5: the minor coordinate minorAtZero + c slope, the depth depthAtZero + c depthPerPixel.
         const float offsetAtZero = 0.5f - major0;
         const float minorAtZero = minor0 + offsetAtZero * slope;
@@ -330,7 +335,7 @@ bool clipSegment(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
                     (start.colourOverW[channel] + along * (end.colourOverW[channel] - start.colourOverW[channel])) /
                     inverseW;
             }
-            image.colourRow(y)[x] = packColour(colour);
+            image.colourRow(y)[x] = image.pack(colour);
         }
     }
 }
@@ -338,10 +343,9 @@ bool clipSegment(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
 // The rows [rowBegin, rowEnd) of the picture: the background, then the markers, the spheres and the lines.
 [[gnu::always_inline]] inline void bandBody(const RasterContent& content, const RasterView& view,
                                             std::uint32_t background, RasterImage& image, int rowBegin, int rowEnd) {
-    const auto rowPixels = static_cast<std::ptrdiff_t>(image.stride()) * (rowEnd - rowBegin);
-    if (rowPixels > 0) {
-        std::fill_n(image.colourRow(rowBegin), rowPixels, background);
-        std::fill_n(image.depthRow(rowBegin), rowPixels, 1.0f);
+    for (int y = rowBegin; y < rowEnd; ++y) {  // the rows lie in either order (the layout's)
+        std::fill_n(image.colourRow(y), image.stride(), background);
+        std::fill_n(image.depthRow(y), image.stride(), 1.0f);
     }
     spheresBody(content.markers, view, image, rowBegin, rowEnd);
     spheresBody(content.spheres, view, image, rowBegin, rowEnd);
@@ -379,7 +383,7 @@ unsigned rasterThreads() { return std::clamp(std::thread::hardware_concurrency()
 void rasterise(const RasterContent& content, const RasterView& view, const Colour& background, RasterImage& image,
                unsigned threads, RasterCode code) {
     image.resize(view.width, view.height);
-    const std::uint32_t backgroundColour = packColour(background);
+    const std::uint32_t backgroundColour = image.pack(background);
     const DrawBand drawBand = code == RasterCode::baseline ? drawBandBaseline : kFastestDrawBand;
     drawInBands(view.height, threads,
                 [&](int rowBegin, int rowEnd) { drawBand(content, view, backgroundColour, image, rowBegin, rowEnd); });

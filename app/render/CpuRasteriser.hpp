@@ -3,6 +3,7 @@
 #include "render/Camera.hpp"
 #include "render/Colour.hpp"
 #include "render/DrawData.hpp"
+#include "render/PixelLayout.hpp"
 
 #include <glm/glm.hpp>
 
@@ -43,16 +44,22 @@ struct RasterSphere {
 
 RasterSphere rasterSphere(const ShapeInstance& sphere);
 
-// A picture drawn on the processor, as OpenGL lays out a framebuffer: row 0 at the bottom; colour in RGBA8
-// with red in the lowest byte (GL_RGBA, GL_UNSIGNED_BYTE on a little-endian machine); the depth of each
-// pixel's nearest surface in [0, 1], 1 where nothing was drawn. Rows are `stride` pixels apart, a multiple of
-// kRasterBlock at least `width`, so the spheres are drawn in whole blocks of pixels.
+// A picture drawn on the processor: colour in RGBA8, in the byte order of its layout; the depth of each pixel's
+// nearest surface in [0, 1], 1 where nothing was drawn. Pixel (x, y) counts y from the bottom row, as OpenGL
+// does, whichever row its layout stores first (OpenGL's own, the bottom, red in the lowest byte, unless set
+// otherwise). Rows are `stride` pixels apart, a multiple of kRasterBlock at least `width`, so the spheres are
+// drawn in whole blocks of pixels.
 inline constexpr int kRasterBlock = 8;
 
 class RasterImage {
 public:
     // The size of the next picture; the pixels are left as they were until drawn.
     void resize(int width, int height);
+    // How the next picture lies in memory.
+    void setLayout(PixelLayout layout) { layout_ = layout; }
+    PixelLayout layout() const { return layout_; }
+    // A colour as a pixel of this layout holds it (packColour, in its byte order).
+    std::uint32_t pack(const Colour& colour) const;
     int width() const { return width_; }
     int height() const { return height_; }
     int stride() const { return stride_; }
@@ -62,12 +69,16 @@ public:
     std::uint32_t colourAt(int x, int y) const { return colour_[index(x, y)]; }
     float depthAt(int x, int y) const { return depth_[index(x, y)]; }
     std::uint32_t* colourRow(int y) { return colour_.data() + index(0, y); }
+    // The stride x height pixels as they lie in memory (the layout's first row first).
+    std::uint32_t* colourData() { return colour_.data(); }
     float* depthRow(int y) { return depth_.data() + index(0, y); }
 
 private:
     std::size_t index(int x, int y) const {
-        return static_cast<std::size_t>(y) * static_cast<std::size_t>(stride_) + static_cast<std::size_t>(x);
+        const int row = layout_.topRowFirst ? height_ - 1 - y : y;
+        return static_cast<std::size_t>(row) * static_cast<std::size_t>(stride_) + static_cast<std::size_t>(x);
     }
+    PixelLayout layout_;
     int width_ = 0;
     int height_ = 0;
     int stride_ = 0;
@@ -75,7 +86,8 @@ private:
     std::vector<float> depth_;
 };
 
-// A colour as an RGBA8 framebuffer stores it (each channel clamped to [0, 1], times 255, rounded).
+// A colour as an RGBA8 framebuffer stores it (each channel clamped to [0, 1], times 255, rounded), red in the lowest
+// byte.
 std::uint32_t packColour(const Colour& colour);
 
 // Draws the background, then opaque spheres (the markers among them) and lines (GL_LINES: two vertices a segment)

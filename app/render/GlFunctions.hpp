@@ -1,5 +1,7 @@
 #pragma once
 
+#include "render/PixelLayout.hpp"
+
 #include <GL/glcorearb.h>
 
 #include <string>
@@ -101,6 +103,11 @@ struct GlFunctions {
     std::string describe() const;
     // Whether the current context's renderer runs on the processor (isSoftwareRenderer of its GL_RENDERER).
     bool isSoftware() const;
+
+    // How the context's window framebuffer (framebuffer 0) lies in memory on a software OpenGL, as the code that
+    // made the context knows it; a picture the processor draws for it is handed over in this layout. A wrong
+    // guess draws the same picture, more slowly.
+    PixelLayout windowLayout;
 };
 
 // Whether a GL_RENDERER string names one of Mesa's rasterisers that run on the processor (llvmpipe, softpipe,

@@ -586,11 +586,20 @@ bool Renderer::processorCanDraw(const RenderOptions& options, int width, int hei
            static_cast<long>(width) * static_cast<long>(height) <= kProcessorMostPixels;
 }
 
-bool Renderer::readyToHandOver(int width, int height) {
+PixelLayout Renderer::targetLayout() const {
+    GLint draw = 0;
+    gl_.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    return draw == 0 ? gl_.windowLayout : PixelLayout{};
+}
+
+bool Renderer::readyToHandOver(int width, int height, PixelLayout layout) {
     GLint samples = 0;  // a blit into a multisampled framebuffer from a single-sampled one is an error
     gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &samples);
     if (samples > 0 || width < 1 || height < 1) return false;
-    if (rasterTexture_ != 0 && rasterTextureWidth_ == width && rasterTextureHeight_ == height) return true;
+    if (rasterTexture_ != 0 && rasterTextureWidth_ == width && rasterTextureHeight_ == height &&
+        rasterTextureBgra_ == layout.bgra) {
+        return true;
+    }
     const FramebufferBindings caller(gl_);
     GLint texture = 0;
     gl_.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
@@ -599,7 +608,12 @@ bool Renderer::readyToHandOver(int width, int height) {
         gl_.GenFramebuffers(1, &rasterFramebuffer_);
     }
     gl_.BindTexture(GL_TEXTURE_2D, rasterTexture_);
-    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    // Mesa stores an unsized GL_RGBA texture in the order of the pixels first given to it: BGRA here, as the window.
+    if (layout.bgra) {
+        gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_BGRA, GL_UNSIGNED_BYTE, nullptr);
+    } else {
+        gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    }
     gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl_.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture));
@@ -609,19 +623,22 @@ bool Renderer::readyToHandOver(int width, int height) {
     caller.restore(gl_);
     rasterTextureWidth_ = complete ? width : 0;
     rasterTextureHeight_ = complete ? height : 0;
+    rasterTextureBgra_ = layout.bgra;
     return complete;
 }
 
 void Renderer::drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices,
-                               const RasterOverlay& overlay, bool hold) {
+                               PixelLayout layout, const RasterOverlay& overlay, bool hold) {
     RasterContent content;
     if (options.shapes) content.spheres = rasterSpheres_;
     content.markers = rasterMarkers_;
     content.lines = std::span<const LineVertex>(rasterLines_).first(static_cast<std::size_t>(lineVertices));
+    rasterImage_.setLayout(layout);
     rasterise(content, view, options.background, rasterImage_, rasterThreads());
     ++pictures_;
     if (hold) {
         heldColour_ = rasterImage_.colour();
+        heldLayout_ = layout;
         heldWidth_ = rasterImage_.width();
         heldHeight_ = rasterImage_.height();
         heldPicture_ = pictures_;
@@ -646,7 +663,8 @@ void Renderer::handOver(const RasterOverlay& overlay) {
     gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
     gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, rasterImage_.stride());
     gl_.BindTexture(GL_TEXTURE_2D, rasterTexture_);
-    gl_.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rasterImage_.colour().data());
+    gl_.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, rasterImage_.layout().bgra ? GL_BGRA : GL_RGBA,
+                      GL_UNSIGNED_BYTE, rasterImage_.colour().data());
     gl_.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture));
     gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
     gl_.PixelStorei(GL_UNPACK_ALIGNMENT, alignment);
@@ -657,17 +675,24 @@ void Renderer::handOver(const RasterOverlay& overlay) {
     const FramebufferBindings caller(gl_);
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, rasterFramebuffer_);
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(caller.draw));
-    gl_.BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    // With the top row first, the texture's row 0 holds the picture's top, so the blit turns it over: in the
+    // window's own layout, a copy of memory.
+    if (rasterImage_.layout().topRowFirst) {
+        gl_.BlitFramebuffer(0, 0, width, height, 0, height, width, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    } else {
+        gl_.BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
     caller.restore(gl_);
 }
 
 bool Renderer::showHeld(std::uint64_t picture, int width, int height, const RasterOverlay& overlay) {
     if (picture == 0 || picture != heldPicture_ || heldWidth_ != width || heldHeight_ != height ||
-        !readyToHandOver(width, height)) {
+        heldLayout_ != targetLayout() || !readyToHandOver(width, height, heldLayout_)) {
         return false;
     }
+    rasterImage_.setLayout(heldLayout_);
     rasterImage_.resize(width, height);  // the same stride: the held rows are copied as they lie
-    std::copy(heldColour_.begin(), heldColour_.end(), rasterImage_.colourRow(0));
+    std::copy(heldColour_.begin(), heldColour_.end(), rasterImage_.colourData());
     const bool scissor = gl_.IsEnabled(GL_SCISSOR_TEST) == GL_TRUE;  // the whole picture, as OffscreenImage's copy
     if (scissor) gl_.Disable(GL_SCISSOR_TEST);
     handOver(overlay);
@@ -720,9 +745,11 @@ bool Renderer::draw(const Camera& camera, const RenderOptions& options, int widt
                               !roundedWithin(local.eye, nearReach);
     const bool chordsDrawn = options.lines && chordsFrom_ < lines_->count && !chordsHidden;
     apartInLastFrame_ = 0;
-    lastFrameOnProcessor_ = drawsOnProcessor(options, width, height) && readyToHandOver(width, height);
+    const PixelLayout layout = targetLayout();
+    lastFrameOnProcessor_ = drawsOnProcessor(options, width, height) && readyToHandOver(width, height, layout);
     if (lastFrameOnProcessor_) {
-        drawOnProcessor(view, options, options.lines ? (chordsHidden ? chordsFrom_ : lines_->count) : 0, overlay, hold);
+        drawOnProcessor(view, options, options.lines ? (chordsHidden ? chordsFrom_ : lines_->count) : 0, layout,
+                        overlay, hold);
         return overlay != nullptr;
     }
     gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -168,13 +168,16 @@ private:
     bool roundedWithin(const glm::dvec3& eye, double reach) const;
     // Whether this frame's layers are all the processor draws: opaque spheres, markers that are spheres, lines.
     bool processorCanDraw(const RenderOptions& options, int width, int height) const;
+    // The layout of the framebuffer bound for drawing: the window's (GlFunctions::windowLayout) or OpenGL's own.
+    PixelLayout targetLayout() const;
     // Whether the processor's picture can be blitted into the framebuffer bound for drawing (not multisampled) and
-    // its texture made for width x height.
-    bool readyToHandOver(int width, int height);
-    // The frame drawn by rasterise into rasterImage_ (held first with `hold`), then handed over.
-    void drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices,
+    // its texture made for width x height in the channel order of `layout`.
+    bool readyToHandOver(int width, int height, PixelLayout layout);
+    // The frame drawn by rasterise into rasterImage_ in `layout` (held first with `hold`), then handed over.
+    void drawOnProcessor(const RasterView& view, const RenderOptions& options, GLsizei lineVertices, PixelLayout layout,
                          const RasterOverlay& overlay, bool hold);
-    // rasterImage_, with `overlay` drawn over it, uploaded and copied into the framebuffer bound for drawing.
+    // rasterImage_, with `overlay` drawn over it, uploaded and copied into the framebuffer bound for drawing: in the
+    // framebuffer's own layout, a copy of memory.
     void handOver(const RasterOverlay& overlay);
 
     const GlFunctions& gl_;
@@ -212,6 +215,7 @@ private:
     std::vector<LineVertex> rasterLines_;
     RasterImage rasterImage_;
     std::vector<std::uint32_t> heldColour_;  // rasterImage_'s colour as drawn with `hold`, before its overlay
+    PixelLayout heldLayout_;
     int heldWidth_ = 0;
     int heldHeight_ = 0;
     std::uint64_t heldPicture_ = 0;
@@ -220,6 +224,7 @@ private:
     GLuint rasterFramebuffer_ = 0;
     int rasterTextureWidth_ = 0;
     int rasterTextureHeight_ = 0;
+    bool rasterTextureBgra_ = false;  // the order Mesa stores its pixels in
     bool lastFrameOnProcessor_ = false;
     // One per geometry, in the order the shapes list them (a fixed drawing order, for determinism).
     std::vector<std::pair<std::shared_ptr<const MeshGeometry>, std::unique_ptr<Mesh>>> meshes_;

@@ -44,6 +44,7 @@ OsmesaContext::OsmesaContext(int width, int height)
     }
     try {
         gl_ = render::GlFunctions::load(procAddress);
+        gl_.windowLayout = {.topRowFirst = true, .bgra = false};  // OSMESA_RGBA
     } catch (...) {
         OSMesaDestroyContext(handle_->context);
         throw;

@@ -18,6 +18,8 @@ public:
     OsmesaContext& operator=(const OsmesaContext&) = delete;
 
     const render::GlFunctions& gl() const { return gl_; }
+    // For tests: what the renderers on this context take its framebuffer's layout to be (GlFunctions::windowLayout).
+    void setWindowLayout(render::PixelLayout layout) { gl_.windowLayout = layout; }
     int width() const { return width_; }
     int height() const { return height_; }
     // The finished frame, top row first.

@@ -33,11 +33,13 @@ protected:
         atlas_.rgba = pixels;
     }
 
-    // `data` (the last frame's panels unless given) drawn on the processor over `background` (RGBA8, red in the
-    // lowest byte) with `threads` bands.
+    // `data` (the last frame's panels unless given) drawn on the processor over `background` (RGBA8 in the
+    // layout's byte order) with `threads` bands, into a picture of `layout` (OpenGL's own unless given).
     render::RasterImage drawnOnProcessor(std::uint32_t background, unsigned threads,
-                                         const ImDrawData& data = *ImGui::GetDrawData()) const {
+                                         const ImDrawData& data = *ImGui::GetDrawData(),
+                                         render::PixelLayout layout = {}) const {
         render::RasterImage image;
+        image.setLayout(layout);
         image.resize(kWidth, kHeight);
         for (int y = 0; y < kHeight; ++y) std::fill_n(image.colourRow(y), image.stride(), background);
         rasteriseImGui(data, atlas_, image, threads);
@@ -129,6 +131,54 @@ TEST_F(ImGuiRasteriser, AnyNumberOfBandsDrawsTheSamePicture) {
     const render::RasterImage one = drawnOnProcessor(0xFF1C1714u, 1);
     for (const unsigned threads : {2u, 3u, 7u}) {
         EXPECT_EQ(drawnOnProcessor(0xFF1C1714u, threads).colour(), one.colour()) << threads << " bands";
+    }
+}
+
+// The panels drawn into a picture of each layout a window may have (the top row or the bottom one first, RGBA or
+// BGRA) are the same picture: only the rows' order and the bytes' order in memory differ. So are shapes and text
+// in colours whose red and blue differ (the panels' text is grey, so its glyphs alone would not show bytes left
+// unswapped): a blended rectangle, an anti-aliased triangle, a line of text (ImGui puts it at whole pixels, so its
+// glyphs are copied texel for texel) and the font atlas drawn larger than it is (sampled).
+TEST_F(ImGuiRasteriser, EveryLayoutHoldsTheSamePicture) {
+    const auto swapRedBlue = [](std::uint32_t pixel) {
+        return (pixel & 0xFF00FF00u) | (pixel & 0xFFu) << 16 | (pixel >> 16 & 0xFFu);
+    };
+    constexpr std::uint32_t kBackground = 0xFF1C1714u;
+    ImDrawList& list = freshList();
+    list.AddRectFilled({10.0f, 10.0f}, {300.0f, 200.0f}, IM_COL32(230, 90, 20, 160));
+    list.AddTriangleFilled({40.3f, 250.2f}, {300.7f, 260.1f}, {120.4f, 420.9f}, IM_COL32(20, 200, 240, 255));
+    list.AddText({20.0f, 450.0f}, IM_COL32(250, 120, 10, 255), "Red and blue differ: 0123456789");
+    // The atlas's top left 256 x 128 texels over 384 x 192 pixels: sampled between texels.
+    list.AddImage(fontTexture_, {400.0f, 300.0f}, {784.0f, 492.0f}, {0.0f, 0.0f},
+                  {256.0f / static_cast<float>(atlas_.width), 128.0f / static_cast<float>(atlas_.height)},
+                  IM_COL32(10, 120, 250, 255));
+    const ImDrawData coloured = oneList();
+    for (const ImDrawData* data : {static_cast<const ImDrawData*>(ImGui::GetDrawData()), &coloured}) {
+        const render::RasterImage opengl = drawnOnProcessor(kBackground, 2, *data);
+        for (const bool topRowFirst : {false, true}) {
+            for (const bool bgra : {false, true}) {
+                SCOPED_TRACE(std::string(data == &coloured ? "shapes and text, " : "panels, ") +
+                             (topRowFirst ? "top row first, " : "bottom row first, ") + (bgra ? "BGRA" : "RGBA"));
+                const render::RasterImage image =
+                    drawnOnProcessor(bgra ? swapRedBlue(kBackground) : kBackground, 2, *data, {topRowFirst, bgra});
+                int differing = 0;
+                int drawn = 0;
+                for (int y = 0; y < kHeight; ++y) {
+                    for (int x = 0; x < kWidth; ++x) {
+                        const std::uint32_t expected =
+                            bgra ? swapRedBlue(opengl.colourAt(x, y)) : opengl.colourAt(x, y);
+                        differing += image.colourAt(x, y) != expected ? 1 : 0;
+                        drawn += opengl.colourAt(x, y) != kBackground ? 1 : 0;
+                    }
+                }
+                EXPECT_EQ(differing, 0);
+                EXPECT_GT(drawn, 50000);
+                const int firstRow = topRowFirst ? kHeight - 1 : 0;  // the first row in memory: the top, if so laid out
+                for (int x = 0; x < kWidth; ++x) {
+                    EXPECT_EQ(image.colour()[static_cast<std::size_t>(x)], image.colourAt(x, firstRow));
+                }
+            }
+        }
     }
 }
 

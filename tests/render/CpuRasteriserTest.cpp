@@ -181,31 +181,44 @@ TEST(ProcessorRaster, TheNearestWinsInAnyOrder) {
 // A crowd of spheres and segments every way (steep, shallow, diagonal, across the bands' seams and the image's
 // edges): any number of bands draws the same picture bit for bit, and the baseline copy of the code the same but
 // for rounding.
-TEST(ProcessorRaster, AnyNumberOfBandsAndEitherCopyOfTheCodeDrawTheSamePicture) {
-    std::mt19937_64 rng(17);
-    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+// 300 spheres and 400 segments every way (steep, shallow, diagonal, across the image's edges), half of them
+// shaded from one colour to another, seen from (1, 2, 9).
+struct RasterCrowd {
     std::vector<render::RasterSphere> spheres;
-    for (int k = 0; k < 300; ++k) {
-        const float radius = 0.05f + 0.2f * (unit(rng) + 1.0f);
-        spheres.push_back({glm::vec3(3.0f * unit(rng), 2.0f * unit(rng), 2.0f * unit(rng)),
-                           radius,
-                           1.0f / radius,
-                           {0.5f + 0.5f * unit(rng), 0.5f, 0.8f, 1.0f}});
-    }
     std::vector<render::LineVertex> lines;
-    for (int k = 0; k < 400; ++k) {
-        const render::Colour a{1.0f, 0.5f + 0.5f * unit(rng), 0.0f, 1.0f};
-        const render::Colour b = k % 2 == 0 ? a : render::Colour{0.0f, 0.3f, 1.0f, 1.0f};
-        lines.push_back({{5.0f * unit(rng), 4.0f * unit(rng), 3.0f * unit(rng)}, a});
-        lines.push_back({{5.0f * unit(rng), 4.0f * unit(rng), 3.0f * unit(rng)}, b});
+    render::RasterView view;
+
+    RasterCrowd() {
+        std::mt19937_64 rng(17);
+        std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+        for (int k = 0; k < 300; ++k) {
+            const float radius = 0.05f + 0.2f * (unit(rng) + 1.0f);
+            spheres.push_back({glm::vec3(3.0f * unit(rng), 2.0f * unit(rng), 2.0f * unit(rng)),
+                               radius,
+                               1.0f / radius,
+                               {0.5f + 0.5f * unit(rng), 0.5f, 0.8f, 1.0f}});
+        }
+        for (int k = 0; k < 400; ++k) {
+            const render::Colour a{1.0f, 0.5f + 0.5f * unit(rng), 0.0f, 1.0f};
+            const render::Colour b = k % 2 == 0 ? a : render::Colour{0.0f, 0.3f, 1.0f, 1.0f};
+            lines.push_back({{5.0f * unit(rng), 4.0f * unit(rng), 3.0f * unit(rng)}, a});
+            lines.push_back({{5.0f * unit(rng), 4.0f * unit(rng), 3.0f * unit(rng)}, b});
+        }
+        view = render::rasterView(towardOrigin({1.0, 2.0, 9.0}, 0.5, 30.0), kWidth, kHeight);
     }
-    const render::Camera camera = towardOrigin({1.0, 2.0, 9.0}, 0.5, 30.0);
-    const render::RasterView view = render::rasterView(camera, kWidth, kHeight);
-    const auto draw = [&](unsigned threads, render::RasterCode code) {
+
+    render::RasterImage draw(unsigned threads, render::RasterCode code = render::RasterCode::fastest,
+                             render::PixelLayout layout = {}) const {
         render::RasterImage image;
+        image.setLayout(layout);
         render::rasterise({spheres, {}, lines}, view, {0.1f, 0.1f, 0.1f, 1.0f}, image, threads, code);
         return image;
-    };
+    }
+};
+
+TEST(ProcessorRaster, AnyNumberOfBandsAndEitherCopyOfTheCodeDrawTheSamePicture) {
+    const RasterCrowd crowd;
+    const auto draw = [&](unsigned threads, render::RasterCode code) { return crowd.draw(threads, code); };
     const render::RasterImage one = draw(1, render::RasterCode::fastest);
     int drawn = 0;
     for (int y = 0; y < kHeight; ++y) {
@@ -239,6 +252,36 @@ TEST(ProcessorRaster, AnyNumberOfBandsAndEitherCopyOfTheCodeDrawTheSamePicture) 
     EXPECT_LE(differing, kWidth * kHeight / 1000) << "pixels differing between the baseline and the AVX2 code";
 }
 
+// The crowd drawn in each layout a framebuffer may have (the top row or the bottom one first, RGBA or BGRA) is the
+// same picture, pixel for pixel and in depth: only the rows' order and the bytes' order in memory differ (the
+// spheres' and segments' red and blue differ, so bytes left unswapped show).
+TEST(ProcessorRaster, EveryLayoutHoldsTheSamePicture) {
+    const RasterCrowd crowd;
+    const render::RasterImage opengl = crowd.draw(2);
+    const auto swapRedBlue = [](std::uint32_t pixel) {
+        return (pixel & 0xFF00FF00u) | (pixel & 0xFFu) << 16 | (pixel >> 16 & 0xFFu);
+    };
+    for (const bool topRowFirst : {false, true}) {
+        for (const bool bgra : {false, true}) {
+            SCOPED_TRACE(std::string(topRowFirst ? "top row first, " : "bottom row first, ") +
+                         (bgra ? "BGRA" : "RGBA"));
+            const render::RasterImage image = crowd.draw(2, render::RasterCode::fastest, {topRowFirst, bgra});
+            int differing = 0;
+            for (int y = 0; y < kHeight; ++y) {
+                for (int x = 0; x < kWidth; ++x) {
+                    const std::uint32_t expected = bgra ? swapRedBlue(opengl.colourAt(x, y)) : opengl.colourAt(x, y);
+                    differing += image.colourAt(x, y) != expected || image.depthAt(x, y) != opengl.depthAt(x, y);
+                }
+            }
+            EXPECT_EQ(differing, 0);
+            // In memory: the first row stored is the picture's top when the top row comes first.
+            const int firstRow = topRowFirst ? kHeight - 1 : 0;
+            for (int x = 0; x < kWidth; ++x)
+                EXPECT_EQ(image.colour()[static_cast<std::size_t>(x)], image.colourAt(x, firstRow));
+        }
+    }
+}
+
 // Nothing a scene could hold makes the processor fail: spheres of radius 0 or far below float's reach, NaN colours
 // and positions, infinite and coincident ends of segments. Each is left out or drawn, never a crash, and the valid
 // sphere beside them is drawn.
@@ -264,7 +307,8 @@ TEST(ProcessorRaster, DegenerateSpheresAndSegmentsAreDrawnOrLeftOutSafely) {
 
 // A cloud of spheres with paths through and past it, some segments across the near plane and some beyond the far
 // one: the processor's frame and OpenGL's (every sphere at its exact depth) are the same picture but for
-// kProcessorMaxDifferingShare of the pixels (line ends and silhouettes within rounding).
+// kProcessorMaxDifferingShare of the pixels (line ends and silhouettes within rounding), whatever layout the
+// framebuffer is taken to have.
 TEST(ProcessorRaster, DrawsThePictureOpenGLDraws) {
     const auto shapes = sphereCrowd(400, 3.0, 0.05, 0.4, 21);
     const Eigen::AlignedBox3d bounds = boundsOf(shapes);
@@ -302,6 +346,15 @@ TEST(ProcessorRaster, DrawsThePictureOpenGLDraws) {
         test::compareImages(drawnByOpenGL, drawnOnProcessor, test::kGoldenChannelTolerance);
     EXPECT_TRUE(difference.within(test::kProcessorMaxDifferingShare))
         << difference.differingPixels << " of " << difference.pixels << " pixels differ";
+    // The window taken to lie in memory otherwise than OSMesa's does (the top row first, RGBA) makes the hand-over
+    // slower, never another picture.
+    for (const bool topRowFirst : {false, true}) {
+        for (const bool bgra : {false, true}) {
+            renderer.setWindowLayout({topRowFirst, bgra});
+            EXPECT_EQ(renderer.draw(camera, anchor, instances, lines).rgba, drawnOnProcessor.rgba)
+                << (topRowFirst ? "top row first, " : "bottom row first, ") << (bgra ? "BGRA" : "RGBA");
+        }
+    }
 }
 
 // A frame with a box in it is OpenGL's, pixel for pixel; the spheres' colours, rewritten in place for a new

@@ -32,6 +32,8 @@ public:
     void setApartSpheres(bool on) { apartSpheres_ = on; }
     // RenderOptions::processorRaster of the next draws (off unless set).
     void setProcessorRaster(bool on) { processorRaster_ = on; }
+    // What the renderer takes the framebuffer's layout to be (OSMesa's own, the top row first in RGBA, unless set).
+    void setWindowLayout(render::PixelLayout layout) { context_.setWindowLayout(layout); }
     // Renderer::apartInLastFrame and lastFrameOnProcessor of the last draw.
     std::size_t apartInLastFrame() const { return renderer_.apartInLastFrame(); }
     bool lastFrameOnProcessor() const { return renderer_.lastFrameOnProcessor(); }

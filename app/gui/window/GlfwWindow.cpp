@@ -134,6 +134,7 @@ int runWindow(const WindowOptions& options, const ClientFactory& makeClient, std
     render::GlFunctions gl;
     try {
         gl = render::GlFunctions::load(glfwProcAddress);
+        gl.windowLayout = {.topRowFirst = true, .bgra = true};  // X11's and Wayland's 32-bit visuals
     } catch (const render::RenderError& error) {
         return cannotOpen(err, error.what());
     }

@@ -1,0 +1,18 @@
+#pragma once
+
+namespace dropscope::render {
+
+// How a picture's pixels lie in memory: which row comes first and in which order a pixel's four bytes hold its
+// channels. OpenGL's textures and framebuffer objects hold row 0 at the bottom (bottomRowFirst); Mesa's gallium
+// drivers keep a window system's framebuffer with its top row first, in the window's channel order: RGBA for an
+// OSMesa context asked for OSMESA_RGBA, BGRA for X11's and Wayland's usual 32-bit visuals. A blit between two of
+// the same layout is a copy of memory; any other costs llvmpipe a pass of its shaders over every pixel
+// (docs/rendering.md, "Drawn on the processor").
+struct PixelLayout {
+    bool topRowFirst = false;
+    bool bgra = false;  // blue in the lowest byte; else red (GL_RGBA, GL_UNSIGNED_BYTE)
+
+    bool operator==(const PixelLayout&) const = default;
+};
+
+}  // namespace dropscope::render
