@@ -68,9 +68,7 @@ std::uint32_t packColour(const Colour& colour) {
     return packed;
 }
 
-std::uint32_t RasterImage::pack(const Colour& colour) const {
-    return packColour(layout_.bgra ? Colour{colour[2], colour[1], colour[0], colour[3]} : colour);
-}
+std::uint32_t RasterImage::pack(const Colour& colour) const { return inByteOrder(packColour(colour), layout_); }
 
 namespace {
 

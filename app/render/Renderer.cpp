@@ -602,7 +602,10 @@ bool Renderer::readyToHandOver(int width, int height, PixelLayout layout) {
     }
     const FramebufferBindings caller(gl_);
     GLint texture = 0;
+    GLint unpackBuffer = 0;  // unbound while the texture is made: with one bound, its null pixels would be an offset
     gl_.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+    gl_.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
+    gl_.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     if (rasterTexture_ == 0) {
         gl_.GenTextures(1, &rasterTexture_);
         gl_.GenFramebuffers(1, &rasterFramebuffer_);
@@ -617,6 +620,7 @@ bool Renderer::readyToHandOver(int width, int height, PixelLayout layout) {
     gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl_.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture));
+    gl_.BindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, rasterFramebuffer_);
     gl_.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, rasterTexture_, 0);
     const bool complete = gl_.CheckFramebufferStatus(GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
@@ -677,11 +681,9 @@ void Renderer::handOver(const RasterOverlay& overlay) {
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(caller.draw));
     // With the top row first, the texture's row 0 holds the picture's top, so the blit turns it over: in the
     // window's own layout, a copy of memory.
-    if (rasterImage_.layout().topRowFirst) {
-        gl_.BlitFramebuffer(0, 0, width, height, 0, height, width, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    } else {
-        gl_.BlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    }
+    const bool turned = rasterImage_.layout().topRowFirst;
+    gl_.BlitFramebuffer(0, 0, width, height, 0, turned ? height : 0, width, turned ? 0 : height, GL_COLOR_BUFFER_BIT,
+                        GL_NEAREST);
     caller.restore(gl_);
 }
 

@@ -178,11 +178,8 @@ TEST(ProcessorRaster, TheNearestWinsInAnyOrder) {
     EXPECT_EQ(swapped.depth(), first.depth());
 }
 
-// A crowd of spheres and segments every way (steep, shallow, diagonal, across the bands' seams and the image's
-// edges): any number of bands draws the same picture bit for bit, and the baseline copy of the code the same but
-// for rounding.
 // 300 spheres and 400 segments every way (steep, shallow, diagonal, across the image's edges), half of them
-// shaded from one colour to another, seen from (1, 2, 9).
+// shaded from one colour to another, seen from (1, 2, 9), over a background whose red and blue differ.
 struct RasterCrowd {
     std::vector<render::RasterSphere> spheres;
     std::vector<render::LineVertex> lines;
@@ -211,11 +208,13 @@ struct RasterCrowd {
                              render::PixelLayout layout = {}) const {
         render::RasterImage image;
         image.setLayout(layout);
-        render::rasterise({spheres, {}, lines}, view, {0.1f, 0.1f, 0.1f, 1.0f}, image, threads, code);
+        render::rasterise({spheres, {}, lines}, view, {0.3f, 0.1f, 0.05f, 1.0f}, image, threads, code);
         return image;
     }
 };
 
+// The crowd: any number of bands (across their seams) draws the same picture bit for bit, and the baseline copy of
+// the code the same but for rounding.
 TEST(ProcessorRaster, AnyNumberOfBandsAndEitherCopyOfTheCodeDrawTheSamePicture) {
     const RasterCrowd crowd;
     const auto draw = [&](unsigned threads, render::RasterCode code) { return crowd.draw(threads, code); };
@@ -253,31 +252,33 @@ TEST(ProcessorRaster, AnyNumberOfBandsAndEitherCopyOfTheCodeDrawTheSamePicture) 
 }
 
 // The crowd drawn in each layout a framebuffer may have (the top row or the bottom one first, RGBA or BGRA) is the
-// same picture, pixel for pixel and in depth: only the rows' order and the bytes' order in memory differ (the
-// spheres' and segments' red and blue differ, so bytes left unswapped show).
+// same picture, pixel for pixel and in depth: read from memory row by row, each layout's rows and bytes are
+// OpenGL's layout's in its own order (the spheres', the segments' and the background's red and blue differ, so
+// bytes left unswapped show, and so does a row order reversed: the top and bottom rows differ).
 TEST(ProcessorRaster, EveryLayoutHoldsTheSamePicture) {
     const RasterCrowd crowd;
     const render::RasterImage opengl = crowd.draw(2);
-    const auto swapRedBlue = [](std::uint32_t pixel) {
-        return (pixel & 0xFF00FF00u) | (pixel & 0xFFu) << 16 | (pixel >> 16 & 0xFFu);
-    };
+    ASSERT_NE(std::vector<std::uint32_t>(opengl.colour().begin(), opengl.colour().begin() + kWidth),
+              std::vector<std::uint32_t>(opengl.colour().end() - opengl.stride(),
+                                         opengl.colour().end() - opengl.stride() + kWidth));
     for (const bool topRowFirst : {false, true}) {
         for (const bool bgra : {false, true}) {
             SCOPED_TRACE(std::string(topRowFirst ? "top row first, " : "bottom row first, ") +
                          (bgra ? "BGRA" : "RGBA"));
-            const render::RasterImage image = crowd.draw(2, render::RasterCode::fastest, {topRowFirst, bgra});
+            const render::PixelLayout layout{topRowFirst, bgra};
+            const render::RasterImage image = crowd.draw(2, render::RasterCode::fastest, layout);
+            ASSERT_EQ(image.stride(), opengl.stride());
             int differing = 0;
-            for (int y = 0; y < kHeight; ++y) {
+            for (int row = 0; row < kHeight; ++row) {  // in memory
+                const int y = topRowFirst ? kHeight - 1 - row : row;
                 for (int x = 0; x < kWidth; ++x) {
-                    const std::uint32_t expected = bgra ? swapRedBlue(opengl.colourAt(x, y)) : opengl.colourAt(x, y);
-                    differing += image.colourAt(x, y) != expected || image.depthAt(x, y) != opengl.depthAt(x, y);
+                    const auto at = static_cast<std::size_t>(row * image.stride() + x);
+                    const bool same = image.colour()[at] == render::inByteOrder(opengl.colourAt(x, y), layout) &&
+                                      image.depth()[at] == opengl.depthAt(x, y);
+                    differing += same ? 0 : 1;
                 }
             }
             EXPECT_EQ(differing, 0);
-            // In memory: the first row stored is the picture's top when the top row comes first.
-            const int firstRow = topRowFirst ? kHeight - 1 : 0;
-            for (int x = 0; x < kWidth; ++x)
-                EXPECT_EQ(image.colour()[static_cast<std::size_t>(x)], image.colourAt(x, firstRow));
         }
     }
 }
@@ -353,6 +354,7 @@ TEST(ProcessorRaster, DrawsThePictureOpenGLDraws) {
             renderer.setWindowLayout({topRowFirst, bgra});
             EXPECT_EQ(renderer.draw(camera, anchor, instances, lines).rgba, drawnOnProcessor.rgba)
                 << (topRowFirst ? "top row first, " : "bottom row first, ") << (bgra ? "BGRA" : "RGBA");
+            EXPECT_TRUE(renderer.lastFrameOnProcessor());
         }
     }
 }

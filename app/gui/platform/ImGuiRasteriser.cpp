@@ -45,12 +45,6 @@ inline std::uint32_t over(std::uint32_t colour, std::uint32_t under) {
     return over(ownShare(colour), colour >> 24, under);
 }
 
-// An RGBA8 pixel (red in the lowest byte) as a picture of the given byte order holds it: red and blue swapped for
-// BGRA. Blending is the same byte by byte either way.
-inline std::uint32_t inOrder(std::uint32_t rgba, bool bgra) {
-    return bgra ? (rgba & 0xFF00FF00u) | (rgba & 0xFFu) << 16 | (rgba >> 16 & 0xFFu) : rgba;
-}
-
 // A coordinate within reach of int (ImGui's lie within a few window sizes), a NaN as 0.
 inline float bounded(float edge) { return std::isnan(edge) ? 0.0f : std::clamp(edge, -1e6f, 1e6f); }
 
@@ -142,7 +136,7 @@ void drawRectangle(const Vertex& a, const Vertex& c, const AtlasPixels& atlas, c
     const Rgba colour = unpack(a.colour);
     const int height = image.height();
     if (a.u == c.u && a.v == c.v) {  // one texel for the whole rectangle: a solid fill
-        const std::uint32_t filled = inOrder(fragment(colour, sample(atlas, a.u, a.v)), image.layout().bgra);
+        const std::uint32_t filled = render::inByteOrder(fragment(colour, sample(atlas, a.u, a.v)), image.layout());
         const std::uint32_t alpha = filled >> 24;
         if (alpha == 0) return;
         const std::uint32_t share = ownShare(filled);
@@ -200,7 +194,7 @@ void drawRectangle(const Vertex& a, const Vertex& c, const AtlasPixels& atlas, c
         const float v = a.v + (static_cast<float>(row) + 0.5f - a.y) * vPerPixel;
         for (int x = left; x < right; ++x) {
             const float u = a.u + (static_cast<float>(x) + 0.5f - a.x) * uPerPixel;
-            const std::uint32_t drawn = inOrder(fragment(colour, sample(atlas, u, v)), image.layout().bgra);
+            const std::uint32_t drawn = render::inByteOrder(fragment(colour, sample(atlas, u, v)), image.layout());
             if (drawn >> 24 != 0) pixels[x] = over(drawn, pixels[x]);
         }
     }
@@ -248,7 +242,7 @@ void drawTriangle(const Vertex& p0, const Vertex& p1, const Vertex& p2, const At
     const Rgba texel = sample(atlas, v[0]->u, v[0]->v);
     const float inverseArea = 1.0f / area;
     const int height = image.height();
-    const bool bgra = image.layout().bgra;
+    const render::PixelLayout layout = image.layout();  // blending is the same byte by byte in either order
     for (int row = top; row < bottom; ++row) {
         const float y = static_cast<float>(row) + 0.5f;
         // The row's span: each edge function is linear along it, -dy px + (dx (y - y0) + dy x0), so where it is
@@ -289,7 +283,8 @@ void drawTriangle(const Vertex& p0, const Vertex& p1, const Vertex& p2, const At
             }
             const float u = weight[0] * v[0]->u + weight[1] * v[1]->u + weight[2] * v[2]->u;
             const float w = weight[0] * v[0]->v + weight[1] * v[1]->v + weight[2] * v[2]->v;
-            const std::uint32_t drawn = inOrder(fragment(colour, oneTexel ? texel : sample(atlas, u, w)), bgra);
+            const std::uint32_t drawn =
+                render::inByteOrder(fragment(colour, oneTexel ? texel : sample(atlas, u, w)), layout);
             if (drawn >> 24 != 0) pixels[x] = over(drawn, pixels[x]);
         }
     }

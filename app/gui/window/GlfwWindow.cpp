@@ -134,7 +134,9 @@ int runWindow(const WindowOptions& options, const ClientFactory& makeClient, std
     render::GlFunctions gl;
     try {
         gl = render::GlFunctions::load(glfwProcAddress);
-        gl.windowLayout = {.topRowFirst = true, .bgra = true};  // X11's and Wayland's 32-bit visuals
+        // Mesa's rasterisers on the processor keep the window as X11's and Wayland's 32-bit visuals lay it out; a GPU's
+        // driver is left OpenGL's own (its blit is the GPU's work either way).
+        if (gl.isSoftware()) gl.windowLayout = {.topRowFirst = true, .bgra = true};
     } catch (const render::RenderError& error) {
         return cannotOpen(err, error.what());
     }
