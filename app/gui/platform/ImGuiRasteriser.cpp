@@ -239,7 +239,7 @@ void drawTriangle(const Vertex& p0, const Vertex& p1, const Vertex& p2, const At
     const Rgba colours[3] = {unpack(v[0]->colour), unpack(v[1]->colour), unpack(v[2]->colour)};
     // The atlas's white pixel under an edge's fringe, or any one texel: sampled once.
     const bool oneTexel = v[0]->u == v[1]->u && v[0]->u == v[2]->u && v[0]->v == v[1]->v && v[0]->v == v[2]->v;
-    const Rgba texel = sample(atlas, v[0]->u, v[0]->v);
+    const Rgba texel = oneTexel ? sample(atlas, v[0]->u, v[0]->v) : Rgba{};
     const float inverseArea = 1.0f / area;
     const int height = image.height();
     const render::PixelLayout layout = image.layout();  // blending is the same byte by byte in either order
