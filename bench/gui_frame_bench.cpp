@@ -37,6 +37,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <stdexcept>
@@ -271,42 +272,40 @@ int run(const Options& options) {
         viewInto.ms.insert(viewInto.ms.end(), view.ms.begin(), view.ms.end());
     }
     app.state().view.layers.render.processorRaster = processorAsIs;
-    // The peer of drawing the panels on the processor (UiState::panelsOnProcessor): OpenGL's, alternated frame by
-    // frame (each side first in turn), for the app orbiting and for a frame that copies the kept view (the third of
-    // its view, after the one drawing it and the one keeping it).
-    Series orbitPanelsProcessor, orbitPanelsOpenGL, copiedPanelsProcessor, copiedPanelsOpenGL;
-    for (int k = 0; k < options.frames; ++k) {
-        for (const bool processor : {k % 2 == 0, k % 2 != 0}) {
-            app.state().ui.panelsOnProcessor = processor;
-            app.state().view.camera.orbit(kOrbitStep, 0.0);
-            for (Series* series : {processor ? &orbitPanelsProcessor : &orbitPanelsOpenGL, (Series*)nullptr,
-                                   processor ? &copiedPanelsProcessor : &copiedPanelsOpenGL}) {
-                Stopwatch watch;
-                app.frame(input);
-                context.gl().Finish();
-                if (series) series->ms.push_back(1e3 * watch.seconds());
+    // A change and its peer alternated frame by frame (each side first in turn; `choose(true)` sets the change), for
+    // the app orbiting and for a frame that copies the kept view (the third of its view, after the one drawing it and
+    // the one keeping it).
+    struct Sides {
+        Series orbit;
+        Series copied;
+    };
+    const auto alternateFrames = [&](const std::function<void(bool)>& choose, Sides& change, Sides& peer) {
+        for (int k = 0; k < options.frames; ++k) {
+            for (const bool changed : {k % 2 == 0, k % 2 != 0}) {
+                choose(changed);
+                app.state().view.camera.orbit(kOrbitStep, 0.0);
+                Sides& sides = changed ? change : peer;
+                for (Series* series : {&sides.orbit, (Series*)nullptr, &sides.copied}) {
+                    Stopwatch watch;
+                    app.frame(input);
+                    context.gl().Finish();
+                    if (series) series->ms.push_back(1e3 * watch.seconds());
+                }
             }
         }
-    }
+    };
+    // The peer of drawing the panels on the processor (UiState::panelsOnProcessor): OpenGL's.
+    Sides panelsProcessor, panelsOpenGL;
+    alternateFrames([&](bool processor) { app.state().ui.panelsOnProcessor = processor; }, panelsProcessor,
+                    panelsOpenGL);
     app.state().ui.panelsOnProcessor = true;
     // The peer of handing the processor's picture over in the window's own layout (GlFunctions::windowLayout,
     // OSMesa's: the top row first, RGBA), which makes the blit a copy of memory: OpenGL's layout (the bottom row
-    // first), alternated frame by frame likewise.
-    Series orbitWindowLayout, orbitOpenGLLayout, copiedWindowLayout, copiedOpenGLLayout;
+    // first).
+    Sides windowLayoutSides, openGLLayoutSides;
     const render::PixelLayout windowLayout = context.gl().windowLayout;
-    for (int k = 0; k < options.frames; ++k) {
-        for (const bool window : {k % 2 == 0, k % 2 != 0}) {
-            context.setWindowLayout(window ? windowLayout : render::PixelLayout{});
-            app.state().view.camera.orbit(kOrbitStep, 0.0);
-            for (Series* series : {window ? &orbitWindowLayout : &orbitOpenGLLayout, (Series*)nullptr,
-                                   window ? &copiedWindowLayout : &copiedOpenGLLayout}) {
-                Stopwatch watch;
-                app.frame(input);
-                context.gl().Finish();
-                if (series) series->ms.push_back(1e3 * watch.seconds());
-            }
-        }
-    }
+    alternateFrames([&](bool window) { context.setWindowLayout(window ? windowLayout : render::PixelLayout{}); },
+                    windowLayoutSides, openGLLayoutSides);
     context.setWindowLayout(windowLayout);
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
@@ -338,14 +337,14 @@ int run(const Options& options) {
     row("app, orbiting, drawn by OpenGL (alt.)", orbitOpenGL);
     row("3D view alone, on the processor (alt.)", viewProcessor);
     row("3D view alone, by OpenGL (alt.)", viewOpenGL);
-    row("app, orbiting, panels on the processor (alt.)", orbitPanelsProcessor);
-    row("app, orbiting, panels by OpenGL (alt.)", orbitPanelsOpenGL);
-    row("kept view copied, panels on processor (alt.)", copiedPanelsProcessor);
-    row("kept view copied, panels by OpenGL (alt.)", copiedPanelsOpenGL);
-    row("app, orbiting, window's layout (alt.)", orbitWindowLayout);
-    row("app, orbiting, OpenGL's layout (alt.)", orbitOpenGLLayout);
-    row("kept view copied, window's layout (alt.)", copiedWindowLayout);
-    row("kept view copied, OpenGL's layout (alt.)", copiedOpenGLLayout);
+    row("app, orbiting, panels on the processor (alt.)", panelsProcessor.orbit);
+    row("app, orbiting, panels by OpenGL (alt.)", panelsOpenGL.orbit);
+    row("kept view copied, panels on processor (alt.)", panelsProcessor.copied);
+    row("kept view copied, panels by OpenGL (alt.)", panelsOpenGL.copied);
+    row("app, orbiting, window's layout (alt.)", windowLayoutSides.orbit);
+    row("app, orbiting, OpenGL's layout (alt.)", openGLLayoutSides.orbit);
+    row("kept view copied, window's layout (alt.)", windowLayoutSides.copied);
+    row("kept view copied, OpenGL's layout (alt.)", openGLLayoutSides.copied);
     std::printf("steady (kept view copied): %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steadyCopied.median(),
                 1e3 / orbit.median());
     // The ray tree (R): first of the scene (its optical scene built from the document), then again from a source
