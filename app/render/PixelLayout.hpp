@@ -5,7 +5,7 @@
 namespace dropscope::render {
 
 // How a picture's pixels lie in memory: which row comes first and in which order a pixel's four bytes hold its
-// channels. OpenGL's textures and framebuffer objects hold row 0 at the bottom (bottomRowFirst); Mesa's gallium
+// channels. OpenGL's textures and framebuffer objects hold row 0 at the bottom (the default here); Mesa's gallium
 // drivers keep a window system's framebuffer with its top row first, in the window's channel order: RGBA for an
 // OSMesa context asked for OSMESA_RGBA, BGRA for X11's and Wayland's usual 32-bit visuals. A blit between two of
 // the same layout is a copy of memory; any other costs llvmpipe a pass of its shaders over every pixel
