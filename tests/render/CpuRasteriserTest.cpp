@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -355,6 +356,48 @@ TEST(ProcessorRaster, DrawsThePictureOpenGLDraws) {
             EXPECT_EQ(renderer.draw(camera, anchor, instances, lines).rgba, drawnOnProcessor.rgba)
                 << (topRowFirst ? "top row first, " : "bottom row first, ") << (bgra ? "BGRA" : "RGBA");
             EXPECT_TRUE(renderer.lastFrameOnProcessor());
+        }
+    }
+}
+
+// A picture held for the kept view (Renderer::draw's `hold`) is shown again as drawn, whichever layout the window
+// is taken to have, BGRA included; shown into a window taken to have another layout than the one it was drawn in,
+// it is declined (its rows and bytes would lie wrongly), and a new draw is needed; a frame not held, drawn in another
+// layout in between, changes none of that.
+TEST(ProcessorRaster, AHeldPictureIsShownAgainOnlyInTheLayoutItWasDrawnIn) {
+    const auto shapes = sphereCrowd(200, 3.0, 0.05, 0.4, 23);
+    const Eigen::AlignedBox3d bounds = boundsOf(shapes);
+    const render::Anchor anchor{bounds.center()};
+    const render::Camera camera = lookingAt(bounds.center(), Eigen::Vector3d(0.3, 0.5, 1.0), 12.0, 40.0, bounds);
+    render::LineBatch lines(anchor);
+    lines.add(bounds.min(), bounds.max(), {1.0f, 0.5f, 0.0f, 1.0f});
+    const render::ShapeInstances instances = render::buildShapeInstances(shapes, anchor);
+    DirectRenderer renderer(kWidth, kHeight);
+    renderer.setProcessorRaster(true);
+    renderer.setHold(true);
+    for (const bool topRowFirst : {false, true}) {
+        for (const bool bgra : {false, true}) {
+            SCOPED_TRACE(std::string(topRowFirst ? "top row first, " : "bottom row first, ") +
+                         (bgra ? "BGRA" : "RGBA"));
+            renderer.setWindowLayout({topRowFirst, bgra});
+            const snapshot::Image drawn = renderer.draw(camera, anchor, instances, lines);
+            ASSERT_TRUE(renderer.lastFrameOnProcessor());
+            EXPECT_GT(test::coveredPixels(drawn), kWidth * kHeight / 10);
+            const std::optional<snapshot::Image> shown = renderer.showHeld();
+            ASSERT_TRUE(shown.has_value());
+            EXPECT_EQ(shown->rgba, drawn.rgba);
+            renderer.setWindowLayout({!topRowFirst, bgra});
+            EXPECT_FALSE(renderer.showHeld().has_value()) << "held in another row order";
+            renderer.setWindowLayout({topRowFirst, !bgra});
+            EXPECT_FALSE(renderer.showHeld().has_value()) << "held in another byte order";
+            // A frame drawn since in the other layout, not held, leaves the held picture as it was.
+            renderer.setHold(false);
+            renderer.draw(camera, anchor, instances, lines);
+            renderer.setHold(true);
+            renderer.setWindowLayout({topRowFirst, bgra});
+            const std::optional<snapshot::Image> again = renderer.showHeld();
+            ASSERT_TRUE(again.has_value());
+            EXPECT_EQ(again->rgba, drawn.rgba);
         }
     }
 }

@@ -33,7 +33,15 @@ snapshot::Image DirectRenderer::draw(const render::Camera& camera, const render:
     options.sphereProgram = sphereProgram_;
     options.apartSpheres = apartSpheres_;
     options.processorRaster = processorRaster_;
-    renderer_.draw(camera, options, width(), height());
+    renderer_.draw(camera, options, width(), height(), {}, hold_);
+    return context_.read();
+}
+
+std::optional<snapshot::Image> DirectRenderer::showHeld() {
+    const render::GlFunctions& gl = context_.gl();
+    gl.ClearColor(1.0f, 0.0f, 1.0f, 1.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    if (!renderer_.showHeld(renderer_.heldPicture(), width(), height(), {})) return std::nullopt;
     return context_.read();
 }
 

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <optional>
 
 namespace dropscope::test {
 
@@ -34,6 +35,11 @@ public:
     void setProcessorRaster(bool on) { processorRaster_ = on; }
     // What the renderer takes the framebuffer's layout to be (OSMesa's own, the top row first in RGBA, unless set).
     void setWindowLayout(render::PixelLayout layout) { context_.setWindowLayout(layout); }
+    // Whether the next draws hold their picture drawn on the processor (Renderer::draw's `hold`; off unless set).
+    void setHold(bool on) { hold_ = on; }
+    // The framebuffer cleared to magenta, then the held picture shown again (Renderer::showHeld), read back; none
+    // when the renderer declines.
+    std::optional<snapshot::Image> showHeld();
     // Renderer::apartInLastFrame and lastFrameOnProcessor of the last draw.
     std::size_t apartInLastFrame() const { return renderer_.apartInLastFrame(); }
     bool lastFrameOnProcessor() const { return renderer_.lastFrameOnProcessor(); }
@@ -47,6 +53,7 @@ private:
     bool sphereProgram_ = true;
     bool apartSpheres_ = true;
     bool processorRaster_ = false;
+    bool hold_ = false;
 };
 
 // A camera from `eye` to `target`, up +y, with its near and far planes around `bounds`.
