@@ -186,7 +186,7 @@ struct SphereRow {
         row.eyeClipZ = view.eyeClip.x;
         row.eyeClipW = view.eyeClip.y;
         for (std::size_t byte = 0; byte < 3; ++byte) {
-            row.colour255[byte] = std::max(0.0f, sphere.colour[image.layout().bgra ? 2 - byte : byte]) * 255.0f;
+            row.colour255[byte] = std::max(0.0f, sphere.colour[channelInByte(byte, image.layout())]) * 255.0f;
         }
         row.alpha = packedChannel(sphere.colour[3], 3);
         for (int y = rowFrom; y < rowTo; ++y) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace dropscope::render {
@@ -16,6 +17,11 @@ struct PixelLayout {
 
     bool operator==(const PixelLayout&) const = default;
 };
+
+// The channel (0 red, 1 green, 2 blue, 3 alpha) a pixel of `layout` holds in its byte `byte` (0 the lowest).
+constexpr std::size_t channelInByte(std::size_t byte, PixelLayout layout) {
+    return layout.bgra && (byte == 0 || byte == 2) ? 2 - byte : byte;
+}
 
 // An RGBA8 pixel (red in the lowest byte) as a picture of `layout` holds it: red and blue swapped for BGRA.
 constexpr std::uint32_t inByteOrder(std::uint32_t rgba, PixelLayout layout) {

@@ -172,8 +172,8 @@ void drawRectangle(const Vertex& a, const Vertex& c, const AtlasPixels& atlas, c
         const auto texelX = static_cast<std::size_t>(firstU);
         const auto texelY = static_cast<std::size_t>(firstV);
         const std::uint32_t tint[4] = {a.colour & 0xFFu, a.colour >> 8 & 0xFFu, a.colour >> 16 & 0xFFu, a.colour >> 24};
-        const std::size_t low = image.layout().bgra ? 2 : 0;  // the channel in the pixel's lowest byte, and highest
-        const std::size_t high = 2 - low;
+        const std::size_t low = render::channelInByte(0, image.layout());  // the channels in bytes 0 and 2
+        const std::size_t high = render::channelInByte(2, image.layout());
         for (int row = top; row < bottom; ++row) {
             std::uint32_t* pixels = image.colourRow(height - 1 - row);
             const unsigned char* texels =
