@@ -5,6 +5,7 @@
 #include "geometry/Sphere.hpp"
 #include "render/CpuRasteriser.hpp"
 #include "render/ImageComparison.hpp"
+#include "render/LayoutComparison.hpp"
 #include "render/RenderHarness.hpp"
 #include "render/RenderTolerances.hpp"
 #include "render/SilhouetteCoverage.hpp"
@@ -262,25 +263,11 @@ TEST(ProcessorRaster, EveryLayoutHoldsTheSamePicture) {
     ASSERT_NE(std::vector<std::uint32_t>(opengl.colour().begin(), opengl.colour().begin() + kWidth),
               std::vector<std::uint32_t>(opengl.colour().end() - opengl.stride(),
                                          opengl.colour().end() - opengl.stride() + kWidth));
-    for (const bool topRowFirst : {false, true}) {
-        for (const bool bgra : {false, true}) {
-            SCOPED_TRACE(std::string(topRowFirst ? "top row first, " : "bottom row first, ") +
-                         (bgra ? "BGRA" : "RGBA"));
-            const render::PixelLayout layout{topRowFirst, bgra};
-            const render::RasterImage image = crowd.draw(2, render::RasterCode::fastest, layout);
-            ASSERT_EQ(image.stride(), opengl.stride());
-            int differing = 0;
-            for (int row = 0; row < kHeight; ++row) {  // in memory
-                const int y = topRowFirst ? kHeight - 1 - row : row;
-                for (int x = 0; x < kWidth; ++x) {
-                    const auto at = static_cast<std::size_t>(row * image.stride() + x);
-                    const bool same = image.colour()[at] == render::inByteOrder(opengl.colourAt(x, y), layout) &&
-                                      image.depth()[at] == opengl.depthAt(x, y);
-                    differing += same ? 0 : 1;
-                }
-            }
-            EXPECT_EQ(differing, 0);
-        }
+    for (const render::PixelLayout layout : test::kEveryLayout) {
+        SCOPED_TRACE(test::layoutName(layout));
+        const render::RasterImage image = crowd.draw(2, render::RasterCode::fastest, layout);
+        ASSERT_EQ(image.stride(), opengl.stride());
+        EXPECT_EQ(test::differingInMemory(image, opengl, true), 0);
     }
 }
 
@@ -350,13 +337,11 @@ TEST(ProcessorRaster, DrawsThePictureOpenGLDraws) {
         << difference.differingPixels << " of " << difference.pixels << " pixels differ";
     // The window taken to lie in memory otherwise than OSMesa's does (the top row first, RGBA) makes the hand-over
     // slower, never another picture.
-    for (const bool topRowFirst : {false, true}) {
-        for (const bool bgra : {false, true}) {
-            renderer.setWindowLayout({topRowFirst, bgra});
-            EXPECT_EQ(renderer.draw(camera, anchor, instances, lines).rgba, drawnOnProcessor.rgba)
-                << (topRowFirst ? "top row first, " : "bottom row first, ") << (bgra ? "BGRA" : "RGBA");
-            EXPECT_TRUE(renderer.lastFrameOnProcessor());
-        }
+    for (const render::PixelLayout layout : test::kEveryLayout) {
+        SCOPED_TRACE(test::layoutName(layout));
+        renderer.setWindowLayout(layout);
+        EXPECT_EQ(renderer.draw(camera, anchor, instances, lines).rgba, drawnOnProcessor.rgba);
+        EXPECT_TRUE(renderer.lastFrameOnProcessor());
     }
 }
 
@@ -375,30 +360,27 @@ TEST(ProcessorRaster, AHeldPictureIsShownAgainOnlyInTheLayoutItWasDrawnIn) {
     DirectRenderer renderer(kWidth, kHeight);
     renderer.setProcessorRaster(true);
     renderer.setHold(true);
-    for (const bool topRowFirst : {false, true}) {
-        for (const bool bgra : {false, true}) {
-            SCOPED_TRACE(std::string(topRowFirst ? "top row first, " : "bottom row first, ") +
-                         (bgra ? "BGRA" : "RGBA"));
-            renderer.setWindowLayout({topRowFirst, bgra});
-            const snapshot::Image drawn = renderer.draw(camera, anchor, instances, lines);
-            ASSERT_TRUE(renderer.lastFrameOnProcessor());
-            EXPECT_GT(test::coveredPixels(drawn), kWidth * kHeight / 10);
-            const std::optional<snapshot::Image> shown = renderer.showHeld();
-            ASSERT_TRUE(shown.has_value());
-            EXPECT_EQ(shown->rgba, drawn.rgba);
-            renderer.setWindowLayout({!topRowFirst, bgra});
-            EXPECT_FALSE(renderer.showHeld().has_value()) << "held in another row order";
-            renderer.setWindowLayout({topRowFirst, !bgra});
-            EXPECT_FALSE(renderer.showHeld().has_value()) << "held in another byte order";
-            // A frame drawn since in the other layout, not held, leaves the held picture as it was.
-            renderer.setHold(false);
-            renderer.draw(camera, anchor, instances, lines);
-            renderer.setHold(true);
-            renderer.setWindowLayout({topRowFirst, bgra});
-            const std::optional<snapshot::Image> again = renderer.showHeld();
-            ASSERT_TRUE(again.has_value());
-            EXPECT_EQ(again->rgba, drawn.rgba);
-        }
+    for (const render::PixelLayout layout : test::kEveryLayout) {
+        SCOPED_TRACE(test::layoutName(layout));
+        renderer.setWindowLayout(layout);
+        const snapshot::Image drawn = renderer.draw(camera, anchor, instances, lines);
+        ASSERT_TRUE(renderer.lastFrameOnProcessor());
+        EXPECT_GT(test::coveredPixels(drawn), kWidth * kHeight / 10);
+        const std::optional<snapshot::Image> shown = renderer.showHeld();
+        ASSERT_TRUE(shown.has_value());
+        EXPECT_EQ(shown->rgba, drawn.rgba);
+        renderer.setWindowLayout({!layout.topRowFirst, layout.bgra});
+        EXPECT_FALSE(renderer.showHeld().has_value()) << "held in another row order";
+        renderer.setWindowLayout({layout.topRowFirst, !layout.bgra});
+        EXPECT_FALSE(renderer.showHeld().has_value()) << "held in another byte order";
+        // A frame drawn since in the other layout, not held, leaves the held picture as it was.
+        renderer.setHold(false);
+        renderer.draw(camera, anchor, instances, lines);
+        renderer.setHold(true);
+        renderer.setWindowLayout(layout);
+        const std::optional<snapshot::Image> again = renderer.showHeld();
+        ASSERT_TRUE(again.has_value());
+        EXPECT_EQ(again->rgba, drawn.rgba);
     }
 }
 
