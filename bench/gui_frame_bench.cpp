@@ -19,7 +19,8 @@
 // alone and the shapes alone with the spheres apart drawn at their centre's depth (as the app draws) and not
 // (RenderOptions::apartSpheres), in alternate blocks; and the app orbiting and copying its kept view with its panels
 // drawn on the processor (as the app draws over a software OpenGL) and by OpenGL (UiState::panelsOnProcessor), frame by
-// frame.
+// frame; likewise with the picture in the window's layout and in OpenGL's, and with the panels that stay kept in a
+// layer (UiState::keepPanels) and all drawn every frame.
 // docs/performance.md ("The app") has the figures.
 //
 // Run: build/bench/gui_frame_bench [--frames 40] [--droplets 1e4] [--paths 1e3] [--point-pixels 6] [--png FILE]
@@ -307,6 +308,10 @@ int run(const Options& options) {
     alternateFrames([&](bool window) { context.setWindowLayout(window ? windowLayout : render::PixelLayout{}); },
                     windowLayoutSides, openGLLayoutSides);
     context.setWindowLayout(windowLayout);
+    // The peer of keeping the panels' lists that stay in a layer (UiState::keepPanels): every list drawn every frame.
+    Sides keptSides, drawnSides;
+    alternateFrames([&](bool kept) { app.state().ui.keepPanels = kept; }, keptSides, drawnSides);
+    app.state().ui.keepPanels = true;
     const double reference3d = alone.median();
     std::printf("\n%-44s %10s %10s %12s\n", "frame (1280x800, llvmpipe)", "median ms", "min ms", "/ 3D alone");
     const auto row = [&](const char* name, Series& series) {
@@ -345,6 +350,10 @@ int run(const Options& options) {
     row("app, orbiting, OpenGL's layout (alt.)", openGLLayoutSides.orbit);
     row("kept view copied, window's layout (alt.)", windowLayoutSides.copied);
     row("kept view copied, OpenGL's layout (alt.)", openGLLayoutSides.copied);
+    row("app, orbiting, panels kept (alt.)", keptSides.orbit);
+    row("app, orbiting, panels drawn (alt.)", drawnSides.orbit);
+    row("kept view copied, panels kept (alt.)", keptSides.copied);
+    row("kept view copied, panels drawn (alt.)", drawnSides.copied);
     std::printf("steady (kept view copied): %.1f frames/s, orbiting: %.1f frames/s\n", 1e3 / steadyCopied.median(),
                 1e3 / orbit.median());
     // The ray tree (R): first of the scene (its optical scene built from the document), then again from a source

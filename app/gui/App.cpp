@@ -8,6 +8,7 @@
 #include "gui/platform/ImGuiInput.hpp"
 #include "gui/platform/ImGuiRasteriser.hpp"
 #include "gui/platform/ImGuiRenderer.hpp"
+#include "gui/platform/KeptPanels.hpp"
 
 #include <imgui.h>
 
@@ -24,6 +25,7 @@ App::App(const render::GlFunctions& gl, Scene scene, const AppOptions& options)
     configureImGuiIo(io);
     ImGui::StyleColorsDark();
     imguiRenderer_ = std::make_unique<ImGuiRenderer>(gl);
+    keptPanels_ = std::make_unique<KeptPanels>();
     scene_ = std::make_unique<ViewportScene>(gl);
 
     const SceneDocument& document = state_.scene.document();
@@ -86,7 +88,7 @@ void App::frame(const InputFrame& input) {
     if (state_.ui.screenshot && state_.ui.screenshot->delayFrames-- <= 0) takeScreenshot(width, height);
 }
 
-render::Renderer::RasterOverlay App::panelsOverlay(int framebufferWidth, int framebufferHeight) const {
+render::Renderer::RasterOverlay App::panelsOverlay(int framebufferWidth, int framebufferHeight) {
     const ImDrawData* data = ImGui::GetDrawData();
     if (!state_.ui.panelsOnProcessor || !data || !rasterisable(*data, imguiRenderer_->fontTexture()) ||
         static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x) != framebufferWidth ||
@@ -97,7 +99,13 @@ render::Renderer::RasterOverlay App::panelsOverlay(int framebufferWidth, int fra
     unsigned char* pixels = nullptr;
     ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &atlas.width, &atlas.height);
     atlas.rgba = pixels;
-    return [data, atlas](render::RasterImage& image) { rasteriseImGui(*data, atlas, image, render::rasterThreads()); };
+    if (!state_.ui.keepPanels) {
+        return
+            [data, atlas](render::RasterImage& image) { rasteriseImGui(*data, atlas, image, render::rasterThreads()); };
+    }
+    return [this, data, atlas](render::RasterImage& image) {
+        keptPanels_->drawOver(*data, atlas, image, render::rasterThreads());
+    };
 }
 
 // A trace or a ray tree running, a screenshot due, or a text field being edited (its cursor blinks).

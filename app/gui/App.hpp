@@ -17,6 +17,7 @@ struct ImGuiContext;
 namespace dropscope::gui {
 
 class ImGuiRenderer;
+class KeptPanels;
 
 struct AppOptions {
     std::filesystem::path scenePath;                  // where the scene came from (Save writes there); may be empty
@@ -51,13 +52,14 @@ private:
     void takeScreenshot(int framebufferWidth, int framebufferHeight);
     // The last ImGui frame's panels drawn on the processor (UiState::panelsOnProcessor), for the 3D view to draw over
     // its picture when it is drawn there; none when they show an OpenGL texture or the frame is not the display's.
-    render::Renderer::RasterOverlay panelsOverlay(int framebufferWidth, int framebufferHeight) const;
+    render::Renderer::RasterOverlay panelsOverlay(int framebufferWidth, int framebufferHeight);
 
     const render::GlFunctions& gl_;
     AppOptions options_;
     std::string iniFile_;  // ImGui keeps a pointer to this
     ImGuiContext* context_ = nullptr;
     std::unique_ptr<ImGuiRenderer> imguiRenderer_;
+    std::unique_ptr<KeptPanels> keptPanels_;  // for panelsOverlay (UiState::keepPanels)
     std::unique_ptr<ViewportScene> scene_;
     ViewportControls controls_;
     AppState state_;

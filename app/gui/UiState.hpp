@@ -33,6 +33,9 @@ struct UiState {
     // Whether a frame whose 3D view is drawn on the processor gets its panels drawn there too, into the same
     // picture, when they show only text and shapes (gui/platform/ImGuiRasteriser); else OpenGL draws them.
     bool panelsOnProcessor = true;
+    // Whether those panels' lists that stay from frame to frame are drawn once into a kept layer and blended from it
+    // (gui/platform/KeptPanels); else every list is drawn every frame.
+    bool keepPanels = true;
 };
 
 }  // namespace dropscope::gui

@@ -5,12 +5,14 @@
 
 #include "gui/platform/ImGuiRasteriser.hpp"
 #include "gui/platform/ImGuiRenderer.hpp"
+#include "gui/platform/KeptPanels.hpp"
 #include "render/LayoutComparison.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstdlib>
+#include <random>
 
 namespace dropscope::gui::testing {
 namespace {
@@ -234,6 +236,211 @@ TEST_F(ImGuiRasteriser, AnEdgeThroughPixelCentresGoesWhereOpenGLPutsIt) {
     const Comparison comparison = compare(drawnByOpenGL(data, kBlack), drawnOnProcessor(kBlack, 1, data), kBlack, 0);
     EXPECT_GT(comparison.drawn, 700) << "the five shapes, about 800 pixels";
     EXPECT_EQ(comparison.differing, 0);
+}
+
+// The panels kept while they stay (KeptPanels): the lists equal to the last frame's drawn once into a layer, blended
+// over each new view.
+class KeptPanelsTest : public ImGuiRasteriser {
+protected:
+    // A 3D view that changes from frame to frame: pixels of any colour and alpha, drawn from `seed`.
+    static render::RasterImage view(unsigned seed, render::PixelLayout layout = {}) {
+        render::RasterImage image;
+        image.setLayout(layout);
+        image.resize(kWidth, kHeight);
+        std::mt19937 random(seed);
+        for (int y = 0; y < kHeight; ++y) {
+            std::uint32_t* row = image.colourRow(y);
+            for (int x = 0; x < image.stride(); ++x) row[x] = static_cast<std::uint32_t>(random());
+        }
+        return image;
+    }
+    // `data` drawn by `kept` over view(seed), and directly over the same view.
+    struct Both {
+        render::RasterImage kept;
+        render::RasterImage direct;
+    };
+    Both drawnBoth(KeptPanels& kept, const ImDrawData& data, unsigned seed, render::PixelLayout layout = {}) const {
+        Both both{view(seed, layout), view(seed, layout)};
+        kept.drawOver(data, atlas_, both.kept, 2);
+        rasteriseImGui(data, atlas_, both.direct, 2);
+        return both;
+    }
+    // Lists of this test's own, each over the whole window, the font atlas bound.
+    ImDrawList& ownList(std::size_t n) {
+        ImDrawList& list = *own_[n];
+        list._ResetForNewFrame();
+        list.PushClipRectFullScreen();
+        list.PushTextureID(fontTexture_);
+        return list;
+    }
+    ImDrawData ownLists(int count) {
+        ImDrawData data;
+        data.Valid = true;
+        for (int n = 0; n < count; ++n) ownPointers_[n] = own_[static_cast<std::size_t>(n)].get();
+        data.CmdLists = ownPointers_;
+        data.CmdListsCount = count;
+        data.DisplaySize = {kWidth, kHeight};
+        data.FramebufferScale = {1.0f, 1.0f};
+        return data;
+    }
+
+    std::array<std::unique_ptr<ImDrawList>, 3> own_{std::make_unique<ImDrawList>(ImGui::GetDrawListSharedData()),
+                                                    std::make_unique<ImDrawList>(ImGui::GetDrawListSharedData()),
+                                                    std::make_unique<ImDrawList>(ImGui::GetDrawListSharedData())};
+    ImDrawList* ownPointers_[3] = {nullptr, nullptr, nullptr};
+};
+
+// Where several of the panels' blends meet the view, the layer combines them before the view's pixel is known, which
+// may round a channel another way: at most this share of the pixels differ from the panels drawn directly, by 1 (about
+// 60,000 of the 1,024,000 over a view of random pixels, 6-8 of them by 2).
+constexpr double kCombinedShare = 0.1;
+
+// The pixels of two pictures that differ at all, by more than 1, and by more than kRoundingTolerance, in some channel.
+struct Differences {
+    int any = 0;
+    int beyondOne = 0;
+    int beyondRounding = 0;
+};
+
+Differences differences(const render::RasterImage& a, const render::RasterImage& b) {
+    Differences result;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            int most = 0;
+            for (int k = 0; k < 4; ++k) {
+                most = std::max(most, std::abs(static_cast<int>(a.colourAt(x, y) >> (8 * k) & 0xFFu) -
+                                               static_cast<int>(b.colourAt(x, y) >> (8 * k) & 0xFFu)));
+            }
+            result.any += most > 0 ? 1 : 0;
+            result.beyondOne += most > 1 ? 1 : 0;
+            result.beyondRounding += most > kRoundingTolerance ? 1 : 0;
+        }
+    }
+    return result;
+}
+
+// A layer's pixel (colour times coverage in each channel, coverage in alpha) over a pixel: each channel the layer's
+// plus the pixel's times one minus the coverage, rounded to nearest, computed here in integers of its own.
+TEST(BlendCovered, IsTheLayerPlusWhatItsCoverageLeavesOfEachPixel) {
+    std::mt19937 random(7);
+    for (const int count : {1, 3, 4, 5, 8, 11, 333}) {
+        std::vector<std::uint32_t> layer(static_cast<std::size_t>(count));
+        std::vector<std::uint32_t> pixels(layer.size());
+        for (std::size_t x = 0; x < layer.size(); ++x) {
+            const auto coverage = static_cast<std::uint32_t>(random() % 256u);
+            std::uint32_t value = coverage << 24;
+            for (int k = 0; k < 3; ++k) {
+                value |= static_cast<std::uint32_t>(random() % (coverage + 1u)) << (8 * k);  // at most the coverage
+            }
+            layer[x] = value;
+            pixels[x] = static_cast<std::uint32_t>(random());
+        }
+        std::vector<std::uint32_t> blended = pixels;
+        blendCovered(layer.data(), blended.data(), count);
+        for (std::size_t x = 0; x < layer.size(); ++x) {
+            const std::uint32_t rest = 255u - (layer[x] >> 24);
+            for (int k = 0; k < 4; ++k) {
+                const std::uint32_t under = pixels[x] >> (8 * k) & 0xFFu;
+                const std::uint32_t expected = (layer[x] >> (8 * k) & 0xFFu) + (2u * under * rest + 255u) / 510u;
+                ASSERT_EQ(blended[x] >> (8 * k) & 0xFFu, expected)
+                    << "pixel " << x << " of " << count << ", byte " << k;
+            }
+        }
+    }
+}
+
+// The app's panels, every one open, over views that change from frame to frame: the first frame draws them, the
+// second draws the layer, the later ones blend it; each picture is the panels drawn directly over that view.
+TEST_F(KeptPanelsTest, TheAppsPanelsFromTheLayerAreThePanelsDrawnOverEachView) {
+    const ImDrawData& data = *ImGui::GetDrawData();
+    ASSERT_GT(data.TotalVtxCount, 1000) << "every panel open";
+    for (const render::PixelLayout layout : test::kEveryLayout) {
+        SCOPED_TRACE(test::layoutName(layout));
+        KeptPanels kept;
+        for (unsigned frame = 0; frame < 4; ++frame) {
+            SCOPED_TRACE(frame);
+            const Both both = drawnBoth(kept, data, frame, layout);
+            EXPECT_EQ(kept.lastDrawn(), frame == 0   ? KeptPanels::Drawn::directly
+                                        : frame == 1 ? KeptPanels::Drawn::layerDrawn
+                                                     : KeptPanels::Drawn::fromLayer);
+            const Differences differing = differences(both.kept, both.direct);
+            EXPECT_EQ(differing.beyondRounding, 0);
+            EXPECT_LE(differing.beyondOne, static_cast<int>(kEdgeShare * kWidth * kHeight));
+            EXPECT_LE(differing.any, static_cast<int>(kCombinedShare * kWidth * kHeight))
+                << differing.any << " pixels differ";
+            if (frame == 0) {
+                EXPECT_EQ(differing.any, 0);
+            }
+        }
+    }
+}
+
+TEST_F(KeptPanelsTest, AListThatChangedIsDrawnAsItIsNow) {
+    ImDrawList& panel = ownList(0);
+    panel.AddRectFilled({100.0f, 100.0f}, {500.0f, 500.0f}, IM_COL32(40, 60, 80, 240));
+    panel.AddText({120.0f, 120.0f}, IM_COL32(230, 230, 230, 255), "A panel's text");
+    const ImDrawData data = ownLists(1);
+    KeptPanels kept;
+    drawnBoth(kept, data, 1);
+    drawnBoth(kept, data, 2);
+    ASSERT_EQ(kept.lastDrawn(), KeptPanels::Drawn::layerDrawn);
+    // The same list, another colour: not the layer's.
+    ImDrawList& changed = ownList(0);
+    changed.AddRectFilled({100.0f, 100.0f}, {500.0f, 500.0f}, IM_COL32(200, 30, 20, 240));
+    changed.AddText({120.0f, 120.0f}, IM_COL32(230, 230, 230, 255), "A panel's text");
+    for (unsigned frame = 3; frame < 6; ++frame) {
+        const Both both = drawnBoth(kept, data, frame);
+        EXPECT_EQ(differences(both.kept, both.direct).beyondRounding, 0) << "frame " << frame;
+        const std::uint32_t inside = both.kept.colourAt(300, kHeight - 1 - 300);
+        EXPECT_GT(inside & 0xFFu, 150u) << "the new red, frame " << frame;
+    }
+}
+
+// A list that changed under one kept in the layer is not drawn over it, nor is the layer of another picture size or
+// layout used.
+TEST_F(KeptPanelsTest, TheLayerIsNotUsedWhereItWouldPutAListOverOneLaterOrFitAnotherPicture) {
+    const auto lists = [&](ImU32 underColour) {
+        ownList(0).AddRectFilled({100.0f, 100.0f}, {500.0f, 500.0f}, underColour);
+        ownList(1).AddRectFilled({300.0f, 300.0f}, {700.0f, 700.0f}, IM_COL32(20, 200, 40, 180));  // over list 0
+        return ownLists(2);
+    };
+    ImDrawData data = lists(IM_COL32(40, 60, 80, 255));
+    KeptPanels kept;
+    drawnBoth(kept, data, 1);
+    drawnBoth(kept, data, 2);
+    ASSERT_EQ(kept.lastDrawn(), KeptPanels::Drawn::layerDrawn);
+    data = lists(IM_COL32(200, 30, 20, 255));
+    const Both both = drawnBoth(kept, data, 3);
+    EXPECT_EQ(kept.lastDrawn(), KeptPanels::Drawn::directly);
+    EXPECT_EQ(differences(both.kept, both.direct).any, 0);
+    const std::uint32_t overlap = both.kept.colourAt(400, kHeight - 1 - 400);
+    EXPECT_GT(overlap >> 8 & 0xFFu, overlap & 0xFFu) << "list 1's green over list 0's red";
+
+    drawnBoth(kept, data, 4);
+    ASSERT_EQ(kept.lastDrawn(), KeptPanels::Drawn::layerDrawn);
+    for (const render::PixelLayout layout : test::kEveryLayout) {
+        if (layout == render::PixelLayout{}) continue;  // the layer's
+        const Both other = drawnBoth(kept, data, 5, layout);
+        EXPECT_NE(kept.lastDrawn(), KeptPanels::Drawn::fromLayer) << test::layoutName(layout);
+        EXPECT_EQ(differences(other.kept, other.direct).beyondRounding, 0) << test::layoutName(layout);
+    }
+}
+
+// A small list that changes every frame over kept ones (a tooltip) is drawn over the layer, which stays.
+TEST_F(KeptPanelsTest, ASmallListChangingEveryFrameOverTheLayerLeavesItKept) {
+    ownList(0).AddRectFilled({100.0f, 100.0f}, {500.0f, 500.0f}, IM_COL32(40, 60, 80, 240));
+    KeptPanels kept;
+    for (unsigned frame = 0; frame < 6; ++frame) {
+        ImDrawList& tooltip = ownList(1);
+        const float x = 200.0f + 10.0f * static_cast<float>(frame);
+        tooltip.AddRectFilled({x, 200.0f}, {x + 80.0f, 230.0f}, IM_COL32(10, 10, 10, 230));
+        tooltip.AddText({x + 4.0f, 204.0f}, IM_COL32(250, 250, 250, 255), "droplet 12");
+        const Both both = drawnBoth(kept, ownLists(2), frame);
+        if (frame >= 2) {
+            EXPECT_EQ(kept.lastDrawn(), KeptPanels::Drawn::fromLayer) << "frame " << frame;
+        }
+        EXPECT_EQ(differences(both.kept, both.direct).beyondRounding, 0) << "frame " << frame;
+    }
 }
 
 }  // namespace

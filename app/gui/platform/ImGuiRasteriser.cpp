@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include <emmintrin.h>
+
 namespace dropscope::gui {
 
 namespace {
@@ -339,6 +341,31 @@ bool rasterisable(const ImDrawData& data, ImTextureID fontTexture) {
         }
     }
     return true;
+}
+
+void blendCovered(const std::uint32_t* layer, std::uint32_t* pixels, int count) {
+    // Four pixels at a time, each channel in a 16-bit lane: timesByte's x y + 0x80 and its sum with itself shifted
+    // right by 8 stay below 2^16, and the layer's byte and the product's add without carries (over).
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i full = _mm_set1_epi16(255);
+    const __m128i half = _mm_set1_epi16(0x80);
+    const auto scaledPair = [&](__m128i under, __m128i rest) {  // two pixels' channels times their rest, rounded
+        const __m128i t = _mm_add_epi16(_mm_mullo_epi16(under, rest), half);
+        return _mm_srli_epi16(_mm_add_epi16(t, _mm_srli_epi16(t, 8)), 8);
+    };
+    int x = 0;
+    for (; x + 4 <= count; x += 4) {
+        const __m128i share = _mm_loadu_si128(reinterpret_cast<const __m128i*>(layer + x));
+        const __m128i under = _mm_loadu_si128(reinterpret_cast<const __m128i*>(pixels + x));
+        const __m128i alpha = _mm_srli_epi32(share, 24);
+        const __m128i alphas = _mm_or_si128(alpha, _mm_slli_epi32(alpha, 16));  // each pixel's alpha in two lanes
+        const __m128i low =
+            scaledPair(_mm_unpacklo_epi8(under, zero), _mm_sub_epi16(full, _mm_unpacklo_epi32(alphas, alphas)));
+        const __m128i high =
+            scaledPair(_mm_unpackhi_epi8(under, zero), _mm_sub_epi16(full, _mm_unpackhi_epi32(alphas, alphas)));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(pixels + x), _mm_add_epi8(share, _mm_packus_epi16(low, high)));
+    }
+    for (; x < count; ++x) pixels[x] = over(layer[x], layer[x] >> 24, pixels[x]);
 }
 
 void rasteriseImGui(const ImDrawData& data, const AtlasPixels& atlas, render::RasterImage& image, unsigned threads) {

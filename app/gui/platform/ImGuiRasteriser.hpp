@@ -26,4 +26,10 @@ bool rasterisable(const ImDrawData& data, ImTextureID fontTexture);
 // `threads` bands, drawn at once; any count gives the same picture. docs/gui.md, "ImGui's panels on the processor".
 void rasteriseImGui(const ImDrawData& data, const AtlasPixels& atlas, render::RasterImage& image, unsigned threads);
 
+// `count` pixels of a layer that rasteriseImGui drew over transparent black (each channel its colour times coverage,
+// the alpha its coverage) blended over `pixels` as that drawing would have blended over them: the layer plus each
+// channel times one minus the coverage, rounded as rasteriseImGui rounds. Where one blend made a layer's pixel, the
+// same as drawing it over `pixels`; where several, they are combined first, which may round 1 or 2 another way.
+void blendCovered(const std::uint32_t* layer, std::uint32_t* pixels, int count);
+
 }  // namespace dropscope::gui
