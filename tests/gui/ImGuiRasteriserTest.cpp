@@ -243,12 +243,13 @@ TEST_F(ImGuiRasteriser, AnEdgeThroughPixelCentresGoesWhereOpenGLPutsIt) {
 class KeptPanelsTest : public ImGuiRasteriser {
 protected:
     // A 3D view that changes from frame to frame: pixels of any colour and alpha, drawn from `seed`.
-    static render::RasterImage view(unsigned seed, render::PixelLayout layout = {}) {
+    static render::RasterImage view(unsigned seed, render::PixelLayout layout = {}, int width = kWidth,
+                                    int height = kHeight) {
         render::RasterImage image;
         image.setLayout(layout);
-        image.resize(kWidth, kHeight);
+        image.resize(width, height);
         std::mt19937 random(seed);
-        for (int y = 0; y < kHeight; ++y) {
+        for (int y = 0; y < height; ++y) {
             std::uint32_t* row = image.colourRow(y);
             for (int x = 0; x < image.stride(); ++x) row[x] = static_cast<std::uint32_t>(random());
         }
@@ -259,8 +260,9 @@ protected:
         render::RasterImage kept;
         render::RasterImage direct;
     };
-    Both drawnBoth(KeptPanels& kept, const ImDrawData& data, unsigned seed, render::PixelLayout layout = {}) const {
-        Both both{view(seed, layout), view(seed, layout)};
+    Both drawnBoth(KeptPanels& kept, const ImDrawData& data, unsigned seed, render::PixelLayout layout = {},
+                   int width = kWidth, int height = kHeight) const {
+        Both both{view(seed, layout, width, height), view(seed, layout, width, height)};
         kept.drawOver(data, atlas_, both.kept, 2);
         rasteriseImGui(data, atlas_, both.direct, 2);
         return both;
@@ -304,8 +306,8 @@ struct Differences {
 
 Differences differences(const render::RasterImage& a, const render::RasterImage& b) {
     Differences result;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
             int most = 0;
             for (int k = 0; k < 4; ++k) {
                 most = std::max(most, std::abs(static_cast<int>(a.colourAt(x, y) >> (8 * k) & 0xFFu) -
@@ -424,6 +426,31 @@ TEST_F(KeptPanelsTest, TheLayerIsNotUsedWhereItWouldPutAListOverOneLaterOrFitAno
         EXPECT_NE(kept.lastDrawn(), KeptPanels::Drawn::fromLayer) << test::layoutName(layout);
         EXPECT_EQ(differences(other.kept, other.direct).beyondRounding, 0) << test::layoutName(layout);
     }
+    drawnBoth(kept, data, 6);
+    drawnBoth(kept, data, 7);
+    ASSERT_EQ(kept.lastDrawn(), KeptPanels::Drawn::layerDrawn);
+    const Both smaller = drawnBoth(kept, data, 8, {}, kWidth - 200, kHeight - 100);
+    EXPECT_NE(kept.lastDrawn(), KeptPanels::Drawn::fromLayer) << "a picture of another size";
+    EXPECT_EQ(differences(smaller.kept, smaller.direct).beyondRounding, 0);
+}
+
+// A list drawn over the layer (it changed) that has moved under a later list kept in the layer: the layer, though
+// every list in it stayed, is not used, since the moved list would come out over the later one.
+TEST_F(KeptPanelsTest, AListMovedUnderALaterOneInTheLayerIsNotDrawnOverIt) {
+    const auto lists = [&](float smallX) {
+        ownList(0).AddRectFilled({smallX, 300.0f}, {smallX + 60.0f, 330.0f}, IM_COL32(230, 20, 20, 255));
+        ownList(1).AddRectFilled({100.0f, 100.0f}, {500.0f, 500.0f}, IM_COL32(20, 200, 40, 180));
+        return ownLists(2);
+    };
+    KeptPanels kept;
+    drawnBoth(kept, lists(700.0f), 1);
+    drawnBoth(kept, lists(700.0f), 2);
+    ASSERT_EQ(kept.lastDrawn(), KeptPanels::Drawn::layerDrawn) << "the large list kept, the small one drawn over it";
+    const Both both = drawnBoth(kept, lists(300.0f), 3);
+    EXPECT_EQ(kept.lastDrawn(), KeptPanels::Drawn::directly);
+    EXPECT_EQ(differences(both.kept, both.direct).any, 0);
+    const std::uint32_t under = both.kept.colourAt(320, kHeight - 1 - 315);
+    EXPECT_GT(under >> 8 & 0xFFu, under & 0xFFu) << "list 1's green over list 0's red";
 }
 
 // A small list that changes every frame over kept ones (a tooltip) is drawn over the layer, which stays.

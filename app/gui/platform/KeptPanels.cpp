@@ -1,7 +1,9 @@
 #include "gui/platform/KeptPanels.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace dropscope::gui {
 
@@ -11,6 +13,9 @@ namespace {
 // rectangle, texture and ranges (rasterisable: no callbacks).
 template <typename Visit>
 void eachPart(const ImDrawList& list, Visit&& visit) {
+    visit(&list.VtxBuffer.Size, sizeof list.VtxBuffer.Size);  // the counts first: the parts' bytes alone could be
+    visit(&list.IdxBuffer.Size, sizeof list.IdxBuffer.Size);  // cut into vertices and indices more than one way
+    visit(&list.CmdBuffer.Size, sizeof list.CmdBuffer.Size);
     visit(list.VtxBuffer.Data, static_cast<std::size_t>(list.VtxBuffer.size_in_bytes()));
     visit(list.IdxBuffer.Data, static_cast<std::size_t>(list.IdxBuffer.size_in_bytes()));
     for (const ImDrawCmd& command : list.CmdBuffer) {
@@ -49,11 +54,12 @@ struct Box {
 };
 
 // The pixels a list can draw: within its vertices' bounding box (a window's first commands clip to the whole
-// display), a pixel to spare each side.
+// display), a pixel to spare each side. A list without vertices meets nothing; one with a NaN position, everything.
 Box listBox(const ImDrawList& list) {
-    if (list.VtxBuffer.Size == 0) return {};
-    Box box{list.VtxBuffer[0].pos.x, list.VtxBuffer[0].pos.y, list.VtxBuffer[0].pos.x, list.VtxBuffer[0].pos.y};
+    constexpr float kFar = std::numeric_limits<float>::infinity();
+    Box box{kFar, kFar, -kFar, -kFar};
     for (const ImDrawVert& vertex : list.VtxBuffer) {
+        if (std::isnan(vertex.pos.x) || std::isnan(vertex.pos.y)) return {-kFar, -kFar, kFar, kFar};
         box.left = std::min(box.left, vertex.pos.x);
         box.top = std::min(box.top, vertex.pos.y);
         box.right = std::max(box.right, vertex.pos.x);
@@ -110,10 +116,10 @@ void KeptPanels::drawOver(const ImDrawData& data, const AtlasPixels& atlas, rend
     // The lists in `inLayer` blended first and the others drawn over them give each pixel's blends in the lists'
     // order when no list drawn over the layer lies under a later one in it.
     const auto orderKept = [&](const std::vector<bool>& inLayer) {
-        for (std::size_t over = 0; over < count; ++over) {
-            if (inLayer[over]) continue;
-            for (std::size_t later = over + 1; later < count; ++later) {
-                if (inLayer[later] && boxes[over].meets(boxes[later])) return false;
+        for (std::size_t drawnOver = 0; drawnOver < count; ++drawnOver) {
+            if (inLayer[drawnOver]) continue;
+            for (std::size_t later = drawnOver + 1; later < count; ++later) {
+                if (inLayer[later] && boxes[drawnOver].meets(boxes[later])) return false;
             }
         }
         return true;
@@ -144,17 +150,16 @@ void KeptPanels::drawOver(const ImDrawData& data, const AtlasPixels& atlas, rend
         anyWanted = anyWanted || wanted[n];
         wantedOutside = wantedOutside || (wanted[n] && !inLayer[n]);
     }
+    lastDrawn_ = usable ? Drawn::fromLayer : Drawn::directly;
     if ((!usable || wantedOutside) && anyWanted && orderKept(wanted)) {
         drawLayer(data, atlas, wanted, image, threads);
         inLayer = wanted;
         usable = true;
         lastDrawn_ = Drawn::layerDrawn;
-    } else {
-        lastDrawn_ = Drawn::fromLayer;
     }
     if (usable) {
-        std::vector<bool> over(count);
-        for (std::size_t n = 0; n < count; ++n) over[n] = !inLayer[n];
+        std::vector<bool> onTop(count);
+        for (std::size_t n = 0; n < count; ++n) onTop[n] = !inLayer[n];
         render::drawInBands(image.height(), threads, [&](int rowBegin, int rowEnd) {
             auto span =
                 std::lower_bound(spans_.begin(), spans_.end(), rowBegin, [](const Span& s, int y) { return s.y < y; });
@@ -163,12 +168,11 @@ void KeptPanels::drawOver(const ImDrawData& data, const AtlasPixels& atlas, rend
                              span->end - span->begin);
             }
         });
-        const ChosenLists others(data, over);
+        const ChosenLists others(data, onTop);
         if (others.data.CmdListsCount > 0) rasteriseImGui(others.data, atlas, image, threads);
     } else {
         layerReady_ = false;
         rasteriseImGui(data, atlas, image, threads);
-        lastDrawn_ = Drawn::directly;
     }
     lastLists_.resize(count);
     for (std::size_t n = 0; n < count; ++n) {

@@ -13,9 +13,8 @@ namespace dropscope::gui {
 // from frame to frame drawn once: the draw lists equal to the last frame's are drawn into a kept layer over
 // transparent black (each pixel their colour times their coverage, and the coverage), which later frames blend over
 // the view in one pass while those lists stay; the lists that changed are drawn over it as before, when no kept list
-// lies over them. A pixel one list covers comes out as drawn directly; where several blend over the view, their
-// blends are combined first, which may round a channel 1 or 2 another way. docs/gui.md, "The panels kept while they
-// stay".
+// lies over them. A pixel one blend makes comes out as drawn directly; where several blend over the view, they are
+// combined first, which may round a channel 1 or 2 another way. docs/gui.md, "The panels kept while they stay".
 class KeptPanels {
 public:
     // How the last drawOver drew the panels.
