@@ -86,6 +86,28 @@ TEST(ProcessorRaster, SpheresCoverExactlyThePixelsWhoseRaysHitThem) {
     }
 }
 
+// Spheres 12 to 40 pixels across, whose squares' blocks reach well beyond their silhouettes, cover exactly the
+// pixels whose eye rays meet some sphere, as the small ones do.
+TEST(ProcessorRaster, WideSpheresCoverExactlyThePixelsWhoseRaysHitThem) {
+    DirectRenderer renderer(kWidth, kHeight);
+    renderer.setProcessorRaster(true);
+    const auto shapes = sphereCrowd(30, 4.0, 0.3, 1.0, 13);
+    const Eigen::AlignedBox3d bounds = boundsOf(shapes);
+    const render::Anchor anchor{Point(0.0, 0.0, 0.0)};
+    for (const auto& [fovDeg, distance] : {std::pair{40.0, 9.0}, std::pair{90.0, 5.0}}) {
+        SCOPED_TRACE("field of view " + std::to_string(fovDeg));
+        const render::Camera camera =
+            lookingAt(Point(0.0, 0.0, 0.0), Eigen::Vector3d(0.2, 0.3, 1.0), distance, fovDeg, bounds);
+        const snapshot::Image image =
+            renderer.draw(camera, anchor, render::buildShapeInstances(shapes, anchor), render::LineBatch(anchor));
+        ASSERT_TRUE(renderer.lastFrameOnProcessor());
+        const test::ExactCoverage engine(shapes, camera, kWidth, kHeight);
+        EXPECT_GT(engine.hits(), kWidth * kHeight / 4) << "the spheres should cover a good part of the image";
+        EXPECT_LT(engine.hits(), kWidth * kHeight * 9 / 10) << "and leave some of it";
+        test::expectCoversExactly(image, engine);
+    }
+}
+
 // A sphere around the eye (a marker there): seen from inside, every pixel is its far side.
 TEST(ProcessorRaster, ASphereAroundTheEyeCoversEveryPixel) {
     DirectRenderer renderer(kWidth, kHeight);
