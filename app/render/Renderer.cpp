@@ -673,9 +673,9 @@ void Renderer::handOver(const RasterOverlay& overlay) {
     gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
     gl_.PixelStorei(GL_UNPACK_ALIGNMENT, alignment);
     gl_.BindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
-    // The caller's framebuffer gets the picture and a depth of 1: nothing drawn after the renderer tests depth (ImGui
-    // draws over the view without it). The clear and the blit obey a scissor box as the drawing would.
-    gl_.Clear(GL_DEPTH_BUFFER_BIT);
+    // The caller's framebuffer gets the picture, its depth left as it was (as OffscreenImage's copy leaves it): nothing
+    // drawn after the renderer tests depth (ImGui draws over the view without it), and a clear would cost llvmpipe a
+    // pass over the whole depth buffer. The blit obeys a scissor box as the drawing would.
     const FramebufferBindings caller(gl_);
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, rasterFramebuffer_);
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(caller.draw));

@@ -104,8 +104,8 @@ public:
     // gui/platform/ImGuiRasteriser), in the picture's own pixels.
     using RasterOverlay = std::function<void(RasterImage&)>;
     // Draws the frame into the framebuffer bound for drawing. Drawn on the processor, `overlay` (when there is one)
-    // is drawn over it before the hand-over, and with `hold` the picture without the overlay is held for showHeld.
-    // Returns whether the overlay was drawn.
+    // is drawn over it before the hand-over, with `hold` the picture without the overlay is held for showHeld, and
+    // the framebuffer's depth is left as it was. Returns whether the overlay was drawn.
     bool draw(const Camera& camera, const RenderOptions& options, int width, int height,
               const RasterOverlay& overlay = {}, bool hold = false);
     // The last picture held by draw (0: none yet). showHeld hands it over again, with `overlay` drawn over it, into
