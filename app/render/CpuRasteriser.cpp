@@ -131,49 +131,69 @@ struct SphereRow {
     }
 }
 
-// The spheres' pixels in rows [rowBegin, rowEnd): each sphere's rows over the columns that can hold its
-// silhouette.
-[[gnu::always_inline]] inline void spheresBody(std::span<const RasterSphere> spheres, const RasterView& view,
-                                               RasterImage& image, int rowBegin, int rowEnd) {
-    const int width = view.width;
-    for (const RasterSphere& sphere : spheres) {
-        const glm::vec3 toEye = view.eye - sphere.centre;
-        const glm::vec3 objectEye = sphere.inverseRadius * toEye;
-        const float c = glm::dot(objectEye, objectEye) - 1.0f;
-        // Nothing to draw, or a sphere so small beside its distance or the pixels' rays that float's squares of
-        // them would overflow (a radius of 1e-18 of the scene's units): left out.
-        if (!(sphere.radius > 0.0f) || !(sphere.inverseRadius < 1e18f) || !std::isfinite(c)) continue;
-        const float distance = glm::length(toEye);
-        const glm::vec4 clipCentre = view.viewProjection * glm::vec4(sphere.centre, 1.0f);
-        const float depth = clipCentre.w;       // the centre's distance along the view's axis
-        if (depth <= -sphere.radius) continue;  // wholly behind the eye
-        int columnBegin = 0;
-        int columnEnd = width;
-        int rowFrom = rowBegin;
-        int rowTo = rowEnd;
-        if (distance > 1.01f * sphere.radius && depth > 1.01f * sphere.radius) {
-            // impostor.vert's bound: at angle theta off the axis the silhouette (angular radius alpha) reaches
-            // f tan(alpha) s / (1 - tan(theta) tan(alpha)) from the centre's image, s = 1 / cos^2(theta); here with
-            // the centre's own theta even outside the view, and half a pixel to spare.
-            const float stretch = distance * distance / (depth * depth);
-            const float tanAlpha = sphere.radius / std::sqrt(distance * distance - sphere.radius * sphere.radius);
-            const float spread = 1.0f - std::sqrt(std::max(stretch - 1.0f, 0.0f)) * tanAlpha;
-            if (spread > 0.1f) {
-                const float half = view.pixelsPerUnit * tanAlpha * stretch / spread + 0.5f;
-                const float x = (clipCentre.x / clipCentre.w * 0.5f + 0.5f) * static_cast<float>(width);
-                const float y = (clipCentre.y / clipCentre.w * 0.5f + 0.5f) * static_cast<float>(view.height);
-                const auto clampTo = [](float v, int low, int high) {  // a NaN to low
-                    const auto lowest = static_cast<float>(low);
-                    const auto highest = static_cast<float>(high);
-                    return static_cast<int>(v > lowest ? (v < highest ? v : highest) : lowest);
-                };
-                columnBegin = clampTo(std::floor(x - half), 0, width);
-                columnEnd = clampTo(std::ceil(x + half), 0, width);
-                rowFrom = clampTo(std::floor(y - half), rowBegin, rowEnd);
-                rowTo = clampTo(std::ceil(y + half), rowBegin, rowEnd);
-            }
+// Where a sphere's pixels can lie: the columns [columnBegin, columnEnd) of the rows [rowBegin, rowEnd); empty when it
+// has nothing to draw. Worked out once a frame, for every band.
+struct SpherePlace {
+    int columnBegin = 0;
+    int columnEnd = 0;
+    int rowBegin = 0;
+    int rowEnd = 0;
+};
+
+struct PlacedSpheres {
+    SpherePlace* markers;
+    SpherePlace* spheres;
+};
+
+[[gnu::always_inline]] inline SpherePlace spherePlace(const RasterSphere& sphere, const RasterView& view) {
+    const glm::vec3 toEye = view.eye - sphere.centre;
+    const glm::vec3 objectEye = sphere.inverseRadius * toEye;
+    const float c = glm::dot(objectEye, objectEye) - 1.0f;
+    // Nothing to draw, or a sphere so small beside its distance or the pixels' rays that float's squares of
+    // them would overflow (a radius of 1e-18 of the scene's units): left out.
+    if (!(sphere.radius > 0.0f) || !(sphere.inverseRadius < 1e18f) || !std::isfinite(c)) return {};
+    const float distance = glm::length(toEye);
+    const glm::vec4 clipCentre = view.viewProjection * glm::vec4(sphere.centre, 1.0f);
+    const float depth = clipCentre.w;        // the centre's distance along the view's axis
+    if (depth <= -sphere.radius) return {};  // wholly behind the eye
+    SpherePlace place{0, view.width, 0, view.height};
+    if (distance > 1.01f * sphere.radius && depth > 1.01f * sphere.radius) {
+        // impostor.vert's bound: at angle theta off the axis the silhouette (angular radius alpha) reaches
+        // f tan(alpha) s / (1 - tan(theta) tan(alpha)) from the centre's image, s = 1 / cos^2(theta); here with
+        // the centre's own theta even outside the view, and half a pixel to spare.
+        const float stretch = distance * distance / (depth * depth);
+        const float tanAlpha = sphere.radius / std::sqrt(distance * distance - sphere.radius * sphere.radius);
+        const float spread = 1.0f - std::sqrt(std::max(stretch - 1.0f, 0.0f)) * tanAlpha;
+        if (spread > 0.1f) {
+            const float half = view.pixelsPerUnit * tanAlpha * stretch / spread + 0.5f;
+            const float x = (clipCentre.x / clipCentre.w * 0.5f + 0.5f) * static_cast<float>(view.width);
+            const float y = (clipCentre.y / clipCentre.w * 0.5f + 0.5f) * static_cast<float>(view.height);
+            const auto clampTo = [](float v, int high) {  // to [0, high], a NaN to 0
+                const auto highest = static_cast<float>(high);
+                return static_cast<int>(v > 0.0f ? (v < highest ? v : highest) : 0.0f);
+            };
+            place.columnBegin = clampTo(std::floor(x - half), view.width);
+            place.columnEnd = clampTo(std::ceil(x + half), view.width);
+            place.rowBegin = clampTo(std::floor(y - half), view.height);
+            place.rowEnd = clampTo(std::ceil(y + half), view.height);
         }
+    }
+    return place;
+}
+
+// The spheres' pixels in rows [rowBegin, rowEnd): each sphere's rows over the columns its place gives.
+[[gnu::always_inline]] inline void spheresBody(std::span<const RasterSphere> spheres, const SpherePlace* places,
+                                               const RasterView& view, RasterImage& image, int rowBegin, int rowEnd) {
+    for (std::size_t index = 0; index < spheres.size(); ++index) {
+        const SpherePlace& place = places[index];
+        const int columnBegin = place.columnBegin;
+        const int columnEnd = place.columnEnd;
+        const int rowFrom = std::max(place.rowBegin, rowBegin);
+        const int rowTo = std::min(place.rowEnd, rowEnd);
         if (columnBegin >= columnEnd || rowFrom >= rowTo) continue;
+        const RasterSphere& sphere = spheres[index];
+        const glm::vec3 objectEye = sphere.inverseRadius * (view.eye - sphere.centre);
+        const float c = glm::dot(objectEye, objectEye) - 1.0f;
         SphereRow row{};
         for (int k = 0; k < 3; ++k) {
             row.perPixel[k] = view.rayPerPixelX[k];
@@ -339,42 +359,66 @@ bool clipSegment(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
 }
 
 // The rows [rowBegin, rowEnd) of the picture: the background, then the markers, the spheres and the lines.
-[[gnu::always_inline]] inline void bandBody(const RasterContent& content, const RasterView& view,
-                                            std::uint32_t background, RasterImage& image, int rowBegin, int rowEnd) {
+[[gnu::always_inline]] inline void bandBody(const RasterContent& content, const PlacedSpheres& placed,
+                                            const RasterView& view, std::uint32_t background, RasterImage& image,
+                                            int rowBegin, int rowEnd) {
     for (int y = rowBegin; y < rowEnd; ++y) {  // the rows lie in either order (the layout's)
         std::fill_n(image.colourRow(y), image.stride(), background);
         std::fill_n(image.depthRow(y), image.stride(), 1.0f);
     }
-    spheresBody(content.markers, view, image, rowBegin, rowEnd);
-    spheresBody(content.spheres, view, image, rowBegin, rowEnd);
+    spheresBody(content.markers, placed.markers, view, image, rowBegin, rowEnd);
+    spheresBody(content.spheres, placed.spheres, view, image, rowBegin, rowEnd);
     linesBody(content.lines, view, image, rowBegin, rowEnd);
 }
 
-// bandBody twice: for the x86-64 baseline (SSE2) and for processors with AVX2 and FMA, whose vectors hold a whole
-// block of pixels and which fuse multiply-adds: the two round a little differently.
-void drawBandBaseline(const RasterContent& content, const RasterView& view, std::uint32_t background,
-                      RasterImage& image, int rowBegin, int rowEnd) {
-    bandBody(content, view, background, image, rowBegin, rowEnd);
+// The places of spheres [begin, end) of `spheres`, into `places`.
+[[gnu::always_inline]] inline void placesBody(std::span<const RasterSphere> spheres, const RasterView& view,
+                                              SpherePlace* places, int begin, int end) {
+    for (int k = begin; k < end; ++k) places[k] = spherePlace(spheres[static_cast<std::size_t>(k)], view);
 }
 
-__attribute__((target("avx2,fma"))) void drawBandAvx2(const RasterContent& content, const RasterView& view,
-                                                      std::uint32_t background, RasterImage& image, int rowBegin,
-                                                      int rowEnd) {
-    bandBody(content, view, background, image, rowBegin, rowEnd);
+// bandBody and placesBody twice: for the x86-64 baseline (SSE2) and for processors with AVX2 and FMA, whose vectors
+// hold a whole block of pixels and which fuse multiply-adds: the two round a little differently.
+void drawBandBaseline(const RasterContent& content, const PlacedSpheres& placed, const RasterView& view,
+                      std::uint32_t background, RasterImage& image, int rowBegin, int rowEnd) {
+    bandBody(content, placed, view, background, image, rowBegin, rowEnd);
 }
 
-using DrawBand = void (*)(const RasterContent&, const RasterView&, std::uint32_t, RasterImage&, int, int);
+void placeBaseline(std::span<const RasterSphere> spheres, const RasterView& view, SpherePlace* places, int begin,
+                   int end) {
+    placesBody(spheres, view, places, begin, end);
+}
 
-DrawBand fastestDrawBand() {
+__attribute__((target("avx2,fma"))) void drawBandAvx2(const RasterContent& content, const PlacedSpheres& placed,
+                                                      const RasterView& view, std::uint32_t background,
+                                                      RasterImage& image, int rowBegin, int rowEnd) {
+    bandBody(content, placed, view, background, image, rowBegin, rowEnd);
+}
+
+__attribute__((target("avx2,fma"))) void placeAvx2(std::span<const RasterSphere> spheres, const RasterView& view,
+                                                   SpherePlace* places, int begin, int end) {
+    placesBody(spheres, view, places, begin, end);
+}
+
+struct RasterCopy {
+    void (*drawBand)(const RasterContent&, const PlacedSpheres&, const RasterView&, std::uint32_t, RasterImage&, int,
+                     int);
+    void (*place)(std::span<const RasterSphere>, const RasterView&, SpherePlace*, int, int);
+};
+
+constexpr RasterCopy kBaselineCopy{drawBandBaseline, placeBaseline};
+
+RasterCopy fastestCopy() {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? drawBandAvx2 : drawBandBaseline;
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? RasterCopy{drawBandAvx2, placeAvx2}
+                                                                           : kBaselineCopy;
 }
 
-const DrawBand kFastestDrawBand = fastestDrawBand();
+const RasterCopy kFastestCopy = fastestCopy();
 
 }  // namespace
 
-bool rasterCodeHasAvx2() { return kFastestDrawBand == drawBandAvx2; }
+bool rasterCodeHasAvx2() { return kFastestCopy.drawBand == drawBandAvx2; }
 
 unsigned rasterThreads() { return std::clamp(std::thread::hardware_concurrency(), 1u, 8u); }
 
@@ -382,9 +426,16 @@ void rasterise(const RasterContent& content, const RasterView& view, const Colou
                unsigned threads, RasterCode code) {
     image.resize(view.width, view.height);
     const std::uint32_t backgroundColour = image.pack(background);
-    const DrawBand drawBand = code == RasterCode::baseline ? drawBandBaseline : kFastestDrawBand;
-    drawInBands(view.height, threads,
-                [&](int rowBegin, int rowEnd) { drawBand(content, view, backgroundColour, image, rowBegin, rowEnd); });
+    const RasterCopy copy = code == RasterCode::baseline ? kBaselineCopy : kFastestCopy;
+    // Each sphere placed once, on every thread (the spheres' indices cut as rows are), then drawn band by band.
+    std::vector<SpherePlace> places(content.markers.size() + content.spheres.size());
+    const PlacedSpheres placed{places.data(), places.data() + content.markers.size()};
+    drawInBands(static_cast<int>(content.spheres.size()), threads,
+                [&](int begin, int end) { copy.place(content.spheres, view, placed.spheres, begin, end); });
+    copy.place(content.markers, view, placed.markers, 0, static_cast<int>(content.markers.size()));
+    drawInBands(view.height, threads, [&](int rowBegin, int rowEnd) {
+        copy.drawBand(content, placed, view, backgroundColour, image, rowBegin, rowEnd);
+    });
 }
 
 void drawInBands(int rows, unsigned threads, const std::function<void(int, int)>& drawRows) {
