@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <system_error>
 #include <thread>
@@ -132,17 +133,12 @@ struct SphereRow {
 }
 
 // Where a sphere's pixels can lie: the columns [columnBegin, columnEnd) of the rows [rowBegin, rowEnd); empty when it
-// has nothing to draw. Worked out once a frame, for every band.
+// has nothing to draw. Worked out once a frame, for every strip.
 struct SpherePlace {
     int columnBegin = 0;
     int columnEnd = 0;
     int rowBegin = 0;
     int rowEnd = 0;
-};
-
-struct PlacedSpheres {
-    SpherePlace* markers;
-    SpherePlace* spheres;
 };
 
 [[gnu::always_inline]] inline SpherePlace spherePlace(const RasterSphere& sphere, const RasterView& view) {
@@ -273,144 +269,257 @@ bool clipSegment(glm::vec4& a, Colour& colourA, glm::vec4& b, Colour& colourB) {
     return a.w > 0.0f && b.w > 0.0f;  // in front of the eye, as the near plane leaves them
 }
 
-[[gnu::always_inline]] inline void linesBody(std::span<const LineVertex> lines, const RasterView& view,
-                                             RasterImage& image, int rowBegin, int rowEnd) {
+// A segment as the strips walk it, worked out once a frame: its ends in window coordinates, its major axis, and
+// the pixel centres along that axis it takes within the image.
+struct LineWalk {
+    LineEnd start;
+    LineEnd end;
+    bool alongX;
+    bool flat;  // one colour (most paths): nothing to interpolate
+    std::uint32_t flatColour;
+    float major0;
+    float minor0;
+    float slope;
+    float minorAtZero;
+    float offsetAtZero;
+    float depthAtZero;
+    float depthPerPixel;
+    float inverseLength;
+    int first;
+    int last;
+};
+
+// Rows [begin, end) of the image; empty when begin >= end.
+struct RowSpan {
+    int begin = 0;
+    int end = 0;
+};
+
+bool meets(const RowSpan& span, int rowBegin, int rowEnd) { return span.begin < rowEnd && span.end > rowBegin; }
+
+// Segment from-to's walk, and the rows it can draw in (empty when it draws nothing).
+[[gnu::always_inline]] inline RowSpan lineWalk(const LineVertex& from, const LineVertex& to, const RasterView& view,
+                                               const RasterImage& image, LineWalk& walk) {
+    glm::vec4 a = view.viewProjection * glm::vec4(from.position[0], from.position[1], from.position[2], 1.0f);
+    glm::vec4 b = view.viewProjection * glm::vec4(to.position[0], to.position[1], to.position[2], 1.0f);
+    Colour colourA = from.colour;
+    Colour colourB = to.colour;
+    if (!clipSegment(a, colourA, b, colourB)) return {};
+    walk.start = lineEnd(a, colourA, view);
+    walk.end = lineEnd(b, colourB, view);
+    const LineEnd& start = walk.start;
+    const LineEnd& end = walk.end;
+    const float dx = end.x - start.x;
+    const float dy = end.y - start.y;
+    walk.alongX = std::abs(dx) >= std::abs(dy);
+    const bool alongX = walk.alongX;
+    walk.major0 = alongX ? start.x : start.y;
+    const float major1 = alongX ? end.x : end.y;
+    const float majorLength = major1 - walk.major0;
+    if (majorLength == 0.0f) return {};
+    walk.minor0 = alongX ? start.y : start.x;
+    walk.slope = (alongX ? dy : dx) / majorLength;
+    // The pixel centres c + 0.5 along the major axis from the start (taken) to the end (not): OpenGL's
+    // diamond-exit rule but within a pixel at the two ends.
+    const float low = std::min(walk.major0, major1);
+    const float high = std::max(walk.major0, major1);
+    int first = static_cast<int>(std::ceil(low - 0.5f));
+    int last = static_cast<int>(std::ceil(high - 0.5f)) - 1;  // centres below high
+    if (majorLength < 0.0f) {                                 // from high down to low: low's centre not taken
+        first = static_cast<int>(std::floor(low - 0.5f)) + 1;
+        last = static_cast<int>(std::floor(high - 0.5f));
+    }
+    walk.first = std::max(first, 0);
+    walk.last = std::min(last, (alongX ? view.width : view.height) - 1);
+    if (walk.first > walk.last) return {};
+    walk.inverseLength = 1.0f / majorLength;
+    walk.flat = colourA == colourB;
+    walk.flatColour = image.pack(colourA);
+    // At centre c + 0.5: the minor coordinate minorAtZero + c slope, the depth depthAtZero + c depthPerPixel.
+    walk.offsetAtZero = 0.5f - walk.major0;
+    walk.minorAtZero = walk.minor0 + walk.offsetAtZero * walk.slope;
+    walk.depthPerPixel = (end.depth - start.depth) * walk.inverseLength;
+    walk.depthAtZero = start.depth + walk.offsetAtZero * walk.depthPerPixel;
+    if (!alongX) return {walk.first, walk.last + 1};
+    // The rows the minor coordinate passes through over the centres taken, a row to spare each side (the pixels'
+    // own test decides); the guard band keeps these sums within a few image heights.
+    const float atFirst = walk.minorAtZero + static_cast<float>(walk.first) * walk.slope;
+    const float atLast = walk.minorAtZero + static_cast<float>(walk.last) * walk.slope;
+    const float lowest = std::floor(std::min(atFirst, atLast)) - 1.0f;
+    const float highest = std::floor(std::max(atFirst, atLast)) + 2.0f;
+    const auto height = static_cast<float>(view.height);
+    return {static_cast<int>(std::clamp(lowest, 0.0f, height)), static_cast<int>(std::clamp(highest, 0.0f, height))};
+}
+
+// The pixels of `walk` in rows [rowBegin, rowEnd).
+[[gnu::always_inline]] inline void lineRows(const LineWalk& walk, const RasterView& view, RasterImage& image,
+                                            int rowBegin, int rowEnd) {
     const int width = view.width;
-    for (std::size_t k = 0; k + 1 < lines.size(); k += 2) {
-        const LineVertex& from = lines[k];
-        const LineVertex& to = lines[k + 1];
-        glm::vec4 a = view.viewProjection * glm::vec4(from.position[0], from.position[1], from.position[2], 1.0f);
-        glm::vec4 b = view.viewProjection * glm::vec4(to.position[0], to.position[1], to.position[2], 1.0f);
-        Colour colourA = from.colour;
-        Colour colourB = to.colour;
-        if (!clipSegment(a, colourA, b, colourB)) continue;
-        const LineEnd start = lineEnd(a, colourA, view);
-        const LineEnd end = lineEnd(b, colourB, view);
-        const float dx = end.x - start.x;
-        const float dy = end.y - start.y;
-        const bool alongX = std::abs(dx) >= std::abs(dy);
-        const float major0 = alongX ? start.x : start.y;
-        const float major1 = alongX ? end.x : end.y;
-        const float majorLength = major1 - major0;
-        if (majorLength == 0.0f) continue;
-        const float minor0 = alongX ? start.y : start.x;
-        const float slope = (alongX ? dy : dx) / majorLength;
-        // The pixel centres c + 0.5 along the major axis from the start (taken) to the end (not): OpenGL's
-        // diamond-exit rule but within a pixel at the two ends.
-        const float low = std::min(major0, major1);
-        const float high = std::max(major0, major1);
-        int first = static_cast<int>(std::ceil(low - 0.5f));
-        int last = static_cast<int>(std::ceil(high - 0.5f)) - 1;  // centres below high
-        if (majorLength < 0.0f) {                                 // from high down to low: low's centre not taken
-            first = static_cast<int>(std::floor(low - 0.5f)) + 1;
-            last = static_cast<int>(std::floor(high - 0.5f));
-        }
-        // Only the centres whose pixel can lie in the band and the image: along the major axis directly, along the
-        // minor one through the slope (a pixel to spare each side; the pixel's own test below decides).
-        first = std::max(first, alongX ? 0 : rowBegin);
-        last = std::min(last, alongX ? width - 1 : rowEnd - 1);
-        const float minorLow = static_cast<float>(alongX ? rowBegin : 0);
-        const float minorHigh = static_cast<float>(alongX ? rowEnd : width);
-        if (slope != 0.0f) {
-            const float atLow = major0 + (minorLow - minor0) / slope - 0.5f;
-            const float atHigh = major0 + (minorHigh - minor0) / slope - 0.5f;
-            // Clamped before the casts: a slope near 0 puts these far beyond any pixel.
-            const float limit = static_cast<float>(alongX ? width : view.height) + 2.0f;
-            first =
-                std::max(first, static_cast<int>(std::clamp(std::floor(std::min(atLow, atHigh)), -2.0f, limit)) - 1);
-            last = std::min(last, static_cast<int>(std::clamp(std::ceil(std::max(atLow, atHigh)), -2.0f, limit)) + 1);
-        } else if (minor0 < minorLow || minor0 >= minorHigh) {
+    const bool alongX = walk.alongX;
+    const float slope = walk.slope;
+    // Only the centres whose pixel can lie in the rows and the image: along the major axis directly, along the
+    // minor one through the slope (a pixel to spare each side; the pixel's own test below decides).
+    int first = std::max(walk.first, alongX ? 0 : rowBegin);
+    int last = std::min(walk.last, alongX ? width - 1 : rowEnd - 1);
+    const float minorLow = static_cast<float>(alongX ? rowBegin : 0);
+    const float minorHigh = static_cast<float>(alongX ? rowEnd : width);
+    if (slope != 0.0f) {
+        const float atLow = walk.major0 + (minorLow - walk.minor0) / slope - 0.5f;
+        const float atHigh = walk.major0 + (minorHigh - walk.minor0) / slope - 0.5f;
+        // Clamped before the casts: a slope near 0 puts these far beyond any pixel.
+        const float limit = static_cast<float>(alongX ? width : view.height) + 2.0f;
+        first = std::max(first, static_cast<int>(std::clamp(std::floor(std::min(atLow, atHigh)), -2.0f, limit)) - 1);
+        last = std::min(last, static_cast<int>(std::clamp(std::ceil(std::max(atLow, atHigh)), -2.0f, limit)) + 1);
+    } else if (walk.minor0 < minorLow || walk.minor0 >= minorHigh) {
+        return;
+    }
+    const LineEnd& start = walk.start;
+    const LineEnd& end = walk.end;
+    for (int c = first; c <= last; ++c) {
+        const auto fc = static_cast<float>(c);
+        // floor for anything above -8, and below it some negative number: a pixel outside either way.
+        const int minor = static_cast<int>(walk.minorAtZero + fc * slope + 8.0f) - 8;
+        const int x = alongX ? c : minor;
+        const int y = alongX ? minor : c;
+        if (x < 0 || x >= width || y < rowBegin || y >= rowEnd) continue;
+        const float fragmentDepth = walk.depthAtZero + fc * walk.depthPerPixel;
+        float& depth = image.depthRow(y)[x];
+        if (!(fragmentDepth < depth)) continue;
+        depth = fragmentDepth;
+        if (walk.flat) {
+            image.colourRow(y)[x] = walk.flatColour;
             continue;
         }
-        const float inverseLength = 1.0f / majorLength;
-        const bool flat = colourA == colourB;  // most paths: no colour to interpolate
-        const std::uint32_t flatColour = image.pack(colourA);
-        // At centre c + 0.5: the minor coordinate minorAtZero + c slope, the depth depthAtZero + c depthPerPixel.
-        const float offsetAtZero = 0.5f - major0;
-        const float minorAtZero = minor0 + offsetAtZero * slope;
-        const float depthPerPixel = (end.depth - start.depth) * inverseLength;
-        const float depthAtZero = start.depth + offsetAtZero * depthPerPixel;
-        for (int c = first; c <= last; ++c) {
-            const auto fc = static_cast<float>(c);
-            // floor for anything above -8, and below it some negative number: a pixel outside either way.
-            const int minor = static_cast<int>(minorAtZero + fc * slope + 8.0f) - 8;
-            const int x = alongX ? c : minor;
-            const int y = alongX ? minor : c;
-            if (x < 0 || x >= width || y < rowBegin || y >= rowEnd) continue;
-            const float fragmentDepth = depthAtZero + fc * depthPerPixel;
-            float& depth = image.depthRow(y)[x];
-            if (!(fragmentDepth < depth)) continue;
-            depth = fragmentDepth;
-            if (flat) {
-                image.colourRow(y)[x] = flatColour;
-                continue;
-            }
-            const float along = (fc + offsetAtZero) * inverseLength;  // 0 at the start, 1 at the end
-            const float inverseW = start.inverseW + along * (end.inverseW - start.inverseW);
-            Colour colour;
-            for (std::size_t channel = 0; channel < 4; ++channel) {
-                colour[channel] =
-                    (start.colourOverW[channel] + along * (end.colourOverW[channel] - start.colourOverW[channel])) /
-                    inverseW;
-            }
-            image.colourRow(y)[x] = image.pack(colour);
+        const float along = (fc + walk.offsetAtZero) * walk.inverseLength;  // 0 at the start, 1 at the end
+        const float inverseW = start.inverseW + along * (end.inverseW - start.inverseW);
+        Colour colour;
+        for (std::size_t channel = 0; channel < 4; ++channel) {
+            colour[channel] =
+                (start.colourOverW[channel] + along * (end.colourOverW[channel] - start.colourOverW[channel])) /
+                inverseW;
         }
+        image.colourRow(y)[x] = image.pack(colour);
+    }
+}
+
+// What rasterise works out once a frame for every strip: the spheres' places, the rows each run of kSphereRun
+// of them can draw in, and the segments' walks with their rows.
+struct FramePlan {
+    std::vector<SpherePlace> markerPlaces;
+    std::vector<SpherePlace> spherePlaces;
+    std::vector<RowSpan> markerRuns;
+    std::vector<RowSpan> sphereRuns;
+    std::vector<LineWalk> walks;
+    std::vector<RowSpan> walkRows;
+};
+
+// Spheres come in the Morton order, so a run of consecutive ones lies close together in the picture and a strip
+// skips a whole run outside it with one test.
+constexpr int kSphereRun = 64;
+
+int runCount(std::size_t spheres) { return static_cast<int>((spheres + kSphereRun - 1) / kSphereRun); }
+
+// [begin, end) of `count` items, share `worker` of `workers`.
+RowSpan share(std::size_t count, unsigned worker, unsigned workers) {
+    const auto total = static_cast<long long>(count);
+    return {static_cast<int>(total * worker / workers), static_cast<int>(total * (worker + 1) / workers)};
+}
+
+// The places of the spheres in runs [runBegin, runEnd), and each run's rows.
+[[gnu::always_inline]] inline void placeRuns(std::span<const RasterSphere> spheres, const RasterView& view,
+                                             SpherePlace* places, RowSpan* runs, const RowSpan& runRange) {
+    for (int run = runRange.begin; run < runRange.end; ++run) {
+        RowSpan rows{view.height, 0};
+        const int end = std::min(static_cast<int>(spheres.size()), (run + 1) * kSphereRun);
+        for (int k = run * kSphereRun; k < end; ++k) {
+            const SpherePlace place = spherePlace(spheres[static_cast<std::size_t>(k)], view);
+            places[k] = place;
+            if (place.columnBegin < place.columnEnd && place.rowBegin < place.rowEnd) {
+                rows.begin = std::min(rows.begin, place.rowBegin);
+                rows.end = std::max(rows.end, place.rowEnd);
+            }
+        }
+        runs[run] = rows;
+    }
+}
+
+// Worker `worker` of `workers`' share of the plan: places, runs and walks.
+[[gnu::always_inline]] inline void planBody(const RasterContent& content, const RasterView& view,
+                                            const RasterImage& image, FramePlan& plan, unsigned worker,
+                                            unsigned workers) {
+    placeRuns(content.markers, view, plan.markerPlaces.data(), plan.markerRuns.data(),
+              share(plan.markerRuns.size(), worker, workers));
+    placeRuns(content.spheres, view, plan.spherePlaces.data(), plan.sphereRuns.data(),
+              share(plan.sphereRuns.size(), worker, workers));
+    const RowSpan segments = share(plan.walks.size(), worker, workers);
+    for (int k = segments.begin; k < segments.end; ++k) {
+        const auto vertex = static_cast<std::size_t>(2 * k);
+        plan.walkRows[static_cast<std::size_t>(k)] = lineWalk(content.lines[vertex], content.lines[vertex + 1], view,
+                                                              image, plan.walks[static_cast<std::size_t>(k)]);
+    }
+}
+
+// The spheres of the runs that meet rows [rowBegin, rowEnd), in their order.
+[[gnu::always_inline]] inline void spheresInRows(std::span<const RasterSphere> spheres, const SpherePlace* places,
+                                                 const std::vector<RowSpan>& runs, const RasterView& view,
+                                                 RasterImage& image, int rowBegin, int rowEnd) {
+    for (std::size_t run = 0; run < runs.size(); ++run) {
+        if (!meets(runs[run], rowBegin, rowEnd)) continue;
+        const std::size_t begin = run * kSphereRun;
+        const std::size_t count = std::min<std::size_t>(kSphereRun, spheres.size() - begin);
+        spheresBody(spheres.subspan(begin, count), places + begin, view, image, rowBegin, rowEnd);
     }
 }
 
 // The rows [rowBegin, rowEnd) of the picture: the background, then the markers, the spheres and the lines.
-[[gnu::always_inline]] inline void bandBody(const RasterContent& content, const PlacedSpheres& placed,
-                                            const RasterView& view, std::uint32_t background, RasterImage& image,
-                                            int rowBegin, int rowEnd) {
+[[gnu::always_inline]] inline void stripBody(const RasterContent& content, const FramePlan& plan,
+                                             const RasterView& view, std::uint32_t background, RasterImage& image,
+                                             int rowBegin, int rowEnd) {
     for (int y = rowBegin; y < rowEnd; ++y) {  // the rows lie in either order (the layout's)
         std::fill_n(image.colourRow(y), image.stride(), background);
         std::fill_n(image.depthRow(y), image.stride(), 1.0f);
     }
-    spheresBody(content.markers, placed.markers, view, image, rowBegin, rowEnd);
-    spheresBody(content.spheres, placed.spheres, view, image, rowBegin, rowEnd);
-    linesBody(content.lines, view, image, rowBegin, rowEnd);
+    spheresInRows(content.markers, plan.markerPlaces.data(), plan.markerRuns, view, image, rowBegin, rowEnd);
+    spheresInRows(content.spheres, plan.spherePlaces.data(), plan.sphereRuns, view, image, rowBegin, rowEnd);
+    for (std::size_t k = 0; k < plan.walks.size(); ++k) {
+        if (meets(plan.walkRows[k], rowBegin, rowEnd)) lineRows(plan.walks[k], view, image, rowBegin, rowEnd);
+    }
 }
 
-// The places of spheres [begin, end) of `spheres`, into `places`.
-[[gnu::always_inline]] inline void placesBody(std::span<const RasterSphere> spheres, const RasterView& view,
-                                              SpherePlace* places, int begin, int end) {
-    for (int k = begin; k < end; ++k) places[k] = spherePlace(spheres[static_cast<std::size_t>(k)], view);
-}
-
-// bandBody and placesBody twice: for the x86-64 baseline (SSE2) and for processors with AVX2 and FMA, whose vectors
+// planBody and stripBody twice: for the x86-64 baseline (SSE2) and for processors with AVX2 and FMA, whose vectors
 // hold a whole block of pixels and which fuse multiply-adds: the two round a little differently.
-void drawBandBaseline(const RasterContent& content, const PlacedSpheres& placed, const RasterView& view,
-                      std::uint32_t background, RasterImage& image, int rowBegin, int rowEnd) {
-    bandBody(content, placed, view, background, image, rowBegin, rowEnd);
+void planBaseline(const RasterContent& content, const RasterView& view, const RasterImage& image, FramePlan& plan,
+                  unsigned worker, unsigned workers) {
+    planBody(content, view, image, plan, worker, workers);
 }
 
-void placeBaseline(std::span<const RasterSphere> spheres, const RasterView& view, SpherePlace* places, int begin,
-                   int end) {
-    placesBody(spheres, view, places, begin, end);
+void drawStripBaseline(const RasterContent& content, const FramePlan& plan, const RasterView& view,
+                       std::uint32_t background, RasterImage& image, int rowBegin, int rowEnd) {
+    stripBody(content, plan, view, background, image, rowBegin, rowEnd);
 }
 
-__attribute__((target("avx2,fma"))) void drawBandAvx2(const RasterContent& content, const PlacedSpheres& placed,
-                                                      const RasterView& view, std::uint32_t background,
-                                                      RasterImage& image, int rowBegin, int rowEnd) {
-    bandBody(content, placed, view, background, image, rowBegin, rowEnd);
+__attribute__((target("avx2,fma"))) void planAvx2(const RasterContent& content, const RasterView& view,
+                                                  const RasterImage& image, FramePlan& plan, unsigned worker,
+                                                  unsigned workers) {
+    planBody(content, view, image, plan, worker, workers);
 }
 
-__attribute__((target("avx2,fma"))) void placeAvx2(std::span<const RasterSphere> spheres, const RasterView& view,
-                                                   SpherePlace* places, int begin, int end) {
-    placesBody(spheres, view, places, begin, end);
+__attribute__((target("avx2,fma"))) void drawStripAvx2(const RasterContent& content, const FramePlan& plan,
+                                                       const RasterView& view, std::uint32_t background,
+                                                       RasterImage& image, int rowBegin, int rowEnd) {
+    stripBody(content, plan, view, background, image, rowBegin, rowEnd);
 }
 
 struct RasterCopy {
-    void (*drawBand)(const RasterContent&, const PlacedSpheres&, const RasterView&, std::uint32_t, RasterImage&, int,
-                     int);
-    void (*place)(std::span<const RasterSphere>, const RasterView&, SpherePlace*, int, int);
+    void (*plan)(const RasterContent&, const RasterView&, const RasterImage&, FramePlan&, unsigned, unsigned);
+    void (*drawStrip)(const RasterContent&, const FramePlan&, const RasterView&, std::uint32_t, RasterImage&, int, int);
 };
 
-constexpr RasterCopy kBaselineCopy{drawBandBaseline, placeBaseline};
+constexpr RasterCopy kBaselineCopy{planBaseline, drawStripBaseline};
 
 RasterCopy fastestCopy() {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? RasterCopy{drawBandAvx2, placeAvx2}
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? RasterCopy{planAvx2, drawStripAvx2}
                                                                            : kBaselineCopy;
 }
 
@@ -418,40 +527,60 @@ const RasterCopy kFastestCopy = fastestCopy();
 
 }  // namespace
 
-bool rasterCodeHasAvx2() { return kFastestCopy.drawBand == drawBandAvx2; }
+bool rasterCodeHasAvx2() { return kFastestCopy.drawStrip == drawStripAvx2; }
 
 unsigned rasterThreads() { return std::clamp(std::thread::hardware_concurrency(), 1u, 8u); }
 
 void rasterise(const RasterContent& content, const RasterView& view, const Colour& background, RasterImage& image,
-               unsigned threads, RasterCode code) {
+               unsigned threads, RasterCode code, int stripRows) {
     image.resize(view.width, view.height);
     const std::uint32_t backgroundColour = image.pack(background);
     const RasterCopy copy = code == RasterCode::baseline ? kBaselineCopy : kFastestCopy;
-    // Each sphere placed once, on every thread (the spheres' indices cut as rows are), then drawn band by band.
-    std::vector<SpherePlace> places(content.markers.size() + content.spheres.size());
-    const PlacedSpheres placed{places.data(), places.data() + content.markers.size()};
-    drawInBands(static_cast<int>(content.spheres.size()), threads,
-                [&](int begin, int end) { copy.place(content.spheres, view, placed.spheres, begin, end); });
-    copy.place(content.markers, view, placed.markers, 0, static_cast<int>(content.markers.size()));
-    drawInBands(view.height, threads, [&](int rowBegin, int rowEnd) {
-        copy.drawBand(content, placed, view, backgroundColour, image, rowBegin, rowEnd);
+    FramePlan plan;
+    plan.markerPlaces.resize(content.markers.size());
+    plan.spherePlaces.resize(content.spheres.size());
+    plan.markerRuns.resize(static_cast<std::size_t>(runCount(content.markers.size())));
+    plan.sphereRuns.resize(static_cast<std::size_t>(runCount(content.spheres.size())));
+    plan.walks.resize(content.lines.size() / 2);
+    plan.walkRows.resize(content.lines.size() / 2);
+    onThreads(threads,
+              [&](unsigned worker, unsigned workers) { copy.plan(content, view, image, plan, worker, workers); });
+    // The strips are taken in turn, so a part of the picture that is busier than another (or a core the machine
+    // lends elsewhere for a while) leaves no thread waiting; and the colour and depth of a strip's rows (320 kB
+    // at 1280 pixels) stay in a core's own cache while it draws them.
+    const int rows = std::max(stripRows, 1);
+    const int strips = view.height / rows + (view.height % rows != 0 ? 1 : 0);
+    std::atomic<int> nextStrip{0};
+    onThreads(std::min(threads, static_cast<unsigned>(std::max(strips, 1))), [&](unsigned, unsigned) {
+        for (int strip = nextStrip++; strip < strips; strip = nextStrip++) {
+            const int rowBegin = strip * rows;
+            copy.drawStrip(content, plan, view, backgroundColour, image, rowBegin,
+                           std::min(view.height, rowBegin + rows));
+        }
     });
 }
 
-void drawInBands(int rows, unsigned threads, const std::function<void(int, int)>& drawRows) {
-    const int bands = static_cast<int>(std::clamp(threads, 1u, static_cast<unsigned>(std::max(rows, 1))));
-    const auto band = [&](int index) { drawRows(rows * index / bands, rows * (index + 1) / bands); };
+void onThreads(unsigned threads, const std::function<void(unsigned, unsigned)>& work) {
+    const unsigned workers = std::max(threads, 1u);
     std::vector<std::thread> helpers;
-    helpers.reserve(static_cast<std::size_t>(bands - 1));
-    for (int k = 1; k < bands; ++k) {
+    helpers.reserve(workers - 1);
+    for (unsigned k = 1; k < workers; ++k) {
         try {
-            helpers.emplace_back(band, k);
-        } catch (const std::system_error&) {  // no thread to be had: this one draws the band
-            band(k);
+            helpers.emplace_back(work, k, workers);
+        } catch (const std::system_error&) {  // no thread to be had: this one does the share
+            work(k, workers);
         }
     }
-    band(0);
+    work(0, workers);
     for (std::thread& helper : helpers) helper.join();
+}
+
+void drawInBands(int rows, unsigned threads, const std::function<void(int, int)>& drawRows) {
+    const auto bands = std::clamp(threads, 1u, static_cast<unsigned>(std::max(rows, 1)));
+    onThreads(bands, [&](unsigned band, unsigned count) {
+        const RowSpan span = share(static_cast<std::size_t>(rows), band, count);
+        drawRows(span.begin, span.end);
+    });
 }
 
 }  // namespace dropscope::render

@@ -94,23 +94,29 @@ std::uint32_t packColour(const Colour& colour);
 // into `image`, made the view's size, as Renderer::draw does with the impostor and line programs: a sphere's pixel is
 // the eye ray through its centre meeting the sphere, shaded by the same headlight, at its exact depth; a line's pixels
 // are those OpenGL's rule for one-pixel lines takes, at the depth and colour interpolated along it; the
-// nearest wins (GL_LESS). The rows are cut into `threads` bands, drawn at once; any count gives the same
-// picture. docs/rendering.md, "Drawn on the processor".
+// nearest wins (GL_LESS). The rows are cut into strips of `stripRows` (at least 1), which `threads` threads take in
+// turn; any count and any strips give the same picture. docs/rendering.md, "Drawn on the processor".
 struct RasterContent {
     std::span<const RasterSphere> spheres;
     std::span<const RasterSphere> markers;
     std::span<const LineVertex> lines;
 };
+// The rows of the picture a thread draws at a time.
+inline constexpr int kRasterStripRows = 32;
 // Which copy of the drawing code runs: the fastest the processor has (AVX2 where it has it), or the x86-64
 // baseline's (for tests: the two draw the same picture but for rounding).
 enum class RasterCode { fastest, baseline };
 void rasterise(const RasterContent& content, const RasterView& view, const Colour& background, RasterImage& image,
-               unsigned threads, RasterCode code = RasterCode::fastest);
+               unsigned threads, RasterCode code = RasterCode::fastest, int stripRows = kRasterStripRows);
 // Whether RasterCode::fastest is the AVX2 copy on this processor.
 bool rasterCodeHasAvx2();
 
 // The threads a frame drawn on the processor is cut into: the processor's, up to 8.
 unsigned rasterThreads();
+
+// work(worker, workers) for worker 0 to workers - 1 (workers = threads, at least 1), at once: on helper threads
+// and this one, or on this one in turn for any no thread is to be had for (a login node's process limit).
+void onThreads(unsigned threads, const std::function<void(unsigned, unsigned)>& work);
 
 // drawRows(rowBegin, rowEnd) for `rows` rows cut into min(threads, rows) bands (at least one), drawn at once: on
 // helper threads and this one, or on this one when no thread is to be had (a login node's process limit).

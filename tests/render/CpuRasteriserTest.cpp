@@ -202,6 +202,34 @@ TEST(ProcessorRaster, TheNearestWinsInAnyOrder) {
     EXPECT_EQ(swapped.depth(), first.depth());
 }
 
+// A horizontal and a vertical segment reaching far beyond the picture's edges colour every pixel of their row and
+// column, the first and last included, however the rows are cut into strips.
+TEST(ProcessorRaster, SegmentsAcrossThePictureReachItsEdges) {
+    const render::Colour green{0.0f, 1.0f, 0.0f, 1.0f};
+    const render::Camera camera = towardOrigin({0.0, 0.0, 6.0}, 1.0, 20.0);
+    const std::vector<render::LineVertex> lines{{{-100.0f, 0.3f, 0.0f}, green},
+                                                {{100.0f, 0.3f, 0.0f}, green},
+                                                {{0.42f, -100.0f, 0.0f}, green},
+                                                {{0.42f, 100.0f, 0.0f}, green}};
+    const glm::dvec3 onRow = camera.project({0.0, 0.3, 0.0}, kWidth, kHeight);      // y counted from the top
+    const glm::dvec3 onColumn = camera.project({0.42, 0.0, 0.0}, kWidth, kHeight);  // x from the left
+    // Well inside a pixel, so rounding cannot move either segment to the next row or column.
+    ASSERT_GT(std::abs(onRow.y - std::round(onRow.y)), 0.1);
+    ASSERT_GT(std::abs(onColumn.x - std::round(onColumn.x)), 0.1);
+    const int row = kHeight - 1 - static_cast<int>(onRow.y);
+    const int column = static_cast<int>(onColumn.x);
+    const render::RasterView view = render::rasterView(camera, kWidth, kHeight);
+    for (const int stripRows : {1, render::kRasterStripRows, kHeight}) {
+        render::RasterImage image;
+        render::rasterise({{}, {}, lines}, view, {0.0f, 0.0f, 0.0f, 1.0f}, image, 2, render::RasterCode::fastest,
+                          stripRows);
+        int missed = 0;
+        for (int x = 0; x < kWidth; ++x) missed += image.colourAt(x, row) == render::packColour(green) ? 0 : 1;
+        for (int y = 0; y < kHeight; ++y) missed += image.colourAt(column, y) == render::packColour(green) ? 0 : 1;
+        EXPECT_EQ(missed, 0) << "strips of " << stripRows << " rows";
+    }
+}
+
 // 300 spheres and 400 segments every way (steep, shallow, diagonal, across the image's edges), half of them
 // shaded from one colour to another, seen from (1, 2, 9), over a background whose red and blue differ.
 struct RasterCrowd {
@@ -229,29 +257,33 @@ struct RasterCrowd {
     }
 
     render::RasterImage draw(unsigned threads, render::RasterCode code = render::RasterCode::fastest,
-                             render::PixelLayout layout = {}) const {
+                             render::PixelLayout layout = {}, int stripRows = render::kRasterStripRows) const {
         render::RasterImage image;
         image.setLayout(layout);
-        render::rasterise({spheres, {}, lines}, view, {0.3f, 0.1f, 0.05f, 1.0f}, image, threads, code);
+        render::rasterise({spheres, {}, lines}, view, {0.3f, 0.1f, 0.05f, 1.0f}, image, threads, code, stripRows);
         return image;
     }
 };
 
-// The crowd: any number of bands (across their seams) draws the same picture bit for bit, and the baseline copy of
-// the code the same but for rounding.
-TEST(ProcessorRaster, AnyNumberOfBandsAndEitherCopyOfTheCodeDrawTheSamePicture) {
+// The crowd: any number of threads and any strips (across their seams) draw the same picture bit for bit, and the
+// baseline copy of the code the same but for rounding. The whole picture as one strip is the reference: a sphere
+// or segment a strip wrongly passes over (its rows or its run's worked out short) leaves a seam's rows out.
+TEST(ProcessorRaster, AnyNumberOfThreadsOrStripsAndEitherCopyOfTheCodeDrawTheSamePicture) {
     const RasterCrowd crowd;
+    ASSERT_GT(crowd.spheres.size(), 4u * 64u) << "several runs of spheres";
     const auto draw = [&](unsigned threads, render::RasterCode code) { return crowd.draw(threads, code); };
-    const render::RasterImage one = draw(1, render::RasterCode::fastest);
+    const render::RasterImage one = crowd.draw(1, render::RasterCode::fastest, {}, kHeight);
     int drawn = 0;
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) drawn += one.depthAt(x, y) < 1.0f ? 1 : 0;
     }
     EXPECT_GT(drawn, kWidth * kHeight / 3);
-    for (const unsigned threads : {2u, 3u, 5u, 8u}) {
-        const render::RasterImage other = draw(threads, render::RasterCode::fastest);
-        EXPECT_EQ(other.colour(), one.colour()) << threads << " bands";
-        EXPECT_EQ(other.depth(), one.depth()) << threads << " bands";
+    for (const unsigned threads : {1u, 2u, 3u, 5u, 8u}) {
+        for (const int stripRows : {1, 2, 7, render::kRasterStripRows, kHeight - 1, 10 * kHeight}) {
+            const render::RasterImage other = crowd.draw(threads, render::RasterCode::fastest, {}, stripRows);
+            EXPECT_EQ(other.colour(), one.colour()) << threads << " threads, strips of " << stripRows << " rows";
+            EXPECT_EQ(other.depth(), one.depth()) << threads << " threads, strips of " << stripRows << " rows";
+        }
     }
     if (!render::rasterCodeHasAvx2()) GTEST_SKIP() << "the fastest copy is the baseline's on this processor";
     // The AVX2 copy fuses multiply-adds: a pixel whose centre lies within rounding of a rim or a line's pixel
