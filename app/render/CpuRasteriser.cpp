@@ -419,15 +419,21 @@ constexpr int kSphereRun = 64;
 
 int runCount(std::size_t spheres) { return static_cast<int>((spheres + kSphereRun - 1) / kSphereRun); }
 
-// [begin, end) of `count` items, share `worker` of `workers`.
-RowSpan share(std::size_t count, unsigned worker, unsigned workers) {
+// Items [begin, end) of some array.
+struct IndexRange {
+    int begin = 0;
+    int end = 0;
+};
+
+// Worker `worker` of `workers`' share of `count` items.
+IndexRange share(std::size_t count, unsigned worker, unsigned workers) {
     const auto total = static_cast<long long>(count);
     return {static_cast<int>(total * worker / workers), static_cast<int>(total * (worker + 1) / workers)};
 }
 
 // The places of the spheres in runs [runBegin, runEnd), and each run's rows.
 [[gnu::always_inline]] inline void placeRuns(std::span<const RasterSphere> spheres, const RasterView& view,
-                                             SpherePlace* places, RowSpan* runs, const RowSpan& runRange) {
+                                             SpherePlace* places, RowSpan* runs, const IndexRange& runRange) {
     for (int run = runRange.begin; run < runRange.end; ++run) {
         RowSpan rows{view.height, 0};
         const int end = std::min(static_cast<int>(spheres.size()), (run + 1) * kSphereRun);
@@ -451,7 +457,7 @@ RowSpan share(std::size_t count, unsigned worker, unsigned workers) {
               share(plan.markerRuns.size(), worker, workers));
     placeRuns(content.spheres, view, plan.spherePlaces.data(), plan.sphereRuns.data(),
               share(plan.sphereRuns.size(), worker, workers));
-    const RowSpan segments = share(plan.walks.size(), worker, workers);
+    const IndexRange segments = share(plan.walks.size(), worker, workers);
     for (int k = segments.begin; k < segments.end; ++k) {
         const auto vertex = static_cast<std::size_t>(2 * k);
         plan.walkRows[static_cast<std::size_t>(k)] = lineWalk(content.lines[vertex], content.lines[vertex + 1], view,
@@ -484,6 +490,23 @@ RowSpan share(std::size_t count, unsigned worker, unsigned workers) {
     for (std::size_t k = 0; k < plan.walks.size(); ++k) {
         if (meets(plan.walkRows[k], rowBegin, rowEnd)) lineRows(plan.walks[k], view, image, rowBegin, rowEnd);
     }
+}
+
+// work(worker, workers) for worker 0 to workers - 1 (workers = threads, at least 1), at once: on helper threads
+// and this one, or on this one in turn for any no thread is to be had for (a login node's process limit).
+void onThreads(unsigned threads, const std::function<void(unsigned, unsigned)>& work) {
+    const unsigned workers = std::max(threads, 1u);
+    std::vector<std::thread> helpers;
+    helpers.reserve(workers - 1);
+    for (unsigned k = 1; k < workers; ++k) {
+        try {
+            helpers.emplace_back(work, k, workers);
+        } catch (const std::system_error&) {  // no thread to be had: this one does the share
+            work(k, workers);
+        }
+    }
+    work(0, workers);
+    for (std::thread& helper : helpers) helper.join();
 }
 
 // planBody and stripBody twice: for the x86-64 baseline (SSE2) and for processors with AVX2 and FMA, whose vectors
@@ -543,7 +566,9 @@ void rasterise(const RasterContent& content, const RasterView& view, const Colou
     plan.sphereRuns.resize(static_cast<std::size_t>(runCount(content.spheres.size())));
     plan.walks.resize(content.lines.size() / 2);
     plan.walkRows.resize(content.lines.size() / 2);
-    onThreads(threads,
+    const std::size_t shares =
+        std::max({plan.markerRuns.size(), plan.sphereRuns.size(), plan.walks.size(), std::size_t{1}});
+    onThreads(static_cast<unsigned>(std::min<std::size_t>(threads, shares)),
               [&](unsigned worker, unsigned workers) { copy.plan(content, view, image, plan, worker, workers); });
     // The strips are taken in turn, so a part of the picture that is busier than another (or a core the machine
     // lends elsewhere for a while) leaves no thread waiting; and the colour and depth of a strip's rows (320 kB
@@ -560,25 +585,10 @@ void rasterise(const RasterContent& content, const RasterView& view, const Colou
     });
 }
 
-void onThreads(unsigned threads, const std::function<void(unsigned, unsigned)>& work) {
-    const unsigned workers = std::max(threads, 1u);
-    std::vector<std::thread> helpers;
-    helpers.reserve(workers - 1);
-    for (unsigned k = 1; k < workers; ++k) {
-        try {
-            helpers.emplace_back(work, k, workers);
-        } catch (const std::system_error&) {  // no thread to be had: this one does the share
-            work(k, workers);
-        }
-    }
-    work(0, workers);
-    for (std::thread& helper : helpers) helper.join();
-}
-
 void drawInBands(int rows, unsigned threads, const std::function<void(int, int)>& drawRows) {
     const auto bands = std::clamp(threads, 1u, static_cast<unsigned>(std::max(rows, 1)));
     onThreads(bands, [&](unsigned band, unsigned count) {
-        const RowSpan span = share(static_cast<std::size_t>(rows), band, count);
+        const IndexRange span = share(static_cast<std::size_t>(rows), band, count);
         drawRows(span.begin, span.end);
     });
 }

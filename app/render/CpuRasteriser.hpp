@@ -114,10 +114,6 @@ bool rasterCodeHasAvx2();
 // The threads a frame drawn on the processor is cut into: the processor's, up to 8.
 unsigned rasterThreads();
 
-// work(worker, workers) for worker 0 to workers - 1 (workers = threads, at least 1), at once: on helper threads
-// and this one, or on this one in turn for any no thread is to be had for (a login node's process limit).
-void onThreads(unsigned threads, const std::function<void(unsigned, unsigned)>& work);
-
 // drawRows(rowBegin, rowEnd) for `rows` rows cut into min(threads, rows) bands (at least one), drawn at once: on
 // helper threads and this one, or on this one when no thread is to be had (a login node's process limit).
 void drawInBands(int rows, unsigned threads, const std::function<void(int, int)>& drawRows);

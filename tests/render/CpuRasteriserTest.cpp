@@ -271,7 +271,6 @@ struct RasterCrowd {
 TEST(ProcessorRaster, AnyNumberOfThreadsOrStripsAndEitherCopyOfTheCodeDrawTheSamePicture) {
     const RasterCrowd crowd;
     ASSERT_GT(crowd.spheres.size(), 4u * 64u) << "several runs of spheres";
-    const auto draw = [&](unsigned threads, render::RasterCode code) { return crowd.draw(threads, code); };
     const render::RasterImage one = crowd.draw(1, render::RasterCode::fastest, {}, kHeight);
     int drawn = 0;
     for (int y = 0; y < kHeight; ++y) {
@@ -288,7 +287,7 @@ TEST(ProcessorRaster, AnyNumberOfThreadsOrStripsAndEitherCopyOfTheCodeDrawTheSam
     if (!render::rasterCodeHasAvx2()) GTEST_SKIP() << "the fastest copy is the baseline's on this processor";
     // The AVX2 copy fuses multiply-adds: a pixel whose centre lies within rounding of a rim or a line's pixel
     // boundary may go the other way, and a shade round to the other level; 1 pixel of 19,200 does here.
-    const render::RasterImage baseline = draw(2, render::RasterCode::baseline);
+    const render::RasterImage baseline = crowd.draw(2, render::RasterCode::baseline);
     int differing = 0;
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) {
