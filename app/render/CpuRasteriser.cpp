@@ -431,7 +431,7 @@ IndexRange share(std::size_t count, unsigned worker, unsigned workers) {
     return {static_cast<int>(total * worker / workers), static_cast<int>(total * (worker + 1) / workers)};
 }
 
-// The places of the spheres in runs [runBegin, runEnd), and each run's rows.
+// The places of the spheres in the runs of `runRange`, and each run's rows.
 [[gnu::always_inline]] inline void placeRuns(std::span<const RasterSphere> spheres, const RasterView& view,
                                              SpherePlace* places, RowSpan* runs, const IndexRange& runRange) {
     for (int run = runRange.begin; run < runRange.end; ++run) {
